@@ -1,0 +1,33 @@
+#ifndef tribos_base_exceptions_h
+#define tribos_base_exceptions_h
+
+#include <stdexcept>
+#include <string>
+
+namespace tribos
+{
+  /**
+   * Thrown when a Newton solve of one increment fails (too many iterations,
+   * a diverging or non-finite residual, an inverted element). The load
+   * stepper catches exactly this type to cut the increment back; every
+   * other exception ends the run.
+   */
+  class NonConvergence : public std::runtime_error
+  {
+  public:
+    explicit NonConvergence(const std::string &what)
+      : std::runtime_error(what)
+    {}
+  };
+
+  /** A deformation gradient with det F <= 0 was met: the iterate is void. */
+  class InvertedElement : public NonConvergence
+  {
+  public:
+    explicit InvertedElement(const std::string &what)
+      : NonConvergence(what)
+    {}
+  };
+} // namespace tribos
+
+#endif

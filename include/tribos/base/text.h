@@ -1,0 +1,41 @@
+#ifndef tribos_base_text_h
+#define tribos_base_text_h
+
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  /**
+   * Small string helpers for the structured entries of the parameter file
+   * (boundary-condition lists, per-body lists). They live here so that every
+   * parser splits and reports errors the same way.
+   */
+  namespace Text
+  {
+    /**
+     * Split @p text at every @p separator that is not inside parentheses, so
+     * that function expressions such as `if(t<1, t, 1)` survive a split at
+     * commas. Pieces are trimmed; empty input gives an empty list.
+     */
+    std::vector<std::string>
+    split_top_level(const std::string &text, const char separator);
+
+    /** Remove leading and trailing white space. */
+    std::string
+    trim(const std::string &text);
+
+    /**
+     * Parse a list of doubles written as "a, b, c" for the entry @p entry
+     * (used in error messages). Throws with a message naming the entry.
+     */
+    std::vector<double>
+    parse_doubles(const std::string &text, const std::string &entry);
+
+    /** Like parse_doubles() for non-negative integers. */
+    std::vector<unsigned int>
+    parse_unsigned(const std::string &text, const std::string &entry);
+  } // namespace Text
+} // namespace tribos
+
+#endif

@@ -1,0 +1,190 @@
+#ifndef tribos_core_problem_h
+#define tribos_core_problem_h
+
+#include <tribos/material/material.h>
+#include <tribos/parameters/all_parameters.h>
+#include <tribos/postprocess/csv_writer.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/shared_tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  /** Counters of one converged increment, reported and written to CSV. */
+  struct IncrementReport
+  {
+    unsigned int n_iterations = 0;
+    double       residual     = 0;
+  };
+
+  /**
+   * The quasi-static boundary value problem of all bodies of a scene:
+   * total Lagrangian displacement formulation, one DoFHandler over one
+   * triangulation shared by all bodies, Trilinos distributed linear
+   * algebra (parallel::shared::Triangulation, so every process sees the
+   * whole geometry, which the contact search needs), Newton-Raphson with
+   * line search per increment and load stepping with cutback.
+   *
+   * The implementation is split by responsibility over several files in
+   * source/core/: setup, assembly, Newton, load stepping and output.
+   */
+  template <int dim>
+  class Problem
+  {
+  public:
+    Problem(const Parameters::AllParameters &parameters,
+            const MPI_Comm                   mpi_communicator);
+
+    /**
+     * Build the scene, solve every load step and write all output. Throws
+     * NonConvergence when the cutbacks are exhausted (after the outputs of
+     * all converged steps are written); other exceptions for bad input.
+     */
+    void
+    run();
+
+    /** Access for tests and drivers. */
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /** The converged displacement, with ghost entries. */
+    const TrilinosWrappers::MPI::Vector &
+    get_solution() const
+    {
+      return ghosted_solution;
+    }
+
+  private:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /* setup.cc */
+    void
+    make_grid();
+    void
+    setup_system();
+    void
+    setup_materials();
+    void
+    make_constraints(const double     time,
+                     const bool       homogeneous,
+                     AffineConstraints<double> &constraints) const;
+    void
+    commit_history();
+
+    /* assembly.cc */
+    /**
+     * Assemble at the current iterate (ghosted_solution): the tangent
+     * matrix and right-hand side -R with @p constraints if @p with_matrix,
+     * and always the free residual (homogeneous constraints) into
+     * free_residual and the unconstrained R = f_int - f_ext into
+     * full_residual. Returns the l2 norm of the free residual.
+     */
+    double
+    assemble(const bool                       with_matrix,
+             const AffineConstraints<double> &constraints,
+             const double                     time);
+
+    /* newton.cc */
+    IncrementReport
+    solve_increment(const double       time,
+                    const unsigned int step,
+                    const unsigned int increment);
+    void
+    solve_linear_system(Vector &newton_update);
+
+    /* output.cc */
+    void
+    open_output();
+    std::vector<double>
+    reaction_forces() const;
+    void
+    write_history_row(const unsigned int     step,
+                      const unsigned int     increment,
+                      const double           time,
+                      const IncrementReport &report,
+                      const unsigned int     n_cutbacks,
+                      const double           wall_time);
+    void
+    write_vtu(const unsigned int step, const double time);
+    void
+    write_summary(const std::string &status);
+    std::pair<double, double>
+    displacement_errors(const double time) const;
+
+    const Parameters::AllParameters &parameters;
+    MPI_Comm                         mpi_communicator;
+    ConditionalOStream               pcout;
+    TimerOutput                      timer;
+
+    parallel::shared::Triangulation<dim> triangulation;
+    std::unique_ptr<FESystem<dim>>       fe;
+    DoFHandler<dim>                      dof_handler;
+    QGauss<dim>                          quadrature;
+    QGauss<dim - 1>                      face_quadrature;
+
+    IndexSet locally_owned_dofs;
+    IndexSet locally_relevant_dofs;
+
+    AffineConstraints<double> homogeneous_constraints;
+
+    TrilinosWrappers::SparseMatrix system_matrix;
+    Vector                         system_rhs;
+    Vector                         free_residual;
+    Vector                         full_residual;
+    Vector                         solution;
+    Vector                         ghosted_solution;
+
+    /** One material per body id (index = material_id). */
+    std::vector<std::unique_ptr<Material<dim>>> materials;
+
+    /**
+     * History storage, only for cells of bodies whose material has memory:
+     * offset of a cell's first quadrature point (by active cell index) into
+     * the flat arrays, or invalid for cells without history.
+     */
+    std::vector<unsigned int> history_offset;
+    std::vector<double>       history_old;
+    std::vector<double>       history_new;
+
+    std::vector<std::unique_ptr<FunctionParser<dim>>> dirichlet_functions;
+    std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>>
+                                        neumann_functions;
+    std::unique_ptr<FunctionParser<dim>> body_force;
+    std::unique_ptr<FunctionParser<dim>> exact_displacement;
+
+    /** Per Dirichlet condition: all dofs on its boundary, per component. */
+    std::vector<std::vector<IndexSet>> reaction_dofs;
+
+    std::unique_ptr<CsvWriter>                 history_csv;
+    std::unique_ptr<CsvWriter>                 convergence_csv;
+    std::vector<std::pair<double, std::string>> pvd_records;
+
+    unsigned int n_total_newton_iterations = 0;
+    unsigned int n_total_cutbacks          = 0;
+    unsigned int n_converged_increments    = 0;
+  };
+} // namespace tribos
+
+#endif

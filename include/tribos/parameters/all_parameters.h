@@ -1,0 +1,75 @@
+#ifndef tribos_parameters_all_parameters_h
+#define tribos_parameters_all_parameters_h
+
+#include <tribos/parameters/boundary_conditions.h>
+#include <tribos/parameters/finite_element.h>
+#include <tribos/parameters/linear_solver.h>
+#include <tribos/parameters/materials.h>
+#include <tribos/parameters/nonlinear_solver.h>
+#include <tribos/parameters/output.h>
+#include <tribos/parameters/scene.h>
+#include <tribos/parameters/time_stepping.h>
+#include <tribos/parameters/verification.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    /**
+     * Every parameter of a run: the top-level `Dimension` plus one struct per
+     * subsection. Parsing is strict: unknown entries are errors.
+     */
+    struct AllParameters
+    {
+      unsigned int dimension;
+
+      Scene              scene;
+      FiniteElement      finite_element;
+      Materials          materials;
+      BoundaryConditions boundary_conditions;
+      NonlinearSolver    nonlinear_solver;
+      TimeStepping       time_stepping;
+      LinearSolver       linear_solver;
+      Output             output;
+      Verification       verification;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+
+    /**
+     * Apply command-line overrides `Section/Subsection/Entry=value` to an
+     * already parsed handler. An unknown entry or a value that does not match
+     * the entry's pattern throws with a message that names both.
+     */
+    void
+    apply_overrides(dealii::ParameterHandler       &prm,
+                    const std::vector<std::string> &overrides);
+
+    /**
+     * Read the file @p filename (if not empty) and the @p overrides into
+     * @p prm, which must have all entries declared already.
+     */
+    void
+    read_input(dealii::ParameterHandler       &prm,
+               const std::string              &filename,
+               const std::vector<std::string> &overrides);
+
+    /**
+     * Read only `Dimension` from the file and the overrides, ignoring every
+     * other entry, so that main() can dispatch to the templated code.
+     */
+    unsigned int
+    read_dimension(const std::string              &filename,
+                   const std::vector<std::string> &overrides);
+  } // namespace Parameters
+} // namespace tribos
+
+#endif

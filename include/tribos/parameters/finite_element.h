@@ -1,0 +1,29 @@
+#ifndef tribos_parameters_finite_element_h
+#define tribos_parameters_finite_element_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    /** Subsection `Finite element`: the displacement discretization. */
+    struct FiniteElement
+    {
+      /** Lagrange degree of the displacement field (1 or 2). */
+      unsigned int degree;
+      /** Gauss points per direction; 0 means degree + 1. */
+      unsigned int n_quadrature_points;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+  } // namespace Parameters
+} // namespace tribos
+
+#endif

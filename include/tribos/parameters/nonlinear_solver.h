@@ -1,0 +1,31 @@
+#ifndef tribos_parameters_nonlinear_solver_h
+#define tribos_parameters_nonlinear_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    /** Subsection `Nonlinear solver`: Newton-Raphson with line search. */
+    struct NonlinearSolver
+    {
+      unsigned int max_iterations;
+      double       residual_tolerance;
+      double       absolute_residual_tolerance;
+      double       increment_tolerance;
+      bool         line_search;
+      unsigned int max_line_search_steps;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+  } // namespace Parameters
+} // namespace tribos
+
+#endif

@@ -1,0 +1,39 @@
+#ifndef tribos_postprocess_csv_writer_h
+#define tribos_postprocess_csv_writer_h
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  /**
+   * A CSV file with a fixed header, written row by row and flushed after
+   * every row, so that a run that stops keeps every complete row. Only the
+   * process that is told to be active writes (rank 0 under MPI).
+   */
+  class CsvWriter
+  {
+  public:
+    CsvWriter(const std::string              &filename,
+              const std::vector<std::string> &columns,
+              const bool                      active);
+
+    /** Append one row; the number of values must match the header. */
+    void
+    add_row(const std::vector<double> &values);
+
+    unsigned int
+    n_columns() const
+    {
+      return columns.size();
+    }
+
+  private:
+    const std::vector<std::string> columns;
+    const bool                     active;
+    std::ofstream                  file;
+  };
+} // namespace tribos
+
+#endif

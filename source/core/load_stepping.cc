@@ -1,0 +1,125 @@
+#include <tribos/base/exceptions.h>
+#include <tribos/core/problem.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <iomanip>
+
+namespace tribos
+{
+  template <int dim>
+  void
+  Problem<dim>::run()
+  {
+    Timer wall_clock;
+    make_grid();
+    setup_system();
+    open_output();
+
+    pcout << "tribos: " << dim << "D scene <" << parameters.scene.name
+          << ">, " << triangulation.n_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " dofs, " << materials.size()
+          << " bodies, " << Utilities::MPI::n_mpi_processes(mpi_communicator)
+          << " MPI process(es)" << std::endl;
+
+    const auto  &ts           = parameters.time_stepping;
+    const double nominal_step = ts.end_time / ts.n_steps;
+    const double epsilon      = 1e-12 * ts.end_time;
+
+    write_vtu(0, 0.);
+
+    double       time      = 0;
+    double       increment = nominal_step;
+    Vector       converged = solution;
+    unsigned int n_increments_total = 0;
+
+    for (unsigned int step = 1; step <= ts.n_steps; ++step)
+      {
+        const double target          = step * nominal_step;
+        unsigned int n_iterations    = 0;
+        unsigned int n_cutbacks      = 0;
+        unsigned int cutbacks_in_row = 0;
+        double       residual        = 0;
+        unsigned int n_increments    = 0;
+
+        while (time < target - epsilon)
+          {
+            const double next = std::min(time + increment, target);
+            Timer        increment_clock;
+            try
+              {
+                const IncrementReport report =
+                  solve_increment(next, step, n_increments_total + 1);
+                commit_history();
+                converged = solution;
+                time      = next;
+                ++n_increments;
+                ++n_increments_total;
+                ++n_converged_increments;
+                n_iterations += report.n_iterations;
+                residual        = report.residual;
+                cutbacks_in_row = 0;
+                write_history_row(step,
+                                  n_increments_total,
+                                  time,
+                                  report,
+                                  n_cutbacks,
+                                  increment_clock.wall_time());
+                if (report.n_iterations <= ts.easy_iterations)
+                  increment = std::min(increment * ts.growth_factor,
+                                       nominal_step);
+              }
+            catch (const NonConvergence &failure)
+              {
+                solution         = converged;
+                ghosted_solution = solution;
+                history_new      = history_old;
+                ++n_cutbacks;
+                ++n_total_cutbacks;
+                ++cutbacks_in_row;
+                if (cutbacks_in_row > ts.max_cutbacks)
+                  {
+                    const std::string message =
+                      "step " + std::to_string(step) + " at t = " +
+                      std::to_string(next) + " did not converge after " +
+                      std::to_string(ts.max_cutbacks) +
+                      " cutbacks (Time stepping/Maximum cutbacks): " +
+                      failure.what() +
+                      ". Outputs of the converged steps are kept.";
+                    write_summary("FAILED: " + message);
+                    throw NonConvergence(message);
+                  }
+                increment *= 0.5;
+                pcout << "  cutback " << cutbacks_in_row << " at t = " << next
+                      << " (" << failure.what() << "), new increment "
+                      << increment << std::endl;
+              }
+          }
+
+        const double elapsed = wall_clock.wall_time();
+        const double eta     = elapsed / time * (ts.end_time - time);
+        pcout << "step " << std::setw(4) << step << "/" << ts.n_steps
+              << "  t=" << std::setw(9) << std::setprecision(4) << time
+              << "  lf=" << std::fixed << std::setprecision(3)
+              << time / ts.end_time << std::defaultfloat
+              << "  incr " << n_increments << "  newton " << std::setw(3)
+              << n_iterations << "  |R|=" << std::scientific
+              << std::setprecision(2) << residual << std::defaultfloat
+              << "  cutbacks " << n_cutbacks << "  " << std::setprecision(3)
+              << elapsed << " s  ETA " << eta << " s" << std::endl;
+
+        if (parameters.output.is_output_step(step, ts.n_steps))
+          write_vtu(step, time);
+      }
+
+    write_summary("completed");
+    pcout << "done: " << n_converged_increments << " increments, "
+          << n_total_newton_iterations << " Newton iterations, "
+          << n_total_cutbacks << " cutbacks, " << wall_clock.wall_time()
+          << " s; output in " << parameters.output.directory << std::endl;
+  }
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos

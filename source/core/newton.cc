@@ -1,0 +1,186 @@
+#include <tribos/base/exceptions.h>
+#include <tribos/core/problem.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <cmath>
+#include <limits>
+
+namespace tribos
+{
+  template <int dim>
+  void
+  Problem<dim>::solve_linear_system(Vector &newton_update)
+  {
+    TimerOutput::Scope t(timer, "linear solve");
+    const auto        &p = parameters.linear_solver;
+    if (p.type == "direct")
+      {
+        SolverControl                  control(1, 0);
+        TrilinosWrappers::SolverDirect solver(
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         p.direct_solver));
+        solver.solve(system_matrix, newton_update, system_rhs);
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        std::vector<std::vector<bool>>                    constant_modes;
+        DoFTools::extract_constant_modes(dof_handler,
+                                         ComponentMask(dim, true),
+                                         constant_modes);
+        data.constant_modes        = constant_modes;
+        data.elliptic              = true;
+        data.higher_order_elements = parameters.finite_element.degree > 1;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        amg.initialize(system_matrix, data);
+
+        SolverControl control(p.max_iterations,
+                              p.tolerance * system_rhs.l2_norm());
+        SolverGMRES<Vector> solver(
+          control, SolverGMRES<Vector>::AdditionalData(200));
+        try
+          {
+            solver.solve(system_matrix, newton_update, system_rhs, amg);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            throw NonConvergence("GMRES/AMG did not converge in " +
+                                 std::to_string(e.last_step) +
+                                 " iterations (Linear solver/Maximum "
+                                 "iterations); try Type = direct");
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  IncrementReport
+  Problem<dim>::solve_increment(const double       time,
+                                const unsigned int step,
+                                const unsigned int increment)
+  {
+    const auto &p = parameters.nonlinear_solver;
+
+    const Vector              start = solution;
+    AffineConstraints<double> increment_constraints;
+    make_constraints(time, false, increment_constraints);
+
+    Vector newton_update(locally_owned_dofs, mpi_communicator);
+    Vector difference(locally_owned_dofs, mpi_communicator);
+    Vector line_search_base(locally_owned_dofs, mpi_communicator);
+
+    double       reference   = 0;
+    double       step_length = std::numeric_limits<double>::quiet_NaN();
+    double       update_norm = std::numeric_limits<double>::quiet_NaN();
+    double       previous[2] = {-1, -1};
+    const double nan         = std::numeric_limits<double>::quiet_NaN();
+
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        const AffineConstraints<double> &constraints =
+          (iteration == 0 ? increment_constraints : homogeneous_constraints);
+        const double residual = assemble(true, constraints, time);
+        if (!std::isfinite(residual))
+          throw NonConvergence("the residual is not finite");
+        const double force_scale = full_residual.l2_norm();
+
+        // Observed order of convergence from three successive residuals
+        // after the first solve (iteration 0 precedes the Dirichlet
+        // increment and says nothing about the rate).
+        double order = nan;
+        if (iteration >= 3 && previous[0] > 0 && previous[1] > 0 &&
+            residual > 0 && previous[0] != previous[1])
+          order = std::log(residual / previous[0]) /
+                  std::log(previous[0] / previous[1]);
+        previous[1] = previous[0];
+        previous[0] = residual;
+
+        const double scale = std::max(std::max(reference, residual), force_scale);
+        convergence_csv->add_row({double(step),
+                                  double(increment),
+                                  time,
+                                  double(iteration),
+                                  residual,
+                                  scale > 0 ? residual / scale : 0.,
+                                  update_norm,
+                                  step_length,
+                                  order});
+
+        bool residual_converged = false;
+        if (iteration > 0)
+          {
+            difference = solution;
+            difference -= start;
+            const double change = std::max(difference.l2_norm(),
+                                           solution.l2_norm());
+            residual_converged =
+              residual <= p.residual_tolerance * std::max(reference,
+                                                          force_scale) +
+                            p.absolute_residual_tolerance;
+            const bool update_converged =
+              update_norm <= p.increment_tolerance * change || change == 0;
+            if (residual_converged && update_converged)
+              {
+                n_total_newton_iterations += iteration;
+                return {iteration, residual};
+              }
+            if (iteration >= p.max_iterations)
+              throw NonConvergence(
+                "Newton did not converge in " + std::to_string(iteration) +
+                " iterations (|R| = " + std::to_string(residual) +
+                "; Nonlinear solver/Maximum iterations)");
+          }
+        reference = std::max(reference, residual);
+
+        newton_update = 0;
+        solve_linear_system(newton_update);
+        constraints.distribute(newton_update);
+
+        step_length = 1;
+        // No line search once the residual is at its tolerance (only the
+        // update is still too large): there is nothing left to decrease.
+        if (p.line_search && iteration > 0 && !residual_converged)
+          {
+            // Backtracking (Armijo) on the free residual norm. The first
+            // iteration carries the Dirichlet increment and is taken whole.
+            line_search_base = solution;
+            for (unsigned int k = 0;; ++k)
+              {
+                solution = line_search_base;
+                solution.add(step_length, newton_update);
+                ghosted_solution = solution;
+                double trial     = std::numeric_limits<double>::infinity();
+                try
+                  {
+                    trial = assemble(false, homogeneous_constraints, time);
+                  }
+                catch (const InvertedElement &)
+                  {}
+                if (trial <= (1 - 1e-4 * step_length) * residual ||
+                    k >= p.max_line_search_steps)
+                  break;
+                step_length *= 0.5;
+              }
+          }
+        else
+          {
+            solution.add(1., newton_update);
+            ghosted_solution = solution;
+          }
+        update_norm = step_length * newton_update.l2_norm();
+      }
+  }
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos

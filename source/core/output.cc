@@ -1,0 +1,356 @@
+#include <tribos/core/problem.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+namespace tribos
+{
+  namespace
+  {
+    const char *const axis = "xyz";
+
+    /** Write through a temporary file so that no half-written file remains. */
+    template <typename Writer>
+    void
+    write_atomically(const std::string &filename, const Writer &writer)
+    {
+      const std::string temporary = filename + ".part";
+      {
+        std::ofstream out(temporary);
+        AssertThrow(out, ExcMessage("Cannot write <" + temporary + ">."));
+        writer(out);
+      }
+      std::filesystem::rename(temporary, filename);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::open_output()
+  {
+    const bool        root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    const std::string dir  = parameters.output.directory;
+    if (root)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(dir, error);
+        AssertThrow(!error && std::filesystem::is_directory(dir),
+                    ExcMessage("Parameter <Output/Directory> = <" + dir +
+                               ">: cannot create the directory (" +
+                               error.message() + ")."));
+      }
+    MPI_Barrier(mpi_communicator);
+
+    std::vector<std::string> columns = {"step",
+                                        "increment",
+                                        "time",
+                                        "load_factor",
+                                        "newton_iterations",
+                                        "residual",
+                                        "cutbacks",
+                                        "wall_time"};
+    for (const auto &c : parameters.boundary_conditions.dirichlet)
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back("RF" + std::to_string(c.boundary_id) + "_" +
+                          axis[d]);
+    if (exact_displacement)
+      {
+        columns.push_back("error_L2");
+        columns.push_back("error_H1");
+      }
+    history_csv = std::make_unique<CsvWriter>(dir + "/history.csv", columns, root);
+    convergence_csv =
+      std::make_unique<CsvWriter>(dir + "/convergence.csv",
+                                  std::vector<std::string>{"step",
+                                                           "increment",
+                                                           "time",
+                                                           "iteration",
+                                                           "residual",
+                                                           "relative_residual",
+                                                           "update_norm",
+                                                           "line_search_step",
+                                                           "order"},
+                                  root);
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Problem<dim>::reaction_forces() const
+  {
+    std::vector<double> forces;
+    for (const auto &per_component : reaction_dofs)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          double sum = 0;
+          for (const auto dof : per_component[d])
+            if (locally_owned_dofs.is_element(dof))
+              sum += full_residual[dof];
+          forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
+        }
+    return forces;
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  Problem<dim>::displacement_errors(const double time) const
+  {
+    exact_displacement->set_time(time);
+    const QGauss<dim>      error_quadrature(parameters.finite_element.degree + 3);
+    dealii::Vector<float>  cellwise(triangulation.n_active_cells());
+    VectorTools::integrate_difference(dof_handler,
+                                      ghosted_solution,
+                                      *exact_displacement,
+                                      cellwise,
+                                      error_quadrature,
+                                      VectorTools::L2_norm);
+    const double l2 = VectorTools::compute_global_error(triangulation,
+                                                        cellwise,
+                                                        VectorTools::L2_norm);
+    VectorTools::integrate_difference(dof_handler,
+                                      ghosted_solution,
+                                      *exact_displacement,
+                                      cellwise,
+                                      error_quadrature,
+                                      VectorTools::H1_seminorm);
+    const double h1 =
+      VectorTools::compute_global_error(triangulation,
+                                        cellwise,
+                                        VectorTools::H1_seminorm);
+    return {l2, h1};
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::write_history_row(const unsigned int     step,
+                                  const unsigned int     increment,
+                                  const double           time,
+                                  const IncrementReport &report,
+                                  const unsigned int     n_cutbacks,
+                                  const double           wall_time)
+  {
+    // full_residual holds R at the converged state: the last assembly was
+    // the one that found convergence.
+    std::vector<double> row = {double(step),
+                               double(increment),
+                               time,
+                               time / parameters.time_stepping.end_time,
+                               double(report.n_iterations),
+                               report.residual,
+                               double(n_cutbacks),
+                               wall_time};
+    for (const double f : reaction_forces())
+      row.push_back(f);
+    if (exact_displacement)
+      {
+        const auto [l2, h1] = displacement_errors(time);
+        row.push_back(l2);
+        row.push_back(h1);
+      }
+    history_csv->add_row(row);
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::write_vtu(const unsigned int step, const double time)
+  {
+    if (!parameters.output.write_vtu)
+      return;
+    TimerOutput::Scope t(timer, "output");
+
+    // Cell averages of the Cauchy stress: honest for every material,
+    // including those whose stress lives only at quadrature points.
+    const unsigned int n_stress = (dim == 2 ? 4 : 6);
+    const unsigned int stress_index[6][2] = {
+      {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+    const char *stress_names[6] = {
+      "stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz",
+      "stress_xz"};
+    std::vector<dealii::Vector<double>> stress(
+      n_stress, dealii::Vector<double>(triangulation.n_active_cells()));
+    dealii::Vector<double> von_mises(triangulation.n_active_cells());
+    dealii::Vector<double> plastic_strain(triangulation.n_active_cells());
+    dealii::Vector<double> body_id(triangulation.n_active_cells());
+    dealii::Vector<double> subdomain(triangulation.n_active_cells());
+    bool                   any_history = false;
+    for (const auto &m : materials)
+      any_history = any_history || m->n_history_variables() > 0;
+
+    FEValues<dim> fe_values(*fe, quadrature, update_gradients | update_JxW_values);
+    std::vector<std::vector<Tensor<1, dim>>> gradients(
+      quadrature.size(), std::vector<Tensor<1, dim>>(dim));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int index = cell->active_cell_index();
+          fe_values.reinit(cell);
+          fe_values.get_function_gradients(ghosted_solution, gradients);
+          const auto        &material  = *materials[cell->material_id()];
+          const unsigned int n_history = material.n_history_variables();
+          SymmetricTensor<2, 3> average;
+          double                volume = 0, peeq = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+              for (unsigned int c = 0; c < dim; ++c)
+                F[c] += gradients[q][c];
+              const double *history =
+                n_history ? &history_old[history_offset[index] + q * n_history] :
+                            nullptr;
+              average += fe_values.JxW(q) * material.cauchy_stress(F, history);
+              peeq += fe_values.JxW(q) *
+                      material.equivalent_plastic_strain(history);
+              volume += fe_values.JxW(q);
+            }
+          average /= volume;
+          for (unsigned int s = 0; s < n_stress; ++s)
+            stress[s][index] = average[stress_index[s][0]][stress_index[s][1]];
+          const SymmetricTensor<2, 3> dev = deviator(average);
+          von_mises[index]      = std::sqrt(1.5 * (dev * dev));
+          plastic_strain[index] = peeq / volume;
+          body_id[index]        = cell->material_id();
+          subdomain[index]      = cell->subdomain_id();
+        }
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    using cell_iterator = typename Triangulation<dim>::active_cell_iterator;
+    const auto next_owned = [](const Triangulation<dim> &tria,
+                               cell_iterator             cell) {
+      while (cell != tria.end() && !cell->is_locally_owned())
+        ++cell;
+      return cell;
+    };
+    data_out.set_cell_selection(
+      [next_owned](const Triangulation<dim> &tria) {
+        return next_owned(tria, tria.begin_active());
+      },
+      [next_owned](const Triangulation<dim>                             &tria,
+                   const typename Triangulation<dim>::cell_iterator &cell) {
+        cell_iterator next(cell);
+        return next_owned(tria, ++next);
+      });
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(ghosted_solution,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             interpretation);
+    for (unsigned int s = 0; s < n_stress; ++s)
+      data_out.add_data_vector(stress[s], stress_names[s]);
+    data_out.add_data_vector(von_mises, "von_mises");
+    if (any_history)
+      data_out.add_data_vector(plastic_strain, "PEEQ");
+    data_out.add_data_vector(body_id, "body_id");
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    if (n_ranks > 1)
+      data_out.add_data_vector(subdomain, "subdomain");
+    data_out.build_patches(parameters.finite_element.degree);
+
+    DataOutBase::VtkFlags flags;
+    flags.time  = time;
+    flags.cycle = step;
+    data_out.set_flags(flags);
+
+    const std::string dir  = parameters.output.directory + "/";
+    const std::string base = "solution-" + Utilities::int_to_string(step, 5);
+    if (n_ranks == 1)
+      {
+        write_atomically(dir + base + ".vtu",
+                         [&](std::ostream &out) { data_out.write_vtu(out); });
+        pvd_records.emplace_back(time, base + ".vtu");
+      }
+    else
+      {
+        const std::string piece =
+          base + "." + Utilities::int_to_string(rank, 4) + ".vtu";
+        write_atomically(dir + piece,
+                         [&](std::ostream &out) { data_out.write_vtu(out); });
+        MPI_Barrier(mpi_communicator);
+        if (rank == 0)
+          {
+            std::vector<std::string> pieces;
+            for (unsigned int r = 0; r < n_ranks; ++r)
+              pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
+                               ".vtu");
+            write_atomically(dir + base + ".pvtu", [&](std::ostream &out) {
+              data_out.write_pvtu_record(out, pieces);
+            });
+          }
+        pvd_records.emplace_back(time, base + ".pvtu");
+      }
+    if (rank == 0)
+      write_atomically(dir + "solution.pvd", [&](std::ostream &out) {
+        DataOutBase::write_pvd_record(out, pvd_records);
+      });
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::write_summary(const std::string &status)
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    const auto wall = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto calls = timer.get_summary_data(TimerOutput::n_calls);
+    double     total = 0;
+    for (const auto &[section, seconds] : wall)
+      total += seconds;
+
+    write_atomically(parameters.output.directory + "/summary.txt",
+                     [&](std::ostream &out) {
+                       out << "status            " << status << '\n'
+                           << "dimension         " << dim << '\n'
+                           << "scene             " << parameters.scene.name
+                           << '\n'
+                           << "cells             "
+                           << triangulation.n_active_cells() << '\n'
+                           << "dofs              " << dof_handler.n_dofs()
+                           << '\n'
+                           << "bodies            " << materials.size() << '\n'
+                           << "MPI processes     "
+                           << Utilities::MPI::n_mpi_processes(mpi_communicator)
+                           << '\n'
+                           << "increments        " << n_converged_increments
+                           << '\n'
+                           << "newton iterations " << n_total_newton_iterations
+                           << '\n'
+                           << "cutbacks          " << n_total_cutbacks
+                           << "\n\n"
+                           << "section               calls    wall [s]  share\n";
+                       for (const auto &[section, seconds] : wall)
+                         out << std::left << std::setw(20) << section
+                             << std::right << std::setw(8)
+                             << static_cast<unsigned int>(calls.at(section))
+                             << std::setw(12) << std::setprecision(4)
+                             << seconds << std::setw(6)
+                             << std::setprecision(3)
+                             << (total > 0 ? 100 * seconds / total : 0)
+                             << "%\n";
+                     });
+  }
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos

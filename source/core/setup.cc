@@ -1,0 +1,303 @@
+#include <tribos/core/problem.h>
+#include <tribos/scene/scene.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <set>
+
+namespace tribos
+{
+  namespace
+  {
+    /** "x, y(, z)" expressions padded to dim components for FunctionParser. */
+    template <int dim>
+    std::unique_ptr<FunctionParser<dim>>
+    make_vector_function(const std::vector<std::string> &expressions,
+                         const std::string              &entry)
+    {
+      std::string joined;
+      for (unsigned int i = 0; i < expressions.size(); ++i)
+        joined += (i ? ";" : "") + expressions[i];
+      auto function = std::make_unique<FunctionParser<dim>>(expressions.size());
+      try
+        {
+          function->initialize(FunctionParser<dim>::default_variable_names() +
+                                 ",t",
+                               joined,
+                               {{"pi", numbers::PI}},
+                               true);
+          // Evaluate once so that unknown symbols are reported now.
+          Vector<double> value(expressions.size());
+          function->vector_value(Point<dim>(), value);
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcMessage("Parameter <" + entry +
+                                 ">: cannot parse the expression(s) <" +
+                                 joined +
+                                 ">. Use x, y, z, t, pi and the functions "
+                                 "of deal.II's FunctionParser (muparser)."));
+        }
+      return function;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  Problem<dim>::Problem(const Parameters::AllParameters &parameters,
+                        const MPI_Comm                   mpi_communicator)
+    : parameters(parameters)
+    , mpi_communicator(mpi_communicator)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , timer(mpi_communicator,
+            pcout,
+            TimerOutput::never,
+            TimerOutput::wall_times)
+    , triangulation(mpi_communicator)
+    , dof_handler(triangulation)
+    , quadrature(parameters.finite_element.n_quadrature_points)
+    , face_quadrature(parameters.finite_element.n_quadrature_points)
+  {
+    AssertThrow(parameters.dimension == dim, ExcInternalError());
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::make_grid()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    create_scene(parameters.scene, triangulation);
+
+    // Every boundary id named in a condition must exist in the mesh.
+    std::set<types::boundary_id> existing;
+    for (const auto &face : triangulation.active_face_iterators())
+      if (face->at_boundary())
+        existing.insert(face->boundary_id());
+    const auto require = [&](const unsigned int id, const std::string &entry) {
+      AssertThrow(existing.count(id) == 1,
+                  ExcMessage("Parameter <Boundary conditions/" + entry +
+                             "> names boundary id " + std::to_string(id) +
+                             ", which scene <" + parameters.scene.name +
+                             "> does not have. Its boundary ids are listed "
+                             "in the README."));
+    };
+    for (const auto &c : parameters.boundary_conditions.dirichlet)
+      require(c.boundary_id, "Dirichlet");
+    for (const auto id : parameters.boundary_conditions.symmetry)
+      require(id, "Symmetry");
+    for (const auto &c : parameters.boundary_conditions.neumann)
+      require(c.boundary_id, "Neumann");
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::setup_materials()
+  {
+    const auto &m = parameters.materials;
+    types::material_id max_body = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      max_body = std::max(max_body, cell->material_id());
+    materials.clear();
+    for (unsigned int body = 0; body <= max_body; ++body)
+      materials.push_back(create_material<dim>(
+        Parameters::Materials::for_body(m.models, body, "Model"),
+        Parameters::Materials::for_body(m.youngs_moduli,
+                                        body,
+                                        "Young's modulus"),
+        Parameters::Materials::for_body(m.poissons_ratios,
+                                        body,
+                                        "Poisson's ratio")));
+
+    // History only where a material has memory: elastic bodies pay nothing.
+    const unsigned int n_q = quadrature.size();
+    history_offset.assign(triangulation.n_active_cells(),
+                          numbers::invalid_unsigned_int);
+    unsigned int n_values = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int n =
+            materials[cell->material_id()]->n_history_variables();
+          if (n > 0)
+            {
+              history_offset[cell->active_cell_index()] = n_values;
+              n_values += n * n_q;
+            }
+        }
+    history_old.assign(n_values, 0.);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          history_offset[cell->active_cell_index()] !=
+            numbers::invalid_unsigned_int)
+        {
+          const auto        &material = *materials[cell->material_id()];
+          const unsigned int n        = material.n_history_variables();
+          for (unsigned int q = 0; q < n_q; ++q)
+            material.initialize_history(
+              &history_old[history_offset[cell->active_cell_index()] + q * n]);
+        }
+    history_new = history_old;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::setup_system()
+  {
+    TimerOutput::Scope t(timer, "setup");
+    fe = std::make_unique<FESystem<dim>>(
+      FE_Q<dim>(parameters.finite_element.degree), dim);
+    dof_handler.distribute_dofs(*fe);
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    const auto &bc = parameters.boundary_conditions;
+    dirichlet_functions.clear();
+    reaction_dofs.clear();
+    for (const auto &c : bc.dirichlet)
+      {
+        dirichlet_functions.push_back(make_vector_function<dim>(
+          c.expressions, "Boundary conditions/Dirichlet"));
+        std::vector<IndexSet> per_component;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            ComponentMask mask(dim, false);
+            mask.set(d, true);
+            per_component.push_back(
+              DoFTools::extract_boundary_dofs(dof_handler,
+                                              mask,
+                                              {static_cast<types::boundary_id>(
+                                                c.boundary_id)}));
+          }
+        reaction_dofs.push_back(per_component);
+      }
+    neumann_functions.clear();
+    for (const auto &c : bc.neumann)
+      neumann_functions[c.boundary_id] =
+        make_vector_function<dim>(c.expressions, "Boundary conditions/Neumann");
+    if (!bc.body_force.empty())
+      body_force =
+        make_vector_function<dim>(bc.body_force, "Boundary conditions/Body force");
+    if (!parameters.verification.exact_displacement.empty())
+      exact_displacement =
+        make_vector_function<dim>(parameters.verification.exact_displacement,
+                                  "Verification/Exact displacement");
+
+    make_constraints(0, true, homogeneous_constraints);
+
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    homogeneous_constraints,
+                                    false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    system_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
+
+    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    free_residual.reinit(locally_owned_dofs, mpi_communicator);
+    full_residual.reinit(locally_owned_dofs, mpi_communicator);
+    solution.reinit(locally_owned_dofs, mpi_communicator);
+    ghosted_solution.reinit(locally_owned_dofs,
+                            locally_relevant_dofs,
+                            mpi_communicator);
+
+    setup_materials();
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::make_constraints(const double               time,
+                                 const bool                 homogeneous,
+                                 AffineConstraints<double> &constraints) const
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+
+    // Dirichlet: du = g(t) - u on the constrained dofs, or du = 0.
+    const auto &bc = parameters.boundary_conditions;
+    for (unsigned int i = 0; i < bc.dirichlet.size(); ++i)
+      {
+        const auto &c        = bc.dirichlet[i];
+        auto       &function = *dirichlet_functions[i];
+        function.set_time(time);
+        for (unsigned int k = 0; k < c.components.size(); ++k)
+          {
+            const unsigned int d = c.components[k];
+            ComponentMask      mask(dim, false);
+            mask.set(d, true);
+            std::map<types::global_dof_index, double> values;
+            // Expand the k-th expression to a dim-vector function whose
+            // component d is that expression.
+            const auto scalar = [&function, k](const Point<dim> &p) {
+              return function.value(p, k);
+            };
+            VectorFunctionFromScalarFunctionObject<dim> component(scalar,
+                                                                  d,
+                                                                  dim);
+            VectorTools::interpolate_boundary_values(
+              dof_handler, c.boundary_id, component, values, mask);
+            for (const auto &[dof, value] : values)
+              if (locally_relevant_dofs.is_element(dof) &&
+                  !constraints.is_constrained(dof))
+                {
+                  constraints.add_line(dof);
+                  if (!homogeneous)
+                    constraints.set_inhomogeneity(dof,
+                                                  value - ghosted_solution[dof]);
+                }
+          }
+      }
+
+    if (!bc.symmetry.empty())
+      {
+        AffineConstraints<double> symmetry(locally_relevant_dofs);
+        const std::set<types::boundary_id> ids(bc.symmetry.begin(),
+                                               bc.symmetry.end());
+        VectorTools::compute_no_normal_flux_constraints(dof_handler,
+                                                        0,
+                                                        ids,
+                                                        symmetry);
+        symmetry.close();
+        constraints.merge(
+          symmetry,
+          AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
+      }
+    constraints.close();
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::commit_history()
+  {
+    history_old = history_new;
+  }
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos

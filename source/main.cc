@@ -1,0 +1,164 @@
+/**
+ * tribos: multi-body contact with Coulomb friction at finite strain.
+ *
+ * Command line:
+ *   tribos FILE.prm [--set "Section/Entry=value"]...
+ *   tribos --print-parameters [prm|json]
+ *   tribos --help
+ */
+
+#include <tribos/base/exceptions.h>
+#include <tribos/core/problem.h>
+#include <tribos/parameters/all_parameters.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  void
+  print_help()
+  {
+    std::cout
+      << "tribos - finite element contact with Coulomb friction (deal.II)\n\n"
+         "Usage:\n"
+         "  tribos FILE.prm [--set \"Section/Entry=value\"]...\n"
+         "      Run the scene described by FILE.prm. Each --set overrides one\n"
+         "      entry of the file (subsections separated by '/'); unknown\n"
+         "      entries and values outside the allowed ones are errors.\n"
+         "  tribos --print-parameters [prm|json]\n"
+         "      Print every parameter with its documentation, default and\n"
+         "      allowed values.\n"
+         "  tribos --help\n"
+         "      This text.\n\n"
+         "Run in parallel with: mpirun -np N tribos FILE.prm\n"
+         "Exit status: 0 success, 1 bad input or error, 2 no convergence.\n";
+  }
+
+  template <int dim>
+  void
+  run(dealii::ParameterHandler &prm)
+  {
+    tribos::Parameters::AllParameters parameters;
+    parameters.parse_parameters(prm);
+    tribos::Problem<dim> problem(parameters, MPI_COMM_WORLD);
+    problem.run();
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  using namespace dealii;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+  try
+    {
+      std::string              filename;
+      std::vector<std::string> overrides;
+      std::string              print_format;
+      bool                     print = false;
+
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string argument = argv[i];
+          if (argument == "--help" || argument == "-h")
+            {
+              if (root)
+                print_help();
+              return 0;
+            }
+          else if (argument == "--set")
+            {
+              AssertThrow(i + 1 < argc,
+                          ExcMessage("--set needs an argument "
+                                     "\"Section/Entry=value\"."));
+              overrides.emplace_back(argv[++i]);
+            }
+          else if (argument.rfind("--set=", 0) == 0)
+            overrides.push_back(argument.substr(6));
+          else if (argument == "--print-parameters")
+            {
+              print        = true;
+              print_format = "prm";
+              if (i + 1 < argc && argv[i + 1][0] != '-')
+                print_format = argv[++i];
+              AssertThrow(print_format == "prm" || print_format == "json",
+                          ExcMessage("--print-parameters: unknown format <" +
+                                     print_format +
+                                     ">. Allowed: prm, json."));
+            }
+          else if (!argument.empty() && argument[0] == '-')
+            {
+              AssertThrow(false,
+                          ExcMessage("Unknown option <" + argument +
+                                     ">. See tribos --help."));
+            }
+          else
+            {
+              AssertThrow(filename.empty(),
+                          ExcMessage("More than one parameter file given (<" +
+                                     filename + "> and <" + argument +
+                                     ">)."));
+              filename = argument;
+            }
+        }
+
+      ParameterHandler prm;
+      tribos::Parameters::AllParameters::declare_parameters(prm);
+
+      if (print)
+        {
+          if (root)
+            prm.print_parameters(std::cout,
+                                 print_format == "json" ?
+                                   ParameterHandler::JSON :
+                                   ParameterHandler::KeepDeclarationOrder |
+                                     ParameterHandler::PRM);
+          return 0;
+        }
+
+      AssertThrow(!filename.empty(),
+                  ExcMessage("No parameter file given. Usage: tribos "
+                             "FILE.prm [--set \"Section/Entry=value\"]... "
+                             "(see tribos --help)."));
+
+      const unsigned int dim =
+        tribos::Parameters::read_dimension(filename, overrides);
+      tribos::Parameters::read_input(prm, filename, overrides);
+      if (dim == 2)
+        run<2>(prm);
+      else
+        run<3>(prm);
+    }
+  catch (const tribos::NonConvergence &failure)
+    {
+      if (root)
+        std::cerr << "\ntribos: NO CONVERGENCE: " << failure.what()
+                  << std::endl;
+      return 2;
+    }
+  catch (const dealii::ExceptionBase &error)
+    {
+      if (root)
+        {
+          std::cerr << "\ntribos: ERROR: ";
+          error.print_info(std::cerr);
+          std::cerr << std::endl;
+        }
+      return 1;
+    }
+  catch (const std::exception &error)
+    {
+      if (root)
+        std::cerr << "\ntribos: ERROR: " << error.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,143 @@
+#include <tribos/parameters/all_parameters.h>
+
+#include <filesystem>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    void
+    AllParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Dimension",
+                        "2",
+                        dealii::Patterns::Integer(2, 3),
+                        "Space dimension: 2 (plane strain) or 3.");
+      Scene::declare_parameters(prm);
+      FiniteElement::declare_parameters(prm);
+      Materials::declare_parameters(prm);
+      BoundaryConditions::declare_parameters(prm);
+      NonlinearSolver::declare_parameters(prm);
+      TimeStepping::declare_parameters(prm);
+      LinearSolver::declare_parameters(prm);
+      Output::declare_parameters(prm);
+      Verification::declare_parameters(prm);
+    }
+
+
+
+    void
+    AllParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      dimension = prm.get_integer("Dimension");
+      scene.parse_parameters(prm);
+      finite_element.parse_parameters(prm);
+      materials.parse_parameters(prm);
+      boundary_conditions.parse_parameters(prm);
+      boundary_conditions.check(dimension);
+      nonlinear_solver.parse_parameters(prm);
+      time_stepping.parse_parameters(prm);
+      linear_solver.parse_parameters(prm);
+      output.parse_parameters(prm);
+      verification.parse_parameters(prm);
+      AssertThrow(verification.exact_displacement.empty() ||
+                    verification.exact_displacement.size() == dimension,
+                  dealii::ExcMessage(
+                    "Parameter <Verification/Exact displacement> needs " +
+                    std::to_string(dimension) + " expressions or none."));
+    }
+
+
+
+    void
+    apply_overrides(dealii::ParameterHandler       &prm,
+                    const std::vector<std::string> &overrides)
+    {
+      for (const auto &assignment : overrides)
+        {
+          const auto equal = assignment.find('=');
+          AssertThrow(equal != std::string::npos,
+                      dealii::ExcMessage("--set <" + assignment +
+                                         ">: expected 'Section/Entry=value'."));
+          const std::string path  = assignment.substr(0, equal);
+          const std::string value = assignment.substr(equal + 1);
+
+          std::vector<std::string> sections;
+          std::string::size_type   begin = 0, slash;
+          while ((slash = path.find('/', begin)) != std::string::npos)
+            {
+              sections.push_back(path.substr(begin, slash - begin));
+              begin = slash + 1;
+            }
+          const std::string entry = path.substr(begin);
+
+          unsigned int n_entered = 0;
+          try
+            {
+              for (const auto &section : sections)
+                {
+                  prm.enter_subsection(section);
+                  ++n_entered;
+                }
+              prm.set(entry, value);
+            }
+          catch (const dealii::ExceptionBase &)
+            {
+              for (; n_entered > 0; --n_entered)
+                prm.leave_subsection();
+              AssertThrow(false,
+                          dealii::ExcMessage(
+                            "--set <" + assignment + ">: <" + path +
+                            "> is not a declared parameter, or <" + value +
+                            "> is not an allowed value for it. Run "
+                            "'tribos --print-parameters' for every entry "
+                            "and its allowed values."));
+            }
+          for (; n_entered > 0; --n_entered)
+            prm.leave_subsection();
+        }
+    }
+
+
+
+    void
+    read_input(dealii::ParameterHandler       &prm,
+               const std::string              &filename,
+               const std::vector<std::string> &overrides)
+    {
+      if (!filename.empty())
+        {
+          AssertThrow(std::filesystem::is_regular_file(filename),
+                      dealii::ExcMessage("Parameter file <" + filename +
+                                         "> does not exist or is not a "
+                                         "regular file."));
+          prm.parse_input(filename);
+        }
+      apply_overrides(prm, overrides);
+    }
+
+
+
+    unsigned int
+    read_dimension(const std::string              &filename,
+                   const std::vector<std::string> &overrides)
+    {
+      dealii::ParameterHandler prm;
+      prm.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3));
+      if (!filename.empty())
+        {
+          AssertThrow(std::filesystem::is_regular_file(filename),
+                      dealii::ExcMessage("Parameter file <" + filename +
+                                         "> does not exist or is not a "
+                                         "regular file."));
+          prm.parse_input(filename, "", /*skip_undefined=*/true);
+        }
+      std::vector<std::string> dimension_overrides;
+      for (const auto &o : overrides)
+        if (o.rfind("Dimension=", 0) == 0)
+          dimension_overrides.push_back(o);
+      apply_overrides(prm, dimension_overrides);
+      return prm.get_integer("Dimension");
+    }
+  } // namespace Parameters
+} // namespace tribos

@@ -1,0 +1,36 @@
+#include <tribos/parameters/finite_element.h>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    void
+    FiniteElement::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Finite element");
+      prm.declare_entry("Polynomial degree",
+                        "1",
+                        dealii::Patterns::Integer(1, 2),
+                        "Degree of the Lagrange displacement element: 1 (Q1) "
+                        "or 2 (Q2).");
+      prm.declare_entry("Quadrature points",
+                        "0",
+                        dealii::Patterns::Integer(0, 6),
+                        "Gauss points per direction; 0 chooses degree + 1.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    FiniteElement::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Finite element");
+      degree              = prm.get_integer("Polynomial degree");
+      n_quadrature_points = prm.get_integer("Quadrature points");
+      if (n_quadrature_points == 0)
+        n_quadrature_points = degree + 1;
+      prm.leave_subsection();
+    }
+  } // namespace Parameters
+} // namespace tribos

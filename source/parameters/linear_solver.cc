@@ -1,0 +1,46 @@
+#include <tribos/parameters/linear_solver.h>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    void
+    LinearSolver::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      prm.declare_entry("Type",
+                        "direct",
+                        dealii::Patterns::Selection("direct|iterative"),
+                        "direct: sparse LU (Amesos); iterative: GMRES "
+                        "preconditioned by algebraic multigrid (ML).");
+      prm.declare_entry("Direct solver",
+                        "Amesos_Klu",
+                        dealii::Patterns::Selection(
+                          "Amesos_Klu|Amesos_Mumps|Amesos_Lapack"),
+                        "Trilinos Amesos package used when Type = direct.");
+      prm.declare_entry("Tolerance",
+                        "1e-10",
+                        dealii::Patterns::Double(0),
+                        "Relative residual reduction of the iterative "
+                        "solver.");
+      prm.declare_entry("Maximum iterations",
+                        "5000",
+                        dealii::Patterns::Integer(1),
+                        "Iterations of the iterative solver.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    LinearSolver::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Linear solver");
+      type           = prm.get("Type");
+      direct_solver  = prm.get("Direct solver");
+      tolerance      = prm.get_double("Tolerance");
+      max_iterations = prm.get_integer("Maximum iterations");
+      prm.leave_subsection();
+    }
+  } // namespace Parameters
+} // namespace tribos

@@ -1,0 +1,56 @@
+#include <tribos/parameters/nonlinear_solver.h>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    void
+    NonlinearSolver::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      prm.declare_entry("Maximum iterations",
+                        "20",
+                        dealii::Patterns::Integer(1),
+                        "Newton iterations allowed per increment before the "
+                        "increment is cut back.");
+      prm.declare_entry("Residual tolerance",
+                        "1e-8",
+                        dealii::Patterns::Double(0),
+                        "Converged when |R| <= tol * max(|R| seen in the "
+                        "increment, |internal force|) + absolute tolerance.");
+      prm.declare_entry("Absolute residual tolerance",
+                        "1e-12",
+                        dealii::Patterns::Double(0),
+                        "Floor of the residual test, in force units.");
+      prm.declare_entry("Increment tolerance",
+                        "1e-8",
+                        dealii::Patterns::Double(0),
+                        "Converged also requires |du| <= tol * |u increment "
+                        "of the step| (or |du| <= tol * |u| if larger).");
+      prm.declare_entry("Line search",
+                        "true",
+                        dealii::Patterns::Bool(),
+                        "Backtracking on the residual norm (Armijo).");
+      prm.declare_entry("Maximum line search steps",
+                        "6",
+                        dealii::Patterns::Integer(0, 30),
+                        "Halvings of the step length at most.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    NonlinearSolver::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Nonlinear solver");
+      max_iterations              = prm.get_integer("Maximum iterations");
+      residual_tolerance          = prm.get_double("Residual tolerance");
+      absolute_residual_tolerance = prm.get_double("Absolute residual tolerance");
+      increment_tolerance         = prm.get_double("Increment tolerance");
+      line_search                 = prm.get_bool("Line search");
+      max_line_search_steps = prm.get_integer("Maximum line search steps");
+      prm.leave_subsection();
+    }
+  } // namespace Parameters
+} // namespace tribos

@@ -1,0 +1,61 @@
+#include <tribos/base/text.h>
+#include <tribos/parameters/output.h>
+
+#include <algorithm>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    void
+    Output::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory",
+                        "output",
+                        dealii::Patterns::Anything(),
+                        "Created if missing; existing files are replaced.");
+      prm.declare_entry("Frequency",
+                        "1",
+                        dealii::Patterns::Integer(0),
+                        "Write VTU every this many nominal steps; 0 writes "
+                        "only the listed steps and the last one.");
+      prm.declare_entry("Steps",
+                        "",
+                        dealii::Patterns::Anything(),
+                        "Nominal steps (1-based) always written, e.g. "
+                        "'44, 80'.");
+      prm.declare_entry("Write VTU",
+                        "true",
+                        dealii::Patterns::Bool(),
+                        "Write solution-NNNNN.vtu and solution.pvd.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Output::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory = prm.get("Directory");
+      frequency = prm.get_integer("Frequency");
+      steps     = Text::parse_unsigned(prm.get("Steps"), "Output/Steps");
+      write_vtu = prm.get_bool("Write VTU");
+      AssertThrow(!directory.empty(),
+                  dealii::ExcMessage(
+                    "Parameter <Output/Directory> must not be empty."));
+      prm.leave_subsection();
+    }
+
+
+
+    bool
+    Output::is_output_step(const unsigned int step,
+                           const unsigned int n_steps) const
+    {
+      return step == n_steps || (frequency > 0 && step % frequency == 0) ||
+             std::find(steps.begin(), steps.end(), step) != steps.end();
+    }
+  } // namespace Parameters
+} // namespace tribos

@@ -1,0 +1,77 @@
+"""Helpers shared by the test drivers: run tribos, read its CSV output,
+compare with references through numdiff. Standard library only."""
+
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+
+def setup(argv):
+    """Return (tribos executable, tests folder, fresh output folder)."""
+    tribos, tests, out = argv[1], argv[2], argv[3]
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    return tribos, tests, out
+
+
+def run(tribos, prm, out, sets=(), mpi_ranks=0, expect_success=True):
+    """Run tribos on prm with output into out and the --set overrides."""
+    command = [tribos, prm, "--set", "Output/Directory=" + out]
+    for s in sets:
+        command += ["--set", s]
+    if mpi_ranks:
+        command = [os.environ.get("MPIEXEC", "mpirun"), "-np",
+                   str(mpi_ranks)] + command
+    result = subprocess.run(command, capture_output=True, text=True)
+    if expect_success and result.returncode != 0:
+        print(result.stdout)
+        print(result.stderr)
+        raise SystemExit("tribos failed with exit code %d: %s"
+                         % (result.returncode, " ".join(command)))
+    return result
+
+
+def read_csv(path):
+    """Rows of a CSV file as a list of dicts of floats."""
+    with open(path) as f:
+        return [{k: float(v) if v not in ("", "nan") else math.nan
+                 for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def strip_columns(source, target, drop=("wall_time",)):
+    """Copy a CSV without the columns that differ from run to run."""
+    with open(source) as f:
+        rows = list(csv.reader(f))
+    keep = [i for i, name in enumerate(rows[0]) if name not in drop]
+    with open(target, "w") as f:
+        for row in rows:
+            f.write(",".join(row[i] for i in keep) + "\n")
+
+
+def numdiff(result, reference, relative=1e-6, absolute=1e-10):
+    """Compare two files with numdiff; raise with its output on mismatch."""
+    command = [os.environ.get("NUMDIFF", "numdiff"), "-q", "-s", ", \n",
+               "-r", str(relative), "-a", str(absolute), result, reference]
+    outcome = subprocess.run(command, capture_output=True, text=True)
+    if outcome.returncode != 0:
+        full = subprocess.run(command[:1] + command[2:], capture_output=True,
+                              text=True)
+        print(full.stdout[-4000:])
+        raise SystemExit("numdiff: %s differs from %s" % (result, reference))
+
+
+def check(condition, message):
+    """Print the check and fail the test if it does not hold."""
+    print(("ok      " if condition else "FAILED  ") + message)
+    if not condition:
+        check.failed = True
+
+
+check.failed = False
+
+
+def finish():
+    sys.exit(1 if check.failed else 0)
