@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Bad input: each case must exit with status 1 (not a crash: no signal, no
+# abort), print a message naming the parameter, and leave no output files.
+tribos=$1 tests=$2 out=$3
+rm -rf "$out" && mkdir -p "$out"
+good=$tests/neo_hookean_stretch.prm
+failed=0
+
+expect() { # name, expected substring, command...
+  local name=$1 pattern=$2
+  shift 2
+  local dir="$out/$name"
+  "$@" --set "Output/Directory=$dir" > "$out/$name.stdout" 2> "$out/$name.stderr"
+  local status=$?
+  if [ $status -ne 1 ]; then
+    echo "FAILED  $name: exit status $status, expected 1"; failed=1
+  elif ! grep -qF -- "$pattern" "$out/$name.stderr"; then
+    echo "FAILED  $name: message lacks <$pattern>:"; cat "$out/$name.stderr"; failed=1
+  elif [ -e "$dir/history.csv" ]; then
+    echo "FAILED  $name: wrote output although the input was rejected"; failed=1
+  else
+    echo "ok      $name: $(grep -F -- "$pattern" "$out/$name.stderr" | head -1 | sed 's/^ *//')"
+  fi
+}
+
+expect unknown_entry "Youngs modulus" "$tribos" "$tests/bad_input/unknown_entry.prm"
+expect wrong_type "Number of steps" "$tribos" "$tests/bad_input/wrong_type.prm"
+expect missing_file "does not exist" "$tribos" "$tests/bad_input/no_such_file.prm"
+expect missing_mesh "Mesh file" "$tribos" "$good" --set "Scene/Name=gmsh" \
+  --set "Scene/Mesh file=$tests/no_such_mesh.msh"
+expect negative_youngs_modulus "Young's modulus" "$tribos" "$good" \
+  --set "Materials/Young's modulus=-1"
+expect poisson_ratio "Poisson's ratio" "$tribos" "$good" \
+  --set "Materials/Poisson's ratio=0.5"
+expect unknown_scene "Scene/Name" "$tribos" "$good" --set "Scene/Name=sphere"
+expect set_unknown_entry "Foo/Bar" "$tribos" "$good" --set "Foo/Bar=1"
+expect set_bad_syntax "Section/Entry=value" "$tribos" "$good" --set "Dimension"
+expect unknown_boundary "boundary id 7" "$tribos" "$good" \
+  --set "Boundary conditions/Dirichlet=7 : x : 0"
+expect bad_expression "Boundary conditions/Dirichlet" "$tribos" "$good" \
+  --set "Boundary conditions/Dirichlet=1 : x : 0.1*tt"
+expect bad_components "components" "$tribos" "$good" \
+  --set "Boundary conditions/Dirichlet=1 : xw : 0, 0"
+expect z_in_2d "component z" "$tribos" "$good" \
+  --set "Boundary conditions/Dirichlet=1 : z : 0"
+expect ring_in_3d "2D scene" "$tribos" "$good" --set "Dimension=3" \
+  --set "Scene/Name=ring on foundation"
+expect unknown_option "Unknown option" "$tribos" "$good" --frobnicate
+expect too_few_bodies "body id 2" "$tribos" "$tests/ring_2d.prm" \
+  --set "Materials/Young's modulus=1, 2"
+exit $failed

@@ -1,0 +1,27 @@
+"""MPI: `mpirun -np 2` gives the same history as the serial run (reactions
+to 1e-8 relative) on a 3D and a 2D multi-body scene, and writes the
+parallel VTU set (.pvtu plus one piece per rank)."""
+
+import os
+import sys
+
+from tribos_test import (setup, run, strip_columns, numdiff, read_csv, check,
+                         finish)
+
+tribos, tests, out = setup(sys.argv)
+noisy = ("wall_time", "residual")
+for name in ("cylinder_3d", "ring_2d"):
+    prm = "%s/%s.prm" % (tests, name)
+    serial, parallel = out + "/" + name + "_serial", out + "/" + name + "_np2"
+    run(tribos, prm, serial)
+    run(tribos, prm, parallel, ["Output/Write VTU=true"], mpi_ranks=2)
+    strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
+    strip_columns(parallel + "/history.csv", parallel + "/h.csv", drop=noisy)
+    numdiff(parallel + "/h.csv", serial + "/h.csv", relative=1e-8,
+            absolute=1e-8)
+    check(True, "%s: np 2 history equals the serial one" % name)
+    pieces = [f for f in os.listdir(parallel) if f.endswith(".vtu")]
+    check(os.path.exists(parallel + "/solution-00001.pvtu") and
+          "solution-00001.0001.vtu" in pieces,
+          "%s: .pvtu record and per-rank pieces written" % name)
+finish()
