@@ -13,6 +13,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -44,8 +45,22 @@ namespace
   {
     tribos::Parameters::AllParameters parameters;
     parameters.parse_parameters(prm);
-    tribos::Problem<dim> problem(parameters, MPI_COMM_WORLD);
-    problem.run();
+    // Let the problem (and its TimerOutput) be destroyed before a failure
+    // propagates, so that its destructor runs outside of stack unwinding.
+    std::exception_ptr failure;
+    {
+      tribos::Problem<dim> problem(parameters, MPI_COMM_WORLD);
+      try
+        {
+          problem.run();
+        }
+      catch (...)
+        {
+          failure = std::current_exception();
+        }
+    }
+    if (failure)
+      std::rethrow_exception(failure);
   }
 } // namespace
 
@@ -115,12 +130,10 @@ main(int argc, char **argv)
 
       if (print)
         {
-          if (root)
-            prm.print_parameters(std::cout,
-                                 print_format == "json" ?
-                                   ParameterHandler::JSON :
-                                   ParameterHandler::KeepDeclarationOrder |
-                                     ParameterHandler::PRM);
+          if (root && print_format == "json")
+            prm.print_parameters(std::cout, ParameterHandler::JSON);
+          else if (root)
+            tribos::Parameters::print_documented_parameters(prm, std::cout);
           return 0;
         }
 

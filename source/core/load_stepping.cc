@@ -82,7 +82,7 @@ namespace tribos
                   {
                     const std::string message =
                       "step " + std::to_string(step) + " at t = " +
-                      std::to_string(next) + " did not converge after " +
+                      to_scientific(next) + " did not converge after " +
                       std::to_string(ts.max_cutbacks) +
                       " cutbacks (Time stepping/Maximum cutbacks): " +
                       failure.what() +

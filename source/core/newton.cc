@@ -137,7 +137,7 @@ namespace tribos
             if (iteration >= p.max_iterations)
               throw NonConvergence(
                 "Newton did not converge in " + std::to_string(iteration) +
-                " iterations (|R| = " + std::to_string(residual) +
+                " iterations (|R| = " + to_scientific(residual) +
                 "; Nonlinear solver/Maximum iterations)");
           }
         reference = std::max(reference, residual);

@@ -24,7 +24,7 @@ namespace tribos
   {
     const double J = determinant(F);
     if (!(J > 0))
-      throw InvertedElement("neo-Hookean: det F = " + std::to_string(J) +
+      throw InvertedElement("neo-Hookean: det F = " + to_scientific(J) +
                             " <= 0 at a quadrature point");
 
     const double         log_J  = std::log(J);

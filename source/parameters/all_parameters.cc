@@ -1,6 +1,10 @@
 #include <tribos/parameters/all_parameters.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
 #include <filesystem>
+#include <sstream>
 
 namespace tribos
 {
@@ -45,6 +49,68 @@ namespace tribos
                   dealii::ExcMessage(
                     "Parameter <Verification/Exact displacement> needs " +
                     std::to_string(dimension) + " expressions or none."));
+    }
+
+
+
+    namespace
+    {
+      /** Print one subsection tree of the JSON description as .prm. */
+      void
+      print_tree(const boost::property_tree::ptree &tree,
+                 std::ostream                      &out,
+                 const unsigned int                 indent)
+      {
+        const std::string pad(indent, ' ');
+        // Entries first, then subsections, as in deal.II's own output.
+        for (const auto &[name, node] : tree)
+          if (node.get_child_optional("value"))
+            {
+              // Word-wrap the documentation to 78 columns.
+              std::istringstream words(node.get<std::string>("documentation"));
+              std::string        line;
+              for (std::string word; words >> word;)
+                {
+                  if (!line.empty() &&
+                      pad.size() + 2 + line.size() + 1 + word.size() > 78)
+                    {
+                      out << pad << "# " << line << '\n';
+                      line.clear();
+                    }
+                  line += (line.empty() ? "" : " ") + word;
+                }
+              if (!line.empty())
+                out << pad << "# " << line << '\n';
+              out << pad << "# Default: <"
+                  << node.get<std::string>("default_value")
+                  << ">  Allowed: " << node.get<std::string>("pattern_description")
+                  << '\n'
+                  << pad << "set " << name << " = "
+                  << node.get<std::string>("value") << "\n\n";
+            }
+        for (const auto &[name, node] : tree)
+          if (!node.get_child_optional("value"))
+            {
+              out << pad << "subsection " << name << "\n\n";
+              print_tree(node, out, indent + 2);
+              out << pad << "end\n\n";
+            }
+      }
+    } // namespace
+
+
+
+    void
+    print_documented_parameters(dealii::ParameterHandler &prm,
+                                std::ostream             &out)
+    {
+      std::stringstream json;
+      prm.print_parameters(json, dealii::ParameterHandler::JSON);
+      boost::property_tree::ptree tree;
+      boost::property_tree::read_json(json, tree);
+      out << "# tribos: every parameter with its documentation, default and "
+             "allowed values.\n\n";
+      print_tree(tree, out, 0);
     }
 
 

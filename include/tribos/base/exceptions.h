@@ -1,6 +1,7 @@
 #ifndef tribos_base_exceptions_h
 #define tribos_base_exceptions_h
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +20,15 @@ namespace tribos
       : std::runtime_error(what)
     {}
   };
+
+  /** A number in scientific notation with 3 decimals, for messages. */
+  inline std::string
+  to_scientific(const double value)
+  {
+    char buffer[32];
+    std::snprintf(buffer, sizeof(buffer), "%.3e", value);
+    return buffer;
+  }
 
   /** A deformation gradient with det F <= 0 was met: the iterate is void. */
   class InvertedElement : public NonConvergence

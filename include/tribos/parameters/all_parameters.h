@@ -13,6 +13,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,14 @@ namespace tribos
     void
     apply_overrides(dealii::ParameterHandler       &prm,
                     const std::vector<std::string> &overrides);
+
+    /**
+     * Print every parameter as a loadable .prm file whose comments give the
+     * documentation, default and allowed values (pattern) of each entry.
+     */
+    void
+    print_documented_parameters(dealii::ParameterHandler &prm,
+                                std::ostream             &out);
 
     /**
      * Read the file @p filename (if not empty) and the @p overrides into

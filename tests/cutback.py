@@ -1,0 +1,64 @@
+"""Load stepping: (1) an increment too large for the allowed Newton
+iterations is cut back, converges in pieces, grows again, and ends on the
+analytic state; (2) a run that cannot converge (the block is compressed to
+zero volume) stops with exit status 2 and a clear message, keeping the
+converged steps' history, VTU files and a FAILED summary."""
+
+import math
+import os
+import sys
+
+from tribos_test import setup, run, read_csv, check, finish
+
+tribos, tests, out = setup(sys.argv)
+prm = tests + "/neo_hookean_stretch.prm"
+E, nu = 1.0, 0.3
+lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+mu = E / (2 * (1 + nu))
+
+
+def analytic_force(stretch):
+    s = 1.0
+    for _ in range(100):
+        J = stretch * s
+        f = mu * (s - 1 / s) + lam * math.log(J) / s
+        df = mu * (1 + 1 / s ** 2) + lam * (1 - math.log(J)) / s ** 2
+        s -= f / df
+    return mu * (stretch - 1 / stretch) + lam * math.log(stretch * s) / stretch
+
+
+# (1) one nominal step to stretch 0.4 with at most 5 Newton iterations
+recover = out + "/recover"
+run(tribos, prm, recover, ["Boundary conditions/Dirichlet=1 : x : -0.6*t",
+                           "Time stepping/Number of steps=1",
+                           "Nonlinear solver/Maximum iterations=5"])
+rows = read_csv(recover + "/history.csv")
+exact = analytic_force(0.4)
+check(rows[-1]["cutbacks"] >= 1 and len(rows) >= 2,
+      "cut back %d times, converged in %d increments"
+      % (rows[-1]["cutbacks"], len(rows)))
+check(abs(rows[-1]["RF1_x"] - exact) < 1e-8 * abs(exact),
+      "after cutbacks the reaction %.10g equals the analytic %.10g"
+      % (rows[-1]["RF1_x"], exact))
+
+# (2) compression to zero volume at t = 1/1.2: cannot converge
+fail = out + "/fail"
+result = run(tribos, prm, fail, [
+    "Boundary conditions/Dirichlet=1 : x : -1.2*t",
+    "Time stepping/Number of steps=6", "Time stepping/Maximum cutbacks=2",
+    "Output/Write VTU=true"], expect_success=False)
+check(result.returncode == 2, "exit status %d == 2" % result.returncode)
+check("NO CONVERGENCE" in result.stderr and "Maximum cutbacks" in
+      result.stderr, "message: " + result.stderr.strip().splitlines()[-1])
+check("TimerOutput" not in result.stderr + result.stdout,
+      "no TimerOutput warning during the failure")
+rows = read_csv(fail + "/history.csv")
+check(len(rows) >= 4 and rows[3]["time"] > 0.66,
+      "history keeps the %d converged increments" % len(rows))
+files = os.listdir(fail)
+check(all("solution-%05d.vtu" % k in files for k in range(5)) and
+      not any(f.endswith(".part") for f in files),
+      "VTU of steps 0..4 kept, no partial files")
+with open(fail + "/summary.txt") as f:
+    check(f.readline().split()[1] == "FAILED:", "summary says FAILED")
+finish()
