@@ -21,6 +21,7 @@ namespace tribos
       FiniteElement::declare_parameters(prm);
       Materials::declare_parameters(prm);
       BoundaryConditions::declare_parameters(prm);
+      Contact::declare_parameters(prm);
       NonlinearSolver::declare_parameters(prm);
       TimeStepping::declare_parameters(prm);
       LinearSolver::declare_parameters(prm);
@@ -39,6 +40,8 @@ namespace tribos
       materials.parse_parameters(prm);
       boundary_conditions.parse_parameters(prm);
       boundary_conditions.check(dimension);
+      contact.parse_parameters(prm);
+      contact.check(dimension);
       nonlinear_solver.parse_parameters(prm);
       time_stepping.parse_parameters(prm);
       linear_solver.parse_parameters(prm);

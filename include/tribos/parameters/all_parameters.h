@@ -2,6 +2,7 @@
 #define tribos_parameters_all_parameters_h
 
 #include <tribos/parameters/boundary_conditions.h>
+#include <tribos/parameters/contact.h>
 #include <tribos/parameters/finite_element.h>
 #include <tribos/parameters/linear_solver.h>
 #include <tribos/parameters/materials.h>
@@ -33,6 +34,7 @@ namespace tribos
       FiniteElement      finite_element;
       Materials          materials;
       BoundaryConditions boundary_conditions;
+      Contact            contact;
       NonlinearSolver    nonlinear_solver;
       TimeStepping       time_stepping;
       LinearSolver       linear_solver;

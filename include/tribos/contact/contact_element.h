@@ -1,0 +1,86 @@
+#ifndef tribos_contact_contact_element_h
+#define tribos_contact_contact_element_h
+
+#include <tribos/contact/contact_point.h>
+#include <tribos/contact/master_face.h>
+#include <tribos/contact/rigid_surface.h>
+
+namespace tribos
+{
+  /**
+   * The residual of one contact element and its derivative. The residual
+   * of a slave node k with tributary area A_k is (paper (24)-(27), written
+   * for the penalty law (14) and the Coulomb return mapping (16)-(19))
+   *
+   *   R_slave    =  A_k (T - t_N n),
+   *   R_master_a = -N_a(xi) A_k (T - t_N n),
+   *
+   * with t_N = eps_N <-g_N>, the trial tangential traction
+   * T_trial = P_T T_n + eps_T a_alpha (xi - xi_n)^alpha, and T = T_trial
+   * (stick) or mu t_N T_trial / |T_trial| (slip). The paper's covariant
+   * components t_alpha = T . a_alpha and its norm sqrt(t a^ab t) are the
+   * same objects written in the face basis.
+   *
+   * The residual is templated on the number type and differentiated by
+   * Sacado forward AD: with Tangent = consistent the local coordinates xi
+   * carry their exact derivative (one Newton step of the projection in AD
+   * from the converged value equals the implicit derivative), and the
+   * normal and tangents are differentiated too, so the tangent is the
+   * exact derivative of what is assembled. With Tangent = paper, xi moves
+   * with the small-deformation update xi + M^-1 (x - xbar) . a_beta
+   * (metric M = a_a . a_b, curvature term dropped) and n, a_alpha are held
+   * fixed: the linearization (29)-(31).
+   */
+  template <int dim>
+  struct NodeToSegment
+  {
+    static constexpr unsigned int n_nodes = MasterFace<dim>::n_nodes;
+    static constexpr unsigned int n_dofs  = dim * (1 + n_nodes);
+
+    /**
+     * Evaluate the element of the slave at @p slave against the face with
+     * nodes @p master and projection @p projection. @p xi_reference is the
+     * master point of the last converged step in this face's coordinates,
+     * @p previous_traction the committed T_n. R gets n_dofs entries (slave
+     * dofs first, then master node by node); K, if not null, n_dofs^2
+     * (row-major, K_ij = dR_i/du_j).
+     */
+    static ContactPointResult
+    evaluate(const Vec3<double> &slave,
+             const Vec3<double> *master,
+             const Projection   &projection,
+             const double       *xi_reference,
+             const Vec3<double> &previous_traction,
+             const ContactLaw   &law,
+             const double        area,
+             const bool          consistent,
+             double             *R,
+             double             *K);
+  };
+
+  /** The same element against a rigid surface: only the slave's dofs. */
+  template <int dim>
+  struct NodeToRigid
+  {
+    static constexpr unsigned int n_dofs = dim;
+
+    /**
+     * @p shift is the surface's current translation, @p reference_point
+     * the master material point of the last converged step in its current
+     * position.
+     */
+    static ContactPointResult
+    evaluate(const Vec3<double>      &slave,
+             const RigidSurface<dim> &surface,
+             const Vec3<double>      &shift,
+             const Vec3<double>      &reference_point,
+             const Vec3<double>      &previous_traction,
+             const ContactLaw        &law,
+             const double             area,
+             const bool               consistent,
+             double                  *R,
+             double                  *K);
+  };
+} // namespace tribos
+
+#endif

@@ -1,0 +1,65 @@
+#ifndef tribos_contact_contact_point_h
+#define tribos_contact_contact_point_h
+
+#include <tribos/contact/vec3.h>
+
+namespace tribos
+{
+  /** Interface law of one contact pair (paper section 2.2). */
+  struct ContactLaw
+  {
+    /** Normal penalty eps_N (14). */
+    double normal_penalty = 0;
+    /** Tangential penalty eps_T of the stick trial (16). */
+    double tangential_penalty = 0;
+    /** Coulomb coefficient mu (17); 0 means frictionless. */
+    double friction_coefficient = 0;
+  };
+
+  /** Contact status of a slave node, as written to CSTATUS. */
+  enum class ContactStatus : int
+  {
+    open  = 0,
+    stick = 1,
+    slip  = 2
+  };
+
+  /**
+   * History of one slave node, committed only when a step converges (like
+   * plastic history): whether it was in contact, its tangential traction
+   * vector T_n, the material point of the master it was in contact with,
+   * and the accumulated slip.
+   */
+  struct SlaveHistory
+  {
+    bool         active = false;
+    Vec3<double> traction{{0, 0, 0}};
+    /** Deformable master: face index and local coordinates. */
+    int    face  = -1;
+    double xi[2] = {0, 0};
+    /** Rigid master: contact point in the surface's own frame. */
+    Vec3<double> frame_point{{0, 0, 0}};
+    double       slip = 0;
+  };
+
+  /** What the evaluation of one contact point reports (values only). */
+  struct ContactPointResult
+  {
+    ContactStatus status = ContactStatus::open;
+    /** Normal gap g_N (2); negative is penetration. */
+    double gap = 0;
+    /** Normal pressure t_N >= 0. */
+    double pressure = 0;
+    /** Tangential traction vector T (acts on the master; -T on the slave). */
+    Vec3<double> traction{{0, 0, 0}};
+    Vec3<double> normal{{0, 0, 0}};
+    /** Slip increment of the return mapping, |T_trial| - mu t_N over eps_T. */
+    double slip_increment = 0;
+    /** Master point: face and local coordinates, or frame point (rigid). */
+    int          face  = -1;
+    double       xi[2] = {0, 0};
+    Vec3<double> frame_point{{0, 0, 0}};
+  };
+} // namespace tribos
+
+#endif

@@ -1,0 +1,91 @@
+#ifndef tribos_parameters_contact_h
+#define tribos_parameters_contact_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    /**
+     * A penalty written as `1e5` (absolute) or `100*E` / `E` (a multiple of
+     * the smaller Young's modulus of the bodies of a pair, the paper's
+     * convention; the result has units of stress per model length).
+     */
+    struct PenaltyValue
+    {
+      double value           = 0;
+      bool   relative_to_E   = false;
+      bool   given           = false;
+
+      /** Parse @p text for the parameter @p entry (for messages). */
+      static PenaltyValue
+      parse(const std::string &text, const std::string &entry);
+
+      /** The penalty for a pair whose smaller Young's modulus is @p E. */
+      double
+      resolve(const double E) const
+      {
+        return relative_to_E ? value * E : value;
+      }
+    };
+
+    /** A rigid analytic surface: plane, sphere or cylinder, moving in t. */
+    struct RigidSurface
+    {
+      std::string name;
+      /** "plane", "sphere" or "cylinder" (a circle in 2D). */
+      std::string type;
+      /** Plane: a point; sphere, cylinder: the centre (3 values, z = 0 in
+       * 2D). */
+      std::vector<double> point;
+      /** Plane: normal pointing towards the deformable body. Cylinder: axis
+       * (3D only). */
+      std::vector<double> direction;
+      double              radius = 0;
+      /** dim expressions in t: the rigid translation of the surface. */
+      std::vector<std::string> motion;
+    };
+
+    /** One contact pair: slave boundary, master boundary or rigid surface. */
+    struct ContactPair
+    {
+      unsigned int slave_boundary;
+      /** Master boundary id, or invalid if the master is rigid. */
+      unsigned int master_boundary;
+      /** Name of the rigid master surface (empty if deformable). */
+      std::string  rigid_surface;
+
+      std::string  method;
+      PenaltyValue normal_penalty;
+      PenaltyValue tangential_penalty;
+      double       friction_coefficient;
+    };
+
+    /**
+     * Subsection `Contact`: the pairs and how they are enforced. Method,
+     * penalties and friction coefficient are defaults for every pair and
+     * can be overridden per pair, so that a single --set switches a scene.
+     */
+    struct Contact
+    {
+      std::vector<ContactPair>  pairs;
+      std::vector<RigidSurface> rigid_surfaces;
+      std::string               tangent;
+      std::string               passes;
+      double                    search_distance;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+      void
+      check(const unsigned int dim) const;
+    };
+  } // namespace Parameters
+} // namespace tribos
+
+#endif
