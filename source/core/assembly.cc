@@ -12,8 +12,15 @@ namespace tribos
                          const AffineConstraints<double> &constraints,
                          const double                     time)
   {
-    TimerOutput::Scope t(timer, "assembly");
+    if (contact)
+      {
+        TimerOutput::Scope search_timer(timer, "contact search");
+        contact->update(ghosted_solution, time);
+        if (with_matrix && contact->sparsity_outdated())
+          make_sparsity();
+      }
 
+    TimerOutput::Scope t(timer, "assembly");
     if (with_matrix)
       {
         system_matrix = 0;
@@ -136,6 +143,19 @@ namespace tribos
         if (with_matrix)
           constraints.distribute_local_to_global(
             cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
+      }
+
+    t.stop();
+    if (contact)
+      {
+        TimerOutput::Scope contact_timer(timer, "contact assembly");
+        contact->assemble(with_matrix,
+                          constraints,
+                          homogeneous_constraints,
+                          system_matrix,
+                          system_rhs,
+                          free_residual,
+                          full_residual);
       }
 
     if (with_matrix)

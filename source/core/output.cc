@@ -2,6 +2,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/numerics/data_out.h>
@@ -68,6 +69,9 @@ namespace tribos
         columns.push_back("error_L2");
         columns.push_back("error_H1");
       }
+    if (contact)
+      for (const auto &name : contact->column_names())
+        columns.push_back(name);
     history_csv = std::make_unique<CsvWriter>(dir + "/history.csv", columns, root);
     convergence_csv =
       std::make_unique<CsvWriter>(dir + "/convergence.csv",
@@ -162,6 +166,9 @@ namespace tribos
         row.push_back(l2);
         row.push_back(h1);
       }
+    if (contact)
+      for (const double value : contact->columns())
+        row.push_back(value);
     history_csv->add_row(row);
   }
 
@@ -171,9 +178,13 @@ namespace tribos
   void
   Problem<dim>::write_vtu(const unsigned int step, const double time)
   {
+    TimerOutput::Scope t(timer, "output");
+    const std::string  dir = parameters.output.directory + "/";
+    if (contact)
+      contact->write_csv(dir + "contact-" + Utilities::int_to_string(step, 5) +
+                         ".csv");
     if (!parameters.output.write_vtu)
       return;
-    TimerOutput::Scope t(timer, "output");
 
     // Cell averages of the Cauchy stress: honest for every material,
     // including those whose stress lives only at quadrature points.
@@ -260,6 +271,33 @@ namespace tribos
     if (any_history)
       data_out.add_data_vector(plastic_strain, "PEEQ");
     data_out.add_data_vector(body_id, "body_id");
+    // Contact fields at the slave nodes, under the names Abaqus and
+    // CalculiX users know: scalars on a Q1 numbering, CSHEAR as a vector.
+    FE_Q<dim>                             node_fe(1);
+    DoFHandler<dim>                       node_dof_handler(triangulation);
+    std::array<dealii::Vector<double>, 4> contact_scalars;
+    dealii::Vector<double>                contact_shear;
+    if (contact)
+      {
+        node_dof_handler.distribute_dofs(node_fe);
+        std::vector<types::global_dof_index> vertex_to_dof(
+          triangulation.n_vertices(), numbers::invalid_dof_index);
+        for (const auto &cell : node_dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            vertex_to_dof[cell->vertex_index(v)] = cell->vertex_dof_index(v, 0);
+        for (auto &v : contact_scalars)
+          v.reinit(node_dof_handler.n_dofs());
+        contact_shear.reinit(dof_handler.n_dofs());
+        contact->nodal_fields(vertex_to_dof, contact_scalars, contact_shear);
+        const char *names[4] = {"CPRESS", "COPEN", "CSLIP", "CSTATUS"};
+        for (unsigned int i = 0; i < 4; ++i)
+          data_out.add_data_vector(node_dof_handler, contact_scalars[i], names[i]);
+        data_out.add_data_vector(contact_shear,
+                                 std::vector<std::string>(dim, "CSHEAR"),
+                                 DataOut<dim>::type_dof_data,
+                                 interpretation);
+      }
+
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
     if (n_ranks > 1)
@@ -271,7 +309,6 @@ namespace tribos
     flags.cycle = step;
     data_out.set_flags(flags);
 
-    const std::string dir  = parameters.output.directory + "/";
     const std::string base = "solution-" + Utilities::int_to_string(step, 5);
     if (n_ranks == 1)
       {

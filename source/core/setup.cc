@@ -199,21 +199,29 @@ namespace tribos
         make_vector_function<dim>(parameters.verification.exact_displacement,
                                   "Verification/Exact displacement");
 
-    make_constraints(0, true, homogeneous_constraints);
+    setup_materials();
 
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    homogeneous_constraints,
-                                    false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned_dofs,
-                                               mpi_communicator,
-                                               locally_relevant_dofs);
-    system_matrix.reinit(locally_owned_dofs,
-                         locally_owned_dofs,
-                         dsp,
-                         mpi_communicator);
+    if (!parameters.contact.pairs.empty())
+      {
+        AssertThrow(parameters.finite_element.degree == 1,
+                    ExcMessage("Contact needs Finite element/Polynomial "
+                               "degree = 1: node-to-segment contact works on "
+                               "the vertices and linear faces of Q1."));
+        contact = std::make_unique<ContactHandler<dim>>(
+          parameters.contact,
+          dof_handler,
+          [this](const types::material_id body) {
+            return materials[body]->youngs_modulus();
+          },
+          locally_owned_dofs,
+          mpi_communicator);
+        // Contact couples this process's slave nodes to master nodes
+        // anywhere: their dofs count as relevant (ghosted, constrained).
+        locally_relevant_dofs.add_indices(contact->contact_dofs());
+      }
+
+    make_constraints(0, true, homogeneous_constraints);
+    make_sparsity();
 
     system_rhs.reinit(locally_owned_dofs, mpi_communicator);
     free_residual.reinit(locally_owned_dofs, mpi_communicator);
@@ -222,8 +230,32 @@ namespace tribos
     ghosted_solution.reinit(locally_owned_dofs,
                             locally_relevant_dofs,
                             mpi_communicator);
+  }
 
-    setup_materials();
+
+
+  template <int dim>
+  void
+  Problem<dim>::make_sparsity()
+  {
+    // Contact couples slave nodes with master faces of other cells, often of
+    // other bodies: those couplings join the bulk pattern, and the pattern
+    // is rebuilt when the search meets a new slave-face pair.
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    homogeneous_constraints,
+                                    false);
+    if (contact)
+      contact->add_couplings(dsp, homogeneous_constraints);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               mpi_communicator,
+                                               locally_relevant_dofs);
+    system_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         mpi_communicator);
   }
 
 
@@ -236,6 +268,7 @@ namespace tribos
   {
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
 
     // Dirichlet: du = g(t) - u on the constrained dofs, or du = 0.
     const auto &bc = parameters.boundary_conditions;
@@ -296,6 +329,8 @@ namespace tribos
   Problem<dim>::commit_history()
   {
     history_old = history_new;
+    if (contact)
+      contact->commit();
   }
 
   template class Problem<2>;

@@ -149,7 +149,7 @@ namespace tribos
                         Patterns::Double(),
                         "2D: the block spans x in [-w/2, w/2]; 3D (quarter "
                         "model): x, y in [0, w/2].");
-      prm.declare_entry("Block height", "2", Patterns::Double(), "");
+      prm.declare_entry("Block height", "2", Patterns::Double(), "Depth of the block below y = 0 (2D) or z = 0 (3D).");
       prm.declare_entry("Block subdivisions",
                         "8, 4",
                         Patterns::Anything(),
@@ -159,6 +159,22 @@ namespace tribos
                         "3",
                         Patterns::Integer(0, 8),
                         "Global refinements of the indenter's coarse mesh.");
+      prm.declare_entry("With block",
+                        "true",
+                        Patterns::Bool(),
+                        "false: the indenter alone (e.g. on a rigid plane).");
+      prm.declare_entry("Contact refinements",
+                        "0",
+                        Patterns::Integer(0, 10),
+                        "Local refinements of the cells near the initial "
+                        "contact point (hanging nodes; curved boundary kept "
+                        "on its manifold).");
+      prm.declare_entry("Refinement radius",
+                        "0.25",
+                        Patterns::Double(0),
+                        "Cells whose centre lies within this distance of "
+                        "the initial contact point, relative to the radius, "
+                        "are refined in every contact refinement.");
       prm.leave_subsection();
     }
 
@@ -174,6 +190,9 @@ namespace tribos
       block_height         = positive(prm, "Block height");
       block_subdivisions   = cell_counts(prm, "Block subdivisions");
       indenter_refinements = prm.get_integer("Indenter refinements");
+      with_block           = prm.get_bool("With block");
+      contact_refinements  = prm.get_integer("Contact refinements");
+      refinement_radius    = prm.get_double("Refinement radius");
       AssertThrow(block_subdivisions.size() >= 2,
                   dealii::ExcMessage(
                     "Parameter <Scene/Cylinder over block/Block "

@@ -217,7 +217,28 @@ namespace tribos
                     s.radius,
                     s.gap,
                     s.indenter_refinements + p.refinement);
-      merge_bodies<dim>({&block, &indenter}, tria);
+      if (s.with_block)
+        merge_bodies<dim>({&block, &indenter}, tria);
+      else
+        merge_bodies<dim>({&indenter}, tria);
+
+      // Local refinement at the contact point: the curved surface goes
+      // back on its exact manifold so that new vertices lie on the sphere.
+      Point<dim> centre, contact_point;
+      centre[dim - 1]        = s.radius + s.gap;
+      contact_point[dim - 1] = 0.5 * s.gap;
+      for (const auto &face : tria.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == 10)
+          face->set_manifold_id(1);
+      tria.set_manifold(1, SphericalManifold<dim>(centre));
+      for (unsigned int cycle = 0; cycle < s.contact_refinements; ++cycle)
+        {
+          for (const auto &cell : tria.active_cell_iterators())
+            if (cell->center().distance(contact_point) <
+                s.refinement_radius * s.radius)
+              cell->set_refine_flag();
+          tria.execute_coarsening_and_refinement();
+        }
     }
 
 

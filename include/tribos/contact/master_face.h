@@ -114,11 +114,14 @@ namespace tribos
    * matrix (including the curvature term of the bilinear patch); a
    * coordinate that leaves [-1, 1] is clamped and the others are solved
    * again along that edge, which gives the closest point of the face in
-   * every case, deterministically.
+   * every case, deterministically. With @p clamp false the coordinates of
+   * the projection onto the face's extension are returned (within +-3).
    */
   template <int dim>
   Projection
-  project(const Vec3<double> &point, const Vec3<double> *x)
+  project(const Vec3<double> &point,
+          const Vec3<double> *x,
+          const bool          clamp = true)
   {
     using Face = MasterFace<dim>;
     Projection   p;
@@ -178,6 +181,8 @@ namespace tribos
 
         // Clamp coordinates outside the face; redo if anything changed.
         bool changed = false;
+        if (!clamp)
+          break;
         for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
           if (p.clamped[alpha] == 0 && std::abs(p.xi[alpha]) > 1. + 1e-12)
             {

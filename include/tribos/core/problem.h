@@ -1,6 +1,7 @@
 #ifndef tribos_core_problem_h
 #define tribos_core_problem_h
 
+#include <tribos/contact/contact_handler.h>
 #include <tribos/material/material.h>
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/postprocess/csv_writer.h>
@@ -87,6 +88,8 @@ namespace tribos
     void
     setup_materials();
     void
+    make_sparsity();
+    void
     make_constraints(const double     time,
                      const bool       homogeneous,
                      AffineConstraints<double> &constraints) const;
@@ -128,6 +131,7 @@ namespace tribos
                       const double           wall_time);
     void
     write_vtu(const unsigned int step, const double time);
+
     void
     write_summary(const std::string &status);
     std::pair<double, double>
@@ -155,6 +159,9 @@ namespace tribos
     Vector                         full_residual;
     Vector                         solution;
     Vector                         ghosted_solution;
+
+    /** The contact pairs; null when the scene has none. */
+    std::unique_ptr<ContactHandler<dim>> contact;
 
     /** One material per body id (index = material_id). */
     std::vector<std::unique_ptr<Material<dim>>> materials;

@@ -55,6 +55,9 @@ namespace tribos
       double                    block_height;
       std::vector<unsigned int> block_subdivisions;
       unsigned int              indenter_refinements;
+      bool                      with_block;
+      unsigned int              contact_refinements;
+      double                    refinement_radius;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,181 @@
+#ifndef tribos_contact_contact_handler_h
+#define tribos_contact_contact_handler_h
+
+#include <tribos/contact/contact_element.h>
+#include <tribos/contact/contact_point.h>
+#include <tribos/contact/contact_search.h>
+#include <tribos/contact/contact_surface.h>
+#include <tribos/contact/rigid_surface.h>
+#include <tribos/parameters/contact.h>
+
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <functional>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  /** Totals of the contact state, summed over all processes. */
+  struct ContactStatistics
+  {
+    /** Per pair: sum of A t_N, sum of A |T|, and the resultant force
+     * on the slave body (x, y, z). */
+    std::vector<std::array<double, 5>> pair_forces;
+    double       max_penetration = 0;
+    unsigned int n_active        = 0;
+    unsigned int n_stick         = 0;
+    unsigned int n_slip          = 0;
+  };
+
+  /**
+   * All contact pairs of a scene: surfaces, search, history and the
+   * assembly of the penalty contact terms. The search (update()) pairs each
+   * slave node with a master face or rigid surface and is independent of
+   * the enforcement; assemble() consumes those pairs.
+   *
+   * Each process evaluates the slave nodes whose dofs it owns, so every
+   * contact element is assembled exactly once under MPI.
+   */
+  template <int dim>
+  class ContactHandler
+  {
+  public:
+    ContactHandler(
+      const Parameters::Contact                         &parameters,
+      const DoFHandler<dim>                             &dof_handler,
+      const std::function<double(types::material_id)> &youngs_modulus,
+      const IndexSet                                    &locally_owned_dofs,
+      const MPI_Comm                                     mpi_communicator);
+
+    /** The dofs of every contact node: they must be ghosted on all ranks. */
+    const IndexSet &
+    contact_dofs() const
+    {
+      return all_contact_dofs;
+    }
+
+    /**
+     * Search at the displacement @p solution (ghosted on contact_dofs())
+     * and time @p time: pair every slave node with a master face (or its
+     * rigid surface). Collective.
+     */
+    void
+    update(const TrilinosWrappers::MPI::Vector &solution, const double time);
+
+    /**
+     * Whether a slave node met a master face that is not yet coupled in the
+     * sparsity pattern (the same answer on every process).
+     */
+    bool
+    sparsity_outdated() const
+    {
+      return outdated;
+    }
+
+    /**
+     * Add every registered slave-master coupling to @p dsp, condensed
+     * through @p constraints as distribute_local_to_global() will write it.
+     */
+    void
+    add_couplings(DynamicSparsityPattern          &dsp,
+                  const AffineConstraints<double> &constraints);
+
+    /**
+     * Add the contact terms: -R into @p rhs and dR/du into @p matrix with
+     * @p constraints (if @p with_matrix), -R into @p free_residual with
+     * @p homogeneous, R into @p full_residual unconstrained.
+     */
+    void
+    assemble(const bool                       with_matrix,
+             const AffineConstraints<double> &constraints,
+             const AffineConstraints<double> &homogeneous,
+             TrilinosWrappers::SparseMatrix  &matrix,
+             TrilinosWrappers::MPI::Vector   &rhs,
+             TrilinosWrappers::MPI::Vector   &free_residual,
+             TrilinosWrappers::MPI::Vector   &full_residual);
+
+    /** Make the last evaluated state the converged history. */
+    void
+    commit();
+
+    ContactStatistics
+    statistics() const;
+
+    /** Names of the history.csv columns that statistics() fills. */
+    std::vector<std::string>
+    column_names() const;
+
+    /** The statistics as a row matching column_names(). */
+    std::vector<double>
+    columns() const;
+
+    /** Write contact-NNNNN.csv (rank 0 gathers). */
+    void
+    write_csv(const std::string &filename) const;
+
+    /**
+     * Nodal fields for the VTU output: CPRESS, COPEN, CSLIP, CSTATUS on a
+     * scalar Q1 numbering (@p vertex_to_dof), CSHEAR on the displacement
+     * numbering. Summed over processes; nodes without contact get 0 (COPEN:
+     * the gap where a projection exists).
+     */
+    void
+    nodal_fields(const std::vector<types::global_dof_index> &vertex_to_dof,
+                 std::array<dealii::Vector<double>, 4>      &scalars,
+                 dealii::Vector<double>                     &shear) const;
+
+  private:
+    struct Pairing
+    {
+      bool       valid = false;
+      int        face  = -1;
+      Projection projection;
+    };
+
+    struct Pair
+    {
+      Parameters::ContactPair               description;
+      std::shared_ptr<ContactSurface<dim>> slave;
+      std::shared_ptr<ContactSurface<dim>> master;
+      std::shared_ptr<RigidSurface<dim>>   rigid;
+      ContactLaw                            law;
+      double                                area_factor = 1;
+      ContactSearch<dim>                    search;
+
+      std::vector<bool>               owned;
+      std::vector<SlaveHistory>       history;
+      std::vector<Pairing>            pairing;
+      std::vector<ContactPointResult> results;
+      std::vector<Vec3<double>>       slave_positions, old_slave_positions;
+      std::vector<Vec3<double>>       master_positions, old_master_positions;
+      std::set<std::pair<unsigned int, unsigned int>> couplings;
+    };
+
+    std::vector<types::global_dof_index>
+    element_dofs(const Pair &pair, const unsigned int node) const;
+
+    const Parameters::Contact &parameters;
+    MPI_Comm                   mpi_communicator;
+    bool                       consistent;
+    std::vector<Pair>          pairs;
+    IndexSet                   all_contact_dofs;
+    bool                       outdated       = true;
+    double                     time           = 0;
+    double                     committed_time = 0;
+  };
+} // namespace tribos
+
+#endif

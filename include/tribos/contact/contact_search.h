@@ -1,0 +1,50 @@
+#ifndef tribos_contact_contact_search_h
+#define tribos_contact_contact_search_h
+
+#include <tribos/contact/contact_surface.h>
+
+#include <memory>
+#include <vector>
+
+namespace tribos
+{
+  /**
+   * Global contact search: the master faces of a ContactSurface in the
+   * current configuration, held in a CGAL AABB tree (3D quadrilaterals as
+   * two triangles, 2D segments embedded at z = 0). A query returns the face
+   * that holds the closest point of the whole master surface; the exact
+   * projection on that face and its neighbours is then the job of the
+   * kinematics. Independent of how contact is enforced.
+   */
+  template <int dim>
+  class ContactSearch
+  {
+  public:
+    ContactSearch();
+    ContactSearch(ContactSearch &&) noexcept;
+    ContactSearch &
+    operator=(ContactSearch &&) noexcept;
+    ~ContactSearch();
+
+    /** (Re)build the tree for the faces of @p surface at @p positions
+     * (one per surface node). */
+    void
+    build(const ContactSurface<dim> &surface,
+          const std::vector<Vec3<double>> &positions);
+
+    /**
+     * The face closest to @p point and the squared distance to it.
+     * Returns false if the surface has no faces.
+     */
+    bool
+    closest_face(const Vec3<double> &point,
+                 unsigned int       &face,
+                 double             &squared_distance) const;
+
+  private:
+    struct Tree;
+    std::unique_ptr<Tree> tree;
+  };
+} // namespace tribos
+
+#endif

@@ -1,0 +1,93 @@
+#ifndef tribos_contact_contact_surface_h
+#define tribos_contact_contact_surface_h
+
+#include <tribos/contact/master_face.h>
+#include <tribos/contact/vec3.h>
+
+#include <deal.II/base/types.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <array>
+#include <set>
+#include <vector>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  /**
+   * The faces and nodes of one boundary (by boundary id) of a Q1 mesh, as
+   * seen by contact: as a slave, its nodes with their tributary areas; as a
+   * master, its faces (vertex order such that the normal of MasterFace
+   * points out of the body) with their neighbours. Built once from the
+   * reference configuration; positions are looked up per evaluation.
+   */
+  template <int dim>
+  class ContactSurface
+  {
+  public:
+    static constexpr unsigned int n_face_nodes = MasterFace<dim>::n_nodes;
+
+    struct Node
+    {
+      unsigned int                                vertex;
+      std::array<types::global_dof_index, dim>    dofs;
+      Vec3<double>                                reference{{0, 0, 0}};
+      /** Tributary area (24): integral of the face shape function of the
+       * node over the surface, in the reference configuration. */
+      double                                      area = 0;
+      /** Faces this node belongs to. */
+      std::vector<unsigned int>                   faces;
+    };
+
+    struct Face
+    {
+      std::array<unsigned int, n_face_nodes> nodes;
+      /** Faces sharing at least one node with this one (itself excluded). */
+      std::vector<unsigned int> neighbours;
+      /**
+       * Per local coordinate and side (-1, +1): whether another face of the
+       * surface continues across that edge (false: the surface ends).
+       */
+      bool continues[2][2] = {{false, false}, {false, false}};
+      types::material_id body;
+    };
+
+    ContactSurface(const DoFHandler<dim> &dof_handler,
+                   const types::boundary_id boundary_id);
+
+    types::boundary_id
+    boundary_id() const
+    {
+      return id;
+    }
+
+    const std::vector<Node> &
+    nodes() const
+    {
+      return node_list;
+    }
+
+    const std::vector<Face> &
+    faces() const
+    {
+      return face_list;
+    }
+
+    /** Body ids of the cells adjacent to this surface. */
+    const std::set<types::material_id> &
+    bodies() const
+    {
+      return body_ids;
+    }
+
+  private:
+    types::boundary_id id;
+    std::vector<Node>  node_list;
+    std::vector<Face>  face_list;
+    std::set<types::material_id> body_ids;
+  };
+} // namespace tribos
+
+#endif

@@ -1,0 +1,612 @@
+#include <tribos/contact/contact_handler.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+
+namespace tribos
+{
+  template <int dim>
+  ContactHandler<dim>::ContactHandler(
+    const Parameters::Contact                         &parameters,
+    const DoFHandler<dim>                             &dof_handler,
+    const std::function<double(types::material_id)> &youngs_modulus,
+    const IndexSet                                    &locally_owned_dofs,
+    const MPI_Comm                                     mpi_communicator)
+    : parameters(parameters)
+    , mpi_communicator(mpi_communicator)
+    , consistent(parameters.tangent == "consistent")
+    , all_contact_dofs(dof_handler.n_dofs())
+  {
+    std::set<types::boundary_id> existing;
+    for (const auto &face : dof_handler.get_triangulation().active_face_iterators())
+      if (face->at_boundary())
+        existing.insert(face->boundary_id());
+
+    std::map<types::boundary_id, std::shared_ptr<ContactSurface<dim>>> surfaces;
+    const auto surface = [&](const unsigned int id) {
+      AssertThrow(existing.count(id) == 1,
+                  ExcMessage("Parameter <Contact/Pairs> names boundary id " +
+                             std::to_string(id) +
+                             ", which the scene does not have. Its boundary "
+                             "ids are listed in the README."));
+      auto &s = surfaces[id];
+      if (!s)
+        s = std::make_shared<ContactSurface<dim>>(dof_handler, id);
+      return s;
+    };
+    std::map<std::string, std::shared_ptr<RigidSurface<dim>>> rigid_surfaces;
+    for (const auto &description : parameters.rigid_surfaces)
+      rigid_surfaces[description.name] =
+        std::make_shared<RigidSurface<dim>>(description);
+
+    std::vector<Parameters::ContactPair> descriptions = parameters.pairs;
+    if (parameters.passes == "two-pass")
+      for (const auto &p : parameters.pairs)
+        if (p.rigid_surface.empty())
+          {
+            auto swapped            = p;
+            swapped.slave_boundary  = p.master_boundary;
+            swapped.master_boundary = p.slave_boundary;
+            descriptions.push_back(swapped);
+          }
+
+    for (const auto &description : descriptions)
+      {
+        AssertThrow(description.method == "penalty",
+                    ExcMessage("Contact method <" + description.method +
+                               "> is not implemented yet; use "
+                               "Contact/Method = penalty."));
+        Pair pair;
+        pair.description = description;
+        pair.slave       = surface(description.slave_boundary);
+        double E         = std::numeric_limits<double>::max();
+        for (const auto body : pair.slave->bodies())
+          E = std::min(E, youngs_modulus(body));
+        if (description.rigid_surface.empty())
+          {
+            AssertThrow(description.master_boundary !=
+                          description.slave_boundary,
+                        ExcMessage("Parameter <Contact/Pairs>: a pair needs "
+                                   "different slave and master boundaries."));
+            pair.master = surface(description.master_boundary);
+            for (const auto body : pair.master->bodies())
+              E = std::min(E, youngs_modulus(body));
+            pair.area_factor = (parameters.passes == "two-pass" ? 0.5 : 1.);
+          }
+        else
+          pair.rigid = rigid_surfaces.at(description.rigid_surface);
+
+        pair.law.normal_penalty     = description.normal_penalty.resolve(E);
+        pair.law.tangential_penalty = description.tangential_penalty.resolve(E);
+        pair.law.friction_coefficient = description.friction_coefficient;
+
+        const unsigned int n_slaves = pair.slave->nodes().size();
+        pair.owned.resize(n_slaves);
+        for (unsigned int k = 0; k < n_slaves; ++k)
+          pair.owned[k] =
+            locally_owned_dofs.is_element(pair.slave->nodes()[k].dofs[0]);
+        pair.history.resize(n_slaves);
+        pair.pairing.resize(n_slaves);
+        pair.results.resize(n_slaves);
+        for (const auto &node : pair.slave->nodes())
+          pair.slave_positions.push_back(node.reference);
+        pair.old_slave_positions = pair.slave_positions;
+        if (pair.master)
+          for (const auto &node : pair.master->nodes())
+            pair.master_positions.push_back(node.reference);
+        pair.old_master_positions = pair.master_positions;
+        pairs.push_back(std::move(pair));
+      }
+
+    for (const auto &[id, s] : surfaces)
+      for (const auto &node : s->nodes())
+        for (const auto dof : node.dofs)
+          all_contact_dofs.add_index(dof);
+    all_contact_dofs.compress();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::update(const TrilinosWrappers::MPI::Vector &solution,
+                              const double                         t)
+  {
+    time                 = t;
+    bool new_coupling    = false;
+    const auto positions = [&solution](const auto &surface,
+                                       std::vector<Vec3<double>> &x) {
+      const auto &nodes = surface.nodes();
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          x[k] = nodes[k].reference;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[k][d] += solution[nodes[k].dofs[d]];
+        }
+    };
+
+    for (auto &pair : pairs)
+      {
+        positions(*pair.slave, pair.slave_positions);
+        if (pair.rigid)
+          {
+            for (unsigned int k = 0; k < pair.owned.size(); ++k)
+              pair.pairing[k].valid = pair.owned[k];
+            continue;
+          }
+        positions(*pair.master, pair.master_positions);
+        pair.search.build(*pair.master, pair.master_positions);
+
+        const auto &faces = pair.master->faces();
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          {
+            Pairing &pairing = pair.pairing[k];
+            pairing          = Pairing();
+            if (!pair.owned[k])
+              continue;
+            const Vec3<double> &x = pair.slave_positions[k];
+            unsigned int        closest;
+            double              squared_distance;
+            if (!pair.search.closest_face(x, closest, squared_distance) ||
+                std::sqrt(squared_distance) > parameters.search_distance)
+              continue;
+
+            // Exact projection on the candidate and its neighbours: prefer
+            // a projection inside a face (the closest such), else the
+            // closest clamped one.
+            std::vector<unsigned int> candidates = faces[closest].neighbours;
+            candidates.insert(candidates.begin(), closest);
+            bool   best_inside   = false;
+            double best_distance = std::numeric_limits<double>::max();
+            for (const unsigned int f : candidates)
+              {
+                Vec3<double> xm[4];
+                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+                  xm[v] = pair.master_positions[faces[f].nodes[v]];
+                const Projection p      = project<dim>(x, xm);
+                const bool       inside = p.inside();
+                if ((inside && !best_inside) ||
+                    (inside == best_inside && p.distance < best_distance))
+                  {
+                    best_inside        = inside;
+                    best_distance      = p.distance;
+                    pairing.face       = f;
+                    pairing.projection = p;
+                  }
+              }
+            // A projection clamped at an edge where the master surface ends
+            // means the node has slid off: no contact.
+            pairing.valid = true;
+            for (unsigned int c = 0; c < dim - 1; ++c)
+              if (pairing.projection.clamped[c] != 0 &&
+                  !faces[pairing.face].continues[c][pairing.projection.clamped[c] > 0])
+                pairing.valid = false;
+
+            if (pair.couplings.count({k, pairing.face}) == 0)
+              {
+                new_coupling = true;
+                pair.couplings.insert({k, pairing.face});
+                for (const unsigned int g : faces[pairing.face].neighbours)
+                  pair.couplings.insert({k, g});
+              }
+          }
+      }
+    if (Utilities::MPI::max(new_coupling ? 1 : 0, mpi_communicator) == 1)
+      outdated = true;
+  }
+
+
+
+  template <int dim>
+  std::vector<types::global_dof_index>
+  ContactHandler<dim>::element_dofs(const Pair        &pair,
+                                    const unsigned int node) const
+  {
+    std::vector<types::global_dof_index> dofs(pair.slave->nodes()[node].dofs.begin(),
+                                              pair.slave->nodes()[node].dofs.end());
+    if (pair.master)
+      for (const unsigned int m :
+           pair.master->faces()[pair.pairing[node].face].nodes)
+        for (const auto dof : pair.master->nodes()[m].dofs)
+          dofs.push_back(dof);
+    return dofs;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::add_couplings(
+    DynamicSparsityPattern          &dsp,
+    const AffineConstraints<double> &constraints)
+  {
+    outdated = false;
+    for (const auto &pair : pairs)
+      for (const auto &[k, f] : pair.couplings)
+        {
+          std::vector<types::global_dof_index> dofs(
+            pair.slave->nodes()[k].dofs.begin(), pair.slave->nodes()[k].dofs.end());
+          for (const unsigned int m : pair.master->faces()[f].nodes)
+            for (const auto dof : pair.master->nodes()[m].dofs)
+              dofs.push_back(dof);
+          constraints.add_entries_local_to_global(dofs, dsp, false);
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::assemble(const bool                       with_matrix,
+                                const AffineConstraints<double> &constraints,
+                                const AffineConstraints<double> &homogeneous,
+                                TrilinosWrappers::SparseMatrix  &matrix,
+                                TrilinosWrappers::MPI::Vector   &rhs,
+                                TrilinosWrappers::MPI::Vector   &free_residual,
+                                TrilinosWrappers::MPI::Vector   &full_residual)
+  {
+    constexpr unsigned int n_max = NodeToSegment<dim>::n_dofs;
+    double                 R[n_max], K[n_max * n_max];
+    const Vec3<double>     zero{{0, 0, 0}};
+
+    for (auto &pair : pairs)
+      {
+        const bool         frictional = pair.law.friction_coefficient > 0;
+        const unsigned int n_dofs =
+          pair.master ? NodeToSegment<dim>::n_dofs : NodeToRigid<dim>::n_dofs;
+        const Vec3<double> shift =
+          pair.rigid ? pair.rigid->translation(time) : zero;
+
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          {
+            pair.results[k] = ContactPointResult();
+            if (!pair.pairing[k].valid)
+              {
+                pair.results[k].gap = std::numeric_limits<double>::quiet_NaN();
+                continue;
+              }
+            const SlaveHistory &history = pair.history[k];
+            const double area = pair.slave->nodes()[k].area * pair.area_factor;
+            const Vec3<double> &previous = history.active ? history.traction : zero;
+            const Vec3<double> &x        = pair.slave_positions[k];
+
+            if (pair.master)
+              {
+                const auto  &faces = pair.master->faces();
+                const int    face  = pair.pairing[k].face;
+                Vec3<double> xm[4];
+                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+                  xm[v] = pair.master_positions[faces[face].nodes[v]];
+
+                // The master point of the last converged step in this face's
+                // coordinates (Table 1: a new contact starts from where the
+                // slave was over the master at the last converged step).
+                double xi_reference[2] = {0, 0};
+                if (frictional)
+                  {
+                    if (history.active && history.face == face)
+                      {
+                        xi_reference[0] = history.xi[0];
+                        xi_reference[1] = history.xi[1];
+                      }
+                    else
+                      {
+                        Vec3<double> point = pair.old_slave_positions[k];
+                        Vec3<double> xm_old[4];
+                        for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+                          xm_old[v] =
+                            pair.old_master_positions[faces[face].nodes[v]];
+                        const Vec3<double> *geometry = xm_old;
+                        if (history.active)
+                          {
+                            // Face changed: carry the old material point.
+                            Vec3<double> xo[4], a[2], n;
+                            for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+                              xo[v] = pair.master_positions
+                                        [faces[history.face].nodes[v]];
+                            MasterFace<dim>::geometry(xo, history.xi, point, a, n);
+                            geometry = xm;
+                          }
+                        const Projection p = project<dim>(point, geometry, false);
+                        xi_reference[0]    = p.xi[0];
+                        xi_reference[1]    = p.xi[1];
+                      }
+                  }
+                pair.results[k] = NodeToSegment<dim>::evaluate(
+                  x,
+                  xm,
+                  pair.pairing[k].projection,
+                  xi_reference,
+                  previous,
+                  pair.law,
+                  area,
+                  consistent,
+                  R,
+                  with_matrix ? K : nullptr);
+                pair.results[k].face = face;
+              }
+            else
+              {
+                Vec3<double> reference = zero;
+                if (frictional)
+                  {
+                    if (history.active)
+                      reference = history.frame_point + shift;
+                    else
+                      {
+                        // Where the slave was over the surface at the last
+                        // converged step, carried with the surface.
+                        const Vec3<double> old_shift =
+                          pair.rigid->translation(committed_time);
+                        Vec3<double> xbar, n;
+                        double       gap;
+                        pair.rigid->closest_point(pair.old_slave_positions[k],
+                                                  old_shift,
+                                                  xbar,
+                                                  n,
+                                                  gap);
+                        reference = xbar - old_shift + shift;
+                      }
+                  }
+                pair.results[k] = NodeToRigid<dim>::evaluate(x,
+                                                             *pair.rigid,
+                                                             shift,
+                                                             reference,
+                                                             previous,
+                                                             pair.law,
+                                                             area,
+                                                             consistent,
+                                                             R,
+                                                             with_matrix ? K :
+                                                                           nullptr);
+              }
+
+            if (pair.results[k].status == ContactStatus::open)
+              continue;
+
+            const auto dofs = element_dofs(pair, k);
+            dealii::Vector<double> local_rhs(n_dofs), local_residual(n_dofs);
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                local_rhs(i)      = -R[i];
+                local_residual(i) = R[i];
+              }
+            full_residual.add(dofs, local_residual);
+            homogeneous.distribute_local_to_global(local_rhs, dofs, free_residual);
+            if (with_matrix)
+              {
+                FullMatrix<double> local_matrix(n_dofs, n_dofs);
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    local_matrix(i, j) = K[i * n_dofs + j];
+                constraints.distribute_local_to_global(
+                  local_matrix, local_rhs, dofs, matrix, rhs);
+              }
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::commit()
+  {
+    for (auto &pair : pairs)
+      {
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          {
+            if (!pair.owned[k])
+              continue;
+            const auto &result  = pair.results[k];
+            auto       &history = pair.history[k];
+            history.active      = result.status != ContactStatus::open;
+            if (history.active)
+              {
+                history.traction    = result.traction;
+                history.face        = result.face;
+                history.xi[0]       = result.xi[0];
+                history.xi[1]       = result.xi[1];
+                history.frame_point = result.frame_point;
+                history.slip += result.slip_increment;
+              }
+            else
+              history.traction = {{0, 0, 0}};
+          }
+        pair.old_slave_positions  = pair.slave_positions;
+        pair.old_master_positions = pair.master_positions;
+      }
+    committed_time = time;
+  }
+
+
+
+  template <int dim>
+  ContactStatistics
+  ContactHandler<dim>::statistics() const
+  {
+    ContactStatistics s;
+    for (const auto &pair : pairs)
+      {
+        std::array<double, 5> forces = {{0, 0, 0, 0, 0}};
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          {
+            const auto &r = pair.results[k];
+            if (!pair.owned[k] || r.status == ContactStatus::open)
+              continue;
+            const double area = pair.slave->nodes()[k].area * pair.area_factor;
+            forces[0] += area * r.pressure;
+            forces[1] += area * norm(r.traction);
+            for (unsigned int d = 0; d < 3; ++d)
+              forces[2 + d] += area * (r.pressure * r.normal[d] - r.traction[d]);
+            s.max_penetration = std::max(s.max_penetration, -r.gap);
+            ++s.n_active;
+            if (r.status == ContactStatus::stick)
+              ++s.n_stick;
+            else
+              ++s.n_slip;
+          }
+        for (auto &f : forces)
+          f = Utilities::MPI::sum(f, mpi_communicator);
+        s.pair_forces.push_back(forces);
+      }
+    s.max_penetration = Utilities::MPI::max(s.max_penetration, mpi_communicator);
+    s.n_active        = Utilities::MPI::sum(s.n_active, mpi_communicator);
+    s.n_stick         = Utilities::MPI::sum(s.n_stick, mpi_communicator);
+    s.n_slip          = Utilities::MPI::sum(s.n_slip, mpi_communicator);
+    return s;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactHandler<dim>::column_names() const
+  {
+    std::vector<std::string> names;
+    const char              *axis = "xyz";
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const std::string prefix = "pair" + std::to_string(p) + "_";
+        names.push_back(prefix + "normal_force");
+        names.push_back(prefix + "tangential_force");
+        for (unsigned int d = 0; d < dim; ++d)
+          names.push_back(prefix + "F" + axis[d]);
+      }
+    for (const std::string name :
+         {"max_penetration", "n_active", "n_stick", "n_slip"})
+      names.push_back(name);
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContactHandler<dim>::columns() const
+  {
+    const ContactStatistics s = statistics();
+    std::vector<double>     values;
+    for (const auto &forces : s.pair_forces)
+      for (unsigned int i = 0; i < 2 + dim; ++i)
+        values.push_back(forces[i]);
+    values.push_back(s.max_penetration);
+    values.push_back(s.n_active);
+    values.push_back(s.n_stick);
+    values.push_back(s.n_slip);
+    return values;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::write_csv(const std::string &filename) const
+  {
+    // One row per slave node: pair, body, x, y, z, CPRESS, CSHEAR (3),
+    // COPEN, CSLIP, CSTATUS.
+    constexpr unsigned int n_columns = 13;
+    std::vector<double>    rows;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const auto &pair = pairs[p];
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          {
+            if (!pair.owned[k])
+              continue;
+            const auto &r    = pair.results[k];
+            const auto &x    = pair.slave_positions[k];
+            const auto &node = pair.slave->nodes()[k];
+            const auto  body = pair.slave->faces()[node.faces[0]].body;
+            const double values[n_columns] = {double(p),
+                                              double(body),
+                                              x[0],
+                                              x[1],
+                                              x[2],
+                                              r.pressure,
+                                              -r.traction[0],
+                                              -r.traction[1],
+                                              -r.traction[2],
+                                              r.gap,
+                                              pair.history[k].slip +
+                                                r.slip_increment,
+                                              double(int(r.status)),
+                                              double(k)};
+            rows.insert(rows.end(), values, values + n_columns);
+          }
+      }
+    const auto gathered = Utilities::MPI::gather(mpi_communicator, rows, 0);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+
+    // Sort by pair and node so that the file does not depend on the
+    // partition.
+    std::vector<std::array<double, n_columns>> all;
+    for (const auto &part : gathered)
+      for (unsigned int i = 0; i < part.size(); i += n_columns)
+        {
+          std::array<double, n_columns> row;
+          std::copy(part.begin() + i, part.begin() + i + n_columns, row.begin());
+          all.push_back(row);
+        }
+    std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
+      return a[0] != b[0] ? a[0] < b[0] : a[12] < b[12];
+    });
+
+    const std::string temporary = filename + ".part";
+    {
+      std::ofstream out(temporary);
+      AssertThrow(out, ExcMessage("Cannot write <" + temporary + ">."));
+      out << "pair,body,x,y,z,CPRESS,CSHEAR_x,CSHEAR_y,CSHEAR_z,COPEN,CSLIP,"
+             "CSTATUS\n"
+          << std::setprecision(10);
+      for (const auto &row : all)
+        {
+          out << int(row[0]) << ',' << int(row[1]);
+          for (unsigned int c = 2; c < 11; ++c)
+            out << ',' << row[c];
+          out << ',' << int(row[11]) << '\n';
+        }
+    }
+    std::rename(temporary.c_str(), filename.c_str());
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::nodal_fields(
+    const std::vector<types::global_dof_index> &vertex_to_dof,
+    std::array<dealii::Vector<double>, 4>      &scalars,
+    dealii::Vector<double>                     &shear) const
+  {
+    for (const auto &pair : pairs)
+      for (unsigned int k = 0; k < pair.owned.size(); ++k)
+        {
+          if (!pair.owned[k])
+            continue;
+          const auto &node = pair.slave->nodes()[k];
+          const auto &r    = pair.results[k];
+          const auto  dof  = vertex_to_dof[node.vertex];
+          scalars[0][dof] += r.pressure;
+          scalars[1][dof] += std::isfinite(r.gap) ? r.gap : 0.;
+          scalars[2][dof] += pair.history[k].slip + r.slip_increment;
+          scalars[3][dof] += int(r.status);
+          for (unsigned int d = 0; d < dim; ++d)
+            shear[node.dofs[d]] -= r.traction[d];
+        }
+    for (auto &v : scalars)
+      Utilities::MPI::sum(v, mpi_communicator, v);
+    Utilities::MPI::sum(shear, mpi_communicator, shear);
+  }
+
+  template class ContactHandler<2>;
+  template class ContactHandler<3>;
+} // namespace tribos

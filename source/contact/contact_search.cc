@@ -1,0 +1,126 @@
+#include <tribos/contact/contact_search.h>
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+namespace tribos
+{
+  namespace
+  {
+    using Kernel   = CGAL::Simple_cartesian<double>;
+    using Point3   = Kernel::Point_3;
+    using Segment  = Kernel::Segment_3;
+    using Triangle = Kernel::Triangle_3;
+
+    template <int dim>
+    struct Primitives;
+
+    template <>
+    struct Primitives<2>
+    {
+      using Element   = Segment;
+      using Iterator  = std::vector<Segment>::const_iterator;
+      using Primitive = CGAL::AABB_segment_primitive<Kernel, Iterator>;
+      using Tree      = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+      static constexpr unsigned int per_face = 1;
+    };
+
+    template <>
+    struct Primitives<3>
+    {
+      using Element   = Triangle;
+      using Iterator  = std::vector<Triangle>::const_iterator;
+      using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
+      using Tree      = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+      static constexpr unsigned int per_face = 2;
+    };
+
+    Point3
+    point(const Vec3<double> &x)
+    {
+      return Point3(x[0], x[1], x[2]);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  struct ContactSearch<dim>::Tree
+  {
+    std::vector<typename Primitives<dim>::Element> elements;
+    typename Primitives<dim>::Tree                 tree;
+  };
+
+
+
+  template <int dim>
+  ContactSearch<dim>::ContactSearch()
+    : tree(std::make_unique<Tree>())
+  {}
+
+
+
+  template <int dim>
+  ContactSearch<dim>::~ContactSearch() = default;
+
+  template <int dim>
+  ContactSearch<dim>::ContactSearch(ContactSearch &&) noexcept = default;
+
+  template <int dim>
+  ContactSearch<dim> &
+  ContactSearch<dim>::operator=(ContactSearch &&) noexcept = default;
+
+
+
+  template <int dim>
+  void
+  ContactSearch<dim>::build(const ContactSurface<dim>       &surface,
+                            const std::vector<Vec3<double>> &positions)
+  {
+    auto &elements = tree->elements;
+    elements.clear();
+    elements.reserve(surface.faces().size() * Primitives<dim>::per_face);
+    for (const auto &face : surface.faces())
+      {
+        const auto &n = face.nodes;
+        if constexpr (dim == 2)
+          elements.emplace_back(point(positions[n[0]]), point(positions[n[1]]));
+        else
+          {
+            // Lexicographic quad 0 1 / 2 3 as triangles (0,1,3), (0,3,2).
+            elements.emplace_back(point(positions[n[0]]),
+                                  point(positions[n[1]]),
+                                  point(positions[n[3]]));
+            elements.emplace_back(point(positions[n[0]]),
+                                  point(positions[n[3]]),
+                                  point(positions[n[2]]));
+          }
+      }
+    tree->tree.clear();
+    tree->tree.insert(elements.cbegin(), elements.cend());
+    tree->tree.build();
+    tree->tree.accelerate_distance_queries();
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactSearch<dim>::closest_face(const Vec3<double> &x,
+                                   unsigned int       &face,
+                                   double             &squared_distance) const
+  {
+    if (tree->elements.empty())
+      return false;
+    const auto result = tree->tree.closest_point_and_primitive(point(x));
+    face = (result.second - tree->elements.cbegin()) / Primitives<dim>::per_face;
+    squared_distance = CGAL::squared_distance(result.first, point(x));
+    return true;
+  }
+
+  template class ContactSearch<2>;
+  template class ContactSearch<3>;
+} // namespace tribos
