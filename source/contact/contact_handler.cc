@@ -114,6 +114,14 @@ namespace tribos
 
 
 
+  /**
+   * Width, in local coordinates, of the band beyond the end of a master
+   * surface in which a slave node still sees the end face's extension.
+   */
+  constexpr double edge_band = 0.1;
+
+
+
   template <int dim>
   void
   ContactHandler<dim>::update(const TrilinosWrappers::MPI::Vector &solution,
@@ -148,10 +156,32 @@ namespace tribos
         for (unsigned int k = 0; k < pair.owned.size(); ++k)
           {
             Pairing &pairing = pair.pairing[k];
-            pairing          = Pairing();
             if (!pair.owned[k])
               continue;
             const Vec3<double> &x = pair.slave_positions[k];
+
+            // Keep the face of the last evaluation while the node projects
+            // onto it or onto its extension within a small band: over a
+            // master vertex (a concave kink of the deformed master) the
+            // closest face would otherwise flip between iterations and
+            // Newton would cycle between two smooth residuals.
+            if (pairing.valid)
+              {
+                Vec3<double> xm[4];
+                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+                  xm[v] = pair.master_positions[faces[pairing.face].nodes[v]];
+                const Projection kept = project<dim>(x, xm, false);
+                bool             near = kept.distance <= parameters.search_distance;
+                for (unsigned int c = 0; c < dim - 1; ++c)
+                  near = near && std::abs(kept.xi[c]) <= 1. + edge_band;
+                if (near)
+                  {
+                    pairing.projection = kept;
+                    continue;
+                  }
+              }
+            pairing = Pairing();
+
             unsigned int        closest;
             double              squared_distance;
             if (!pair.search.closest_face(x, closest, squared_distance) ||
@@ -181,13 +211,27 @@ namespace tribos
                     pairing.projection = p;
                   }
               }
-            // A projection clamped at an edge where the master surface ends
-            // means the node has slid off: no contact.
+            // A projection clamped at an edge where the master surface ends:
+            // within a small band beyond the edge the node sees the face's
+            // extension (a smooth residual for nodes flush with the end of
+            // the master); farther out it has slid off: no contact.
             pairing.valid = true;
+            bool at_end   = false;
             for (unsigned int c = 0; c < dim - 1; ++c)
               if (pairing.projection.clamped[c] != 0 &&
                   !faces[pairing.face].continues[c][pairing.projection.clamped[c] > 0])
-                pairing.valid = false;
+                at_end = true;
+            if (at_end)
+              {
+                Vec3<double> xm[4];
+                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+                  xm[v] = pair.master_positions[faces[pairing.face].nodes[v]];
+                const Projection extended = project<dim>(x, xm, false);
+                for (unsigned int c = 0; c < dim - 1; ++c)
+                  if (std::abs(extended.xi[c]) > 1. + edge_band)
+                    pairing.valid = false;
+                pairing.projection = extended;
+              }
 
             if (pair.couplings.count({k, pairing.face}) == 0)
               {

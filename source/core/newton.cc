@@ -64,6 +64,60 @@ namespace tribos
 
 
   template <int dim>
+  double
+  Problem<dim>::tangent_error(const double time)
+  {
+    AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
+                ExcMessage("Nonlinear solver/Check tangent works in serial "
+                           "runs only."));
+    assemble(true, homogeneous_constraints, time);
+    const Vector start = solution;
+
+    // Columns: every free contact dof and every 7th free dof.
+    std::vector<types::global_dof_index> columns;
+    for (types::global_dof_index j = 0; j < dof_handler.n_dofs(); ++j)
+      if (!homogeneous_constraints.is_constrained(j) &&
+          ((contact && contact->contact_dofs().is_element(j)) || j % 7 == 0))
+        columns.push_back(j);
+
+    double       error = 0, size = 0;
+    const double h     = 1e-7 * std::max(1., solution.linfty_norm());
+    Vector       unit(locally_owned_dofs, mpi_communicator);
+    Vector       plus(locally_owned_dofs, mpi_communicator);
+    Vector       column(locally_owned_dofs, mpi_communicator);
+    for (const auto j : columns)
+      {
+        unit    = 0;
+        unit[j] = 1;
+        system_matrix.vmult(column, unit);
+        homogeneous_constraints.distribute(unit);
+
+        solution = start;
+        solution.add(h, unit);
+        ghosted_solution = solution;
+        assemble(false, homogeneous_constraints, time);
+        plus = free_residual;
+        solution = start;
+        solution.add(-h, unit);
+        ghosted_solution = solution;
+        assemble(false, homogeneous_constraints, time);
+        // free_residual holds -R: dR/du_j = -(r+ - r-)/(2h) = K e_j.
+        for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+          if (!homogeneous_constraints.is_constrained(i))
+            {
+              const double fd = -(plus[i] - free_residual[i]) / (2 * h);
+              error += (column[i] - fd) * (column[i] - fd);
+              size += column[i] * column[i];
+            }
+      }
+    solution         = start;
+    ghosted_solution = solution;
+    return size > 0 ? std::sqrt(error / size) : 0.;
+  }
+
+
+
+  template <int dim>
   IncrementReport
   Problem<dim>::solve_increment(const double       time,
                                 const unsigned int step,
@@ -141,6 +195,13 @@ namespace tribos
                 "; Nonlinear solver/Maximum iterations)");
           }
         reference = std::max(reference, residual);
+
+        if (p.check_tangent && iteration > 0)
+          {
+            pcout << "  tangent check, iteration " << iteration
+                  << ": relative error " << tangent_error(time) << std::endl;
+            assemble(true, constraints, time);
+          }
 
         newton_update = 0;
         solve_linear_system(newton_update);

@@ -35,6 +35,14 @@ namespace tribos
                         "6",
                         dealii::Patterns::Integer(0, 30),
                         "Halvings of the step length at most.");
+      prm.declare_entry("Check tangent",
+                        "false",
+                        dealii::Patterns::Bool(),
+                        "Compare the assembled tangent with central finite "
+                        "differences of the residual in every iteration "
+                        "(columns of the contact dofs and a sample of the "
+                        "others) and print the relative error. Slow; for "
+                        "verification and debugging (serial runs).");
       prm.leave_subsection();
     }
 
@@ -50,6 +58,7 @@ namespace tribos
       increment_tolerance         = prm.get_double("Increment tolerance");
       line_search                 = prm.get_bool("Line search");
       max_line_search_steps = prm.get_integer("Maximum line search steps");
+      check_tangent         = prm.get_bool("Check tangent");
       prm.leave_subsection();
     }
   } // namespace Parameters

@@ -229,14 +229,20 @@ namespace tribos
       contact_point[dim - 1] = 0.5 * s.gap;
       for (const auto &face : tria.active_face_iterators())
         if (face->at_boundary() && face->boundary_id() == 10)
-          face->set_manifold_id(1);
+          face->set_all_manifold_ids(1);
       tria.set_manifold(1, SphericalManifold<dim>(centre));
       for (unsigned int cycle = 0; cycle < s.contact_refinements; ++cycle)
         {
           for (const auto &cell : tria.active_cell_iterators())
-            if (cell->center().distance(contact_point) <
-                s.refinement_radius * s.radius)
-              cell->set_refine_flag();
+            {
+              // Refine every cell that reaches into the refinement disc.
+              double distance = cell->center().distance(contact_point);
+              for (const unsigned int v : cell->vertex_indices())
+                distance =
+                  std::min(distance, cell->vertex(v).distance(contact_point));
+              if (distance < s.refinement_radius * s.radius)
+                cell->set_refine_flag();
+            }
           tria.execute_coarsening_and_refinement();
         }
     }

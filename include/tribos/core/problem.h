@@ -116,6 +116,8 @@ namespace tribos
                     const unsigned int increment);
     void
     solve_linear_system(Vector &newton_update);
+    double
+    tangent_error(const double time);
 
     /* output.cc */
     void

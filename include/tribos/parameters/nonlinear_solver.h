@@ -19,6 +19,7 @@ namespace tribos
       double       increment_tolerance;
       bool         line_search;
       unsigned int max_line_search_steps;
+      bool         check_tangent;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,74 @@
+"""Verification: Hertz contact. 2D (plane strain cylinder, R = 1) on a
+rigid plane and on an elastic block; 3D (sphere, quarter model) on a rigid
+plane. The contact half-width a and the peak pressure p0 come from a
+least-squares fit of p^2 = p0^2 (1 - x^2/a^2) to the nodal CPRESS of the
+slave nodes in contact, the load P from the contact normal force; asserts
+a and p0 within 3 % (2D) and 5 % (3D) of Hertz and reports the relative L2
+error of the pressure profile."""
+
+import math
+import sys
+
+from tribos_test import setup, run, read_csv, check, finish
+
+tribos, tests, out = setup(sys.argv)
+E, nu, R = 1.0, 0.3, 1.0
+
+
+def fit(rows, dim):
+    """p0, a from the contact rows (x radial distance), and the points."""
+    points = []
+    for r in rows:
+        if r["CPRESS"] > 0:
+            radius = math.hypot(r["x"], r["y"]) if dim == 3 else abs(r["x"])
+            points.append((radius, r["CPRESS"]))
+    n = len(points)
+    sx = sum(p[0] ** 2 for p in points)
+    sy = sum(p[1] ** 2 for p in points)
+    sxx = sum(p[0] ** 4 for p in points)
+    sxy = sum(p[0] ** 2 * p[1] ** 2 for p in points)
+    slope = (n * sxy - sx * sy) / (n * sxx - sx * sx)
+    intercept = (sy - slope * sx) / n
+    return math.sqrt(intercept), math.sqrt(-intercept / slope), points
+
+
+def verify(name, dim, folder, e_star, bound, force_scale):
+    history = read_csv(folder + "/history.csv")[-1]
+    P = history["pair0_normal_force"] * force_scale
+    if dim == 2:
+        a = math.sqrt(4 * P * R / (math.pi * e_star))
+        p0 = 2 * P / (math.pi * a)
+    else:
+        a = (3 * P * R / (4 * e_star)) ** (1.0 / 3.0)
+        p0 = 3 * P / (2 * math.pi * a * a)
+    rows = read_csv(folder + "/contact-%05d.csv" % 2)
+    p0_h, a_h, points = fit(rows, dim)
+    profile = math.sqrt(
+        sum((p - p0 * math.sqrt(max(0.0, 1 - x * x / (a * a)))) ** 2
+            for x, p in points) / sum(p * p for x, p in points))
+    print("%s: P = %.6g, Hertz a = %.5g, p0 = %.5g; fitted a = %.5g, "
+          "p0 = %.5g; %d nodes in contact; profile L2 error %.3f"
+          % (name, P, a, p0, a_h, p0_h, len(points), profile))
+    check(abs(a_h - a) / a < bound, "%s: a within %g %% (%.2f %%)"
+          % (name, 100 * bound, 100 * abs(a_h - a) / a))
+    check(abs(p0_h - p0) / p0 < bound, "%s: p0 within %g %% (%.2f %%)"
+          % (name, 100 * bound, 100 * abs(p0_h - p0) / p0))
+    check(len(points) >= 10, "%s: at least 10 nodes in contact" % name)
+
+
+prm = tests + "/../parameters/hertz_2d.prm"
+run(tribos, prm, out + "/rigid")
+verify("2D on rigid plane", 2, out + "/rigid", E / (1 - nu * nu), 0.03, 1)
+
+run(tribos, prm, out + "/block", [
+    "Scene/Cylinder over block/With block=true", "Contact/Pairs=10 : 3",
+    "Boundary conditions/Dirichlet=11 : xy : 0, -0.01*t ; 2 : xy : 0, 0"])
+verify("2D on elastic block", 2, out + "/block", E / (2 * (1 - nu * nu)),
+       0.03, 1)
+
+prm3 = tests + "/../parameters/hertz_3d.prm"
+run(tribos, prm3, out + "/sphere")
+# quarter model: the full load is four times the modelled one
+verify("3D sphere on rigid plane", 3, out + "/sphere", E / (1 - nu * nu),
+       0.05, 4)
+finish()
