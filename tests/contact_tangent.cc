@@ -59,7 +59,16 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
       law.normal_penalty       = 1e3;
       law.tangential_penalty   = 5e2 * (1 + 0.5 * u(random));
       law.friction_coefficient = 0.3;
-      const double xi_reference[2] = {0.1 * u(random), 0.1 * u(random)};
+      // Positions at the last converged step: a tangential history.
+      Vec3<double> slave_old = slave, master_old[4];
+      for (unsigned int d = 0; d < dim; ++d)
+        slave_old[d] += 0.03 * u(random);
+      for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
+        {
+          master_old[k] = master[k];
+          for (unsigned int d = 0; d < dim; ++d)
+            master_old[k][d] += 0.01 * u(random);
+        }
       Vec3<double> traction{{3 * u(random), 3 * u(random), 0}};
       if (dim == 2)
         traction[1] = 0;
@@ -76,15 +85,15 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
           }
         const Projection p = project<dim>(s, m);
         return Element::evaluate(
-          s, m, p, xi_reference, traction, law, 0.7, true, R, nullptr);
+          s, m, p, slave_old, master_old, traction, law, 0.7, true, R, nullptr);
       };
 
       std::vector<double> zero(n, 0.), R(n), K(n * n), Kp(n * n);
       const Projection    p = project<dim>(slave, master);
       const auto          result = Element::evaluate(
-        slave, master, p, xi_reference, traction, law, 0.7, true, R.data(), K.data());
+        slave, master, p, slave_old, master_old, traction, law, 0.7, true, R.data(), K.data());
       Element::evaluate(
-        slave, master, p, xi_reference, traction, law, 0.7, false, R.data(), Kp.data());
+        slave, master, p, slave_old, master_old, traction, law, 0.7, false, R.data(), Kp.data());
 
       const double h = 1e-7;
       double       error = 0, size = 0, paper = 0;
@@ -142,7 +151,8 @@ check_rigid(const std::string &type, std::mt19937 &random, Tally &tally,
                       std::vector<double>{0.3, 0.1, 1};
   description.motion = std::vector<std::string>(dim, "0.1*t");
   const RigidSurface<dim> surface(description);
-  const Vec3<double>      shift = surface.translation(0.5);
+  const Vec3<double>      shift     = surface.translation(0.5);
+  const Vec3<double>      shift_old = surface.translation(0.497);
 
   for (unsigned int sample = 0; sample < 200; ++sample)
     {
@@ -152,9 +162,9 @@ check_rigid(const std::string &type, std::mt19937 &random, Tally &tally,
       double       gap;
       surface.closest_point(slave, shift, xbar, normal, gap);
       slave = xbar + scale(-0.02 * (1 + u(random)), normal);
-      const Vec3<double> reference =
-        xbar + Vec3<double>{{0.01 * u(random), 0.01 * u(random),
-                             dim == 3 ? 0.01 * u(random) : 0.}};
+      const Vec3<double> slave_old =
+        slave + Vec3<double>{{3e-4 * u(random), 3e-4 * u(random),
+                              dim == 3 ? 3e-4 * u(random) : 0.}};
       Vec3<double> traction{{u(random), u(random), dim == 3 ? u(random) : 0.}};
       ContactLaw   law;
       law.normal_penalty       = 1e3;
@@ -163,7 +173,7 @@ check_rigid(const std::string &type, std::mt19937 &random, Tally &tally,
 
       double     R[dim], K[dim * dim], Rp[dim], Rm[dim];
       const auto result = NodeToRigid<dim>::evaluate(
-        slave, surface, shift, reference, traction, law, 1.3, true, R, K);
+        slave, surface, shift, shift_old, slave_old, traction, law, 1.3, true, R, K);
       const double h = 1e-7;
       double       error = 0, size = 0;
       bool         kink  = false;
@@ -172,11 +182,11 @@ check_rigid(const std::string &type, std::mt19937 &random, Tally &tally,
           Vec3<double> plus = slave, minus = slave;
           plus[j] += h;
           minus[j] -= h;
-          kink = kink || NodeToRigid<dim>::evaluate(plus, surface, shift, reference,
+          kink = kink || NodeToRigid<dim>::evaluate(plus, surface, shift, shift_old, slave_old,
                                                      traction, law, 1.3, true, Rp,
                                                      nullptr)
                              .status != result.status;
-          kink = kink || NodeToRigid<dim>::evaluate(minus, surface, shift, reference,
+          kink = kink || NodeToRigid<dim>::evaluate(minus, surface, shift, shift_old, slave_old,
                                                      traction, law, 1.3, true, Rm,
                                                      nullptr)
                              .status != result.status;

@@ -35,7 +35,10 @@ namespace tribos
         result.normal[d] = value(normal[d]);
 
       force = {{Number(0.), Number(0.), Number(0.)}};
-      if (!(value(gap) < 0))
+      // Closed for g_N <= 0: a node that just touches carries no pressure
+      // but gives the Newton matrix its contact stiffness, so that the
+      // first iteration of a step does not push it deep into the master.
+      if (value(gap) > 0)
         return;
 
       const Number pressure = -law.normal_penalty * gap;
@@ -54,7 +57,9 @@ namespace tribos
           const Number magnitude = norm(trial);
           const Number limit     = law.friction_coefficient * pressure;
           Vec3<Number> traction  = trial;
-          // Slip indicator (17) and return mapping (18)-(19).
+          // Slip indicator (17) and return mapping (18)-(19). At equality
+          // the node sticks: a node that slipped in the last step starts
+          // the next one on the stick branch (paper, Table 1).
           if (value(magnitude) > value(limit))
             {
               traction              = scale(limit / magnitude, trial);
@@ -89,7 +94,8 @@ namespace tribos
   NodeToSegment<dim>::evaluate(const Vec3<double> &slave,
                                const Vec3<double> *master,
                                const Projection   &projection,
-                               const double       *xi_reference,
+                               const Vec3<double> &slave_old,
+                               const Vec3<double> *master_old,
                                const Vec3<double> &previous_traction,
                                const ContactLaw   &law,
                                const double        area,
@@ -164,15 +170,19 @@ namespace tribos
       }
     const AD gap = dot(xs - xbar, normal);
 
-    Vec3<AD> slip{{AD(0.), AD(0.), AD(0.)}};
-    for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-      slip = slip + scale(xi[alpha] - xi_reference[alpha], a[alpha]);
+    AD N[n_nodes], dN[n_nodes][2];
+    Face::shape(xi, N, dN);
+
+    // Relative motion of the slave and the master material point under it
+    // during the step, tangential part.
+    Vec3<AD> relative = xs - to<AD>(slave_old);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      relative = relative - scale(N[k], xm[k] - to<AD>(master_old[k]));
+    const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
 
     Vec3<AD> force;
     interface_law(gap, normal, slip, previous_traction, law, force, result);
 
-    AD N[n_nodes], dN[n_nodes][2];
-    Face::shape(xi, N, dN);
     AD residual[n_dofs];
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -199,7 +209,8 @@ namespace tribos
   NodeToRigid<dim>::evaluate(const Vec3<double>      &slave,
                              const RigidSurface<dim> &surface,
                              const Vec3<double>      &shift,
-                             const Vec3<double>      &reference_point,
+                             const Vec3<double>      &shift_old,
+                             const Vec3<double>      &slave_old,
                              const Vec3<double>      &previous_traction,
                              const ContactLaw        &law,
                              const double             area,
@@ -228,15 +239,14 @@ namespace tribos
         xbar   = xs - scale(gap, normal);
       }
 
-    // Slip: the tangential part of the motion of the contact point relative
-    // to the surface's material point of the last converged step.
-    const Vec3<AD> relative = xbar - to<AD>(reference_point);
+    // Slip: the tangential part of the slave's motion relative to the
+    // surface during the step.
+    const Vec3<AD> relative =
+      (xs - to<AD>(slave_old)) - to<AD>(shift - shift_old);
     const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
 
     Vec3<AD> force;
     interface_law(gap, normal, slip, previous_traction, law, force, result);
-    for (unsigned int d = 0; d < 3; ++d)
-      result.frame_point[d] = xbar[d].val() - shift[d];
 
     for (unsigned int i = 0; i < dim; ++i)
       {

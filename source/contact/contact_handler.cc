@@ -302,11 +302,12 @@ namespace tribos
 
     for (auto &pair : pairs)
       {
-        const bool         frictional = pair.law.friction_coefficient > 0;
         const unsigned int n_dofs =
           pair.master ? NodeToSegment<dim>::n_dofs : NodeToRigid<dim>::n_dofs;
         const Vec3<double> shift =
           pair.rigid ? pair.rigid->translation(time) : zero;
+        const Vec3<double> old_shift =
+          pair.rigid ? pair.rigid->translation(committed_time) : zero;
 
         for (unsigned int k = 0; k < pair.owned.size(); ++k)
           {
@@ -329,45 +330,15 @@ namespace tribos
                 for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
                   xm[v] = pair.master_positions[faces[face].nodes[v]];
 
-                // The master point of the last converged step in this face's
-                // coordinates (Table 1: a new contact starts from where the
-                // slave was over the master at the last converged step).
-                double xi_reference[2] = {0, 0};
-                if (frictional)
-                  {
-                    if (history.active && history.face == face)
-                      {
-                        xi_reference[0] = history.xi[0];
-                        xi_reference[1] = history.xi[1];
-                      }
-                    else
-                      {
-                        Vec3<double> point = pair.old_slave_positions[k];
-                        Vec3<double> xm_old[4];
-                        for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-                          xm_old[v] =
-                            pair.old_master_positions[faces[face].nodes[v]];
-                        const Vec3<double> *geometry = xm_old;
-                        if (history.active)
-                          {
-                            // Face changed: carry the old material point.
-                            Vec3<double> xo[4], a[2], n;
-                            for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-                              xo[v] = pair.master_positions
-                                        [faces[history.face].nodes[v]];
-                            MasterFace<dim>::geometry(xo, history.xi, point, a, n);
-                            geometry = xm;
-                          }
-                        const Projection p = project<dim>(point, geometry, false);
-                        xi_reference[0]    = p.xi[0];
-                        xi_reference[1]    = p.xi[1];
-                      }
-                  }
+                Vec3<double> xm_old[4];
+                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+                  xm_old[v] = pair.old_master_positions[faces[face].nodes[v]];
                 pair.results[k] = NodeToSegment<dim>::evaluate(
                   x,
                   xm,
                   pair.pairing[k].projection,
-                  xi_reference,
+                  pair.old_slave_positions[k],
+                  xm_old,
                   previous,
                   pair.law,
                   area,
@@ -378,31 +349,11 @@ namespace tribos
               }
             else
               {
-                Vec3<double> reference = zero;
-                if (frictional)
-                  {
-                    if (history.active)
-                      reference = history.frame_point + shift;
-                    else
-                      {
-                        // Where the slave was over the surface at the last
-                        // converged step, carried with the surface.
-                        const Vec3<double> old_shift =
-                          pair.rigid->translation(committed_time);
-                        Vec3<double> xbar, n;
-                        double       gap;
-                        pair.rigid->closest_point(pair.old_slave_positions[k],
-                                                  old_shift,
-                                                  xbar,
-                                                  n,
-                                                  gap);
-                        reference = xbar - old_shift + shift;
-                      }
-                  }
                 pair.results[k] = NodeToRigid<dim>::evaluate(x,
                                                              *pair.rigid,
                                                              shift,
-                                                             reference,
+                                                             old_shift,
+                                                             pair.old_slave_positions[k],
                                                              previous,
                                                              pair.law,
                                                              area,
@@ -454,11 +405,7 @@ namespace tribos
             history.active      = result.status != ContactStatus::open;
             if (history.active)
               {
-                history.traction    = result.traction;
-                history.face        = result.face;
-                history.xi[0]       = result.xi[0];
-                history.xi[1]       = result.xi[1];
-                history.frame_point = result.frame_point;
+                history.traction = result.traction;
                 history.slip += result.slip_increment;
               }
             else

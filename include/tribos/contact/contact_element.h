@@ -16,10 +16,17 @@ namespace tribos
    *   R_master_a = -N_a(xi) A_k (T - t_N n),
    *
    * with t_N = eps_N <-g_N>, the trial tangential traction
-   * T_trial = P_T T_n + eps_T a_alpha (xi - xi_n)^alpha, and T = T_trial
-   * (stick) or mu t_N T_trial / |T_trial| (slip). The paper's covariant
-   * components t_alpha = T . a_alpha and its norm sqrt(t a^ab t) are the
-   * same objects written in the face basis.
+   * T_trial = P_T T_n + eps_T dg_T, and T = T_trial (stick) or
+   * mu t_N T_trial / |T_trial| (slip). The slip increment of the step is
+   * the tangential part of the motion of the slave relative to the master
+   * material point under it,
+   *   dg_T = P_T [ (x_s - x_s,n) - sum_a N_a(xi) (x_a - x_a,n) ],
+   * (n: last converged step), which for a master at rest is the paper's
+   * a_alpha dxi^alpha of (16) to first order, and which involves only the
+   * element's own nodes: the tangent stays exact when the node crosses to
+   * another master face within a step. The paper's covariant components
+   * t_alpha = T . a_alpha and norm sqrt(t a^ab t) are the same objects
+   * written in the face basis.
    *
    * The residual is templated on the number type and differentiated by
    * Sacado forward AD: with Tangent = consistent the local coordinates xi
@@ -39,8 +46,8 @@ namespace tribos
 
     /**
      * Evaluate the element of the slave at @p slave against the face with
-     * nodes @p master and projection @p projection. @p xi_reference is the
-     * master point of the last converged step in this face's coordinates,
+     * nodes @p master and projection @p projection. @p slave_old and
+     * @p master_old are the same nodes at the last converged step,
      * @p previous_traction the committed T_n. R gets n_dofs entries (slave
      * dofs first, then master node by node); K, if not null, n_dofs^2
      * (row-major, K_ij = dR_i/du_j).
@@ -49,7 +56,8 @@ namespace tribos
     evaluate(const Vec3<double> &slave,
              const Vec3<double> *master,
              const Projection   &projection,
-             const double       *xi_reference,
+             const Vec3<double> &slave_old,
+             const Vec3<double> *master_old,
              const Vec3<double> &previous_traction,
              const ContactLaw   &law,
              const double        area,
@@ -65,15 +73,15 @@ namespace tribos
     static constexpr unsigned int n_dofs = dim;
 
     /**
-     * @p shift is the surface's current translation, @p reference_point
-     * the master material point of the last converged step in its current
-     * position.
+     * @p shift and @p shift_old are the surface's translation now and at
+     * the last converged step, @p slave_old the slave's position then.
      */
     static ContactPointResult
     evaluate(const Vec3<double>      &slave,
              const RigidSurface<dim> &surface,
              const Vec3<double>      &shift,
-             const Vec3<double>      &reference_point,
+             const Vec3<double>      &shift_old,
+             const Vec3<double>      &slave_old,
              const Vec3<double>      &previous_traction,
              const ContactLaw        &law,
              const double             area,

@@ -27,18 +27,13 @@ namespace tribos
   /**
    * History of one slave node, committed only when a step converges (like
    * plastic history): whether it was in contact, its tangential traction
-   * vector T_n, the material point of the master it was in contact with,
-   * and the accumulated slip.
+   * vector T_n and the accumulated slip. (The positions at the last
+   * converged step, which the slip increment needs, are kept per surface.)
    */
   struct SlaveHistory
   {
     bool         active = false;
     Vec3<double> traction{{0, 0, 0}};
-    /** Deformable master: face index and local coordinates. */
-    int    face  = -1;
-    double xi[2] = {0, 0};
-    /** Rigid master: contact point in the surface's own frame. */
-    Vec3<double> frame_point{{0, 0, 0}};
     double       slip = 0;
   };
 
@@ -55,10 +50,9 @@ namespace tribos
     Vec3<double> normal{{0, 0, 0}};
     /** Slip increment of the return mapping, |T_trial| - mu t_N over eps_T. */
     double slip_increment = 0;
-    /** Master point: face and local coordinates, or frame point (rigid). */
-    int          face  = -1;
-    double       xi[2] = {0, 0};
-    Vec3<double> frame_point{{0, 0, 0}};
+    /** Master face and local coordinates of the projection (deformable). */
+    int    face  = -1;
+    double xi[2] = {0, 0};
   };
 } // namespace tribos
 
