@@ -48,4 +48,25 @@ expect ring_in_3d "2D scene" "$tribos" "$good" --set "Dimension=3" \
 expect unknown_option "Unknown option" "$tribos" "$good" --frobnicate
 expect too_few_bodies "body id 2" "$tribos" "$tests/ring_2d.prm" \
   --set "Materials/Young's modulus=1, 2"
+contact=$tests/sliding_block.prm
+expect contact_unknown_boundary "boundary id 42" "$tribos" "$contact" \
+  --set "Contact/Pairs=42 : plane"
+expect contact_unknown_master "neither a boundary id nor" "$tribos" "$contact" \
+  --set "Contact/Pairs=2 : table"
+expect contact_negative_mu "Friction coefficient" "$tribos" "$contact" \
+  --set "Contact/Friction coefficient=-0.1"
+expect contact_pair_negative_mu "mu = <-1>" "$tribos" "$contact" \
+  --set "Contact/Pairs=2 : plane : mu=-1"
+expect contact_zero_penalty "Contact/Penalty factor" "$tribos" "$contact" \
+  --set "Contact/Penalty factor=0*E"
+expect contact_negative_penalty "Contact/Penalty factor" "$tribos" "$contact" \
+  --set "Contact/Penalty factor=-5"
+expect contact_bad_motion "cannot parse the motion" "$tribos" "$contact" \
+  --set "Contact/Rigid surfaces=plane : plane : 0, 0, 0 : 0, 1, 0 : 0, sin(" 
+expect contact_bad_surface_type "unknown type <cone>" "$tribos" "$contact" \
+  --set "Contact/Rigid surfaces=plane : cone : 0, 0, 0 : 1 : 0, 0"
+expect contact_q2 "Polynomial degree = 1" "$tribos" "$contact" \
+  --set "Finite element/Polynomial degree=2"
+expect contact_lagrange_not_yet "not implemented yet" "$tribos" "$contact" \
+  --set "Contact/Method=lagrange multiplier"
 exit $failed
