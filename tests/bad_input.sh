@@ -45,6 +45,7 @@ expect z_in_2d "component z" "$tribos" "$good" \
   --set "Boundary conditions/Dirichlet=1 : z : 0"
 expect ring_in_3d "2D scene" "$tribos" "$good" --set "Dimension=3" \
   --set "Scene/Name=ring on foundation"
+expect duplicate_dirichlet "twice" "$tribos" "$good" --set "Boundary conditions/Dirichlet=1 : x : 0 ; 1 : y : 0"
 expect unknown_option "Unknown option" "$tribos" "$good" --frobnicate
 expect too_few_bodies "body id 2" "$tribos" "$tests/ring_2d.prm" \
   --set "Materials/Young's modulus=1, 2"

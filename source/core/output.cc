@@ -49,6 +49,15 @@ namespace tribos
                     ExcMessage("Parameter <Output/Directory> = <" + dir +
                                ">: cannot create the directory (" +
                                error.message() + ")."));
+        // Remove the series files of an earlier run, so that the folder
+        // holds one consistent run; other files are left alone.
+        for (const auto &entry : std::filesystem::directory_iterator(dir))
+          {
+            const std::string name = entry.path().filename().string();
+            if (name.rfind("solution-", 0) == 0 ||
+                name.rfind("contact-", 0) == 0)
+              std::filesystem::remove(entry.path());
+          }
       }
     MPI_Barrier(mpi_communicator);
 

@@ -120,6 +120,22 @@ namespace tribos
     void
     BoundaryConditions::check(const unsigned int dim) const
     {
+      for (unsigned int i = 0; i < dirichlet.size(); ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          AssertThrow(dirichlet[i].boundary_id != dirichlet[j].boundary_id,
+                      dealii::ExcMessage(
+                        "Parameter <Boundary conditions/Dirichlet> names "
+                        "boundary " +
+                        std::to_string(dirichlet[i].boundary_id) +
+                        " twice: give all its components in one item, e.g. "
+                        "'3 : xy : 0, -t'."));
+      for (unsigned int i = 0; i < neumann.size(); ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          AssertThrow(neumann[i].boundary_id != neumann[j].boundary_id,
+                      dealii::ExcMessage(
+                        "Parameter <Boundary conditions/Neumann> names "
+                        "boundary " +
+                        std::to_string(neumann[i].boundary_id) + " twice."));
       for (const auto &condition : dirichlet)
         for (const unsigned int c : condition.components)
           AssertThrow(c < dim,

@@ -16,8 +16,10 @@ namespace tribos
       prm.declare_entry("Residual tolerance",
                         "1e-8",
                         dealii::Patterns::Double(0),
-                        "Converged when |R| <= tol * max(|R| seen in the "
-                        "increment, |internal force|) + absolute tolerance.");
+                        "Converged when |R| <= tol * max(largest |R| of the "
+                        "increment, |f_int - f_ext| over all dofs including "
+                        "the constrained ones, i.e. the reactions) + "
+                        "Absolute residual tolerance.");
       prm.declare_entry("Absolute residual tolerance",
                         "1e-12",
                         dealii::Patterns::Double(0),

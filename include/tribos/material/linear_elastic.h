@@ -7,9 +7,9 @@ namespace tribos
 {
   /**
    * Small-strain isotropic linear elasticity, sigma = lambda tr(eps) I +
-   * 2 mu eps with eps = sym(F - I). Used as P, so the residual is the
-   * linear one and Newton converges in one iteration; valid only for
-   * small displacement gradients.
+   * 2 mu eps with eps = sym(F - I). Used as P, so the residual is linear
+   * in u (one Newton correction solves it, the update test confirms it);
+   * valid only for small displacement gradients.
    */
   template <int dim>
   class LinearElastic : public Material<dim>

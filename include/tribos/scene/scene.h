@@ -15,8 +15,9 @@ namespace tribos
    * Build the scene named in @p parameters into @p triangulation (which
    * must be empty). All bodies live in this one triangulation: the
    * material_id of a cell is its body id, boundary faces carry the boundary
-   * ids documented per scene in the README. Bodies are meshed separately
-   * and never share vertices, so they interact only through contact.
+   * ids documented per scene in the README. Separately generated bodies
+   * never share vertices, so they interact only through contact (regions
+   * of one generated body, like the two ring layers, are bonded).
    *
    * Curved geometry is refined on its exact manifold before the bodies are
    * merged; the merged mesh is then flat (no manifolds needed afterwards).
