@@ -9,27 +9,10 @@ error of the pressure profile."""
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_test import setup, run, read_csv, check, finish, hertz_fit as fit
 
 tribos, tests, out = setup(sys.argv)
 E, nu, R = 1.0, 0.3, 1.0
-
-
-def fit(rows, dim):
-    """p0, a from the contact rows (x radial distance), and the points."""
-    points = []
-    for r in rows:
-        if r["CPRESS"] > 0:
-            radius = math.hypot(r["x"], r["y"]) if dim == 3 else abs(r["x"])
-            points.append((radius, r["CPRESS"]))
-    n = len(points)
-    sx = sum(p[0] ** 2 for p in points)
-    sy = sum(p[1] ** 2 for p in points)
-    sxx = sum(p[0] ** 4 for p in points)
-    sxy = sum(p[0] ** 2 * p[1] ** 2 for p in points)
-    slope = (n * sxy - sx * sy) / (n * sxx - sx * sx)
-    intercept = (sy - slope * sx) / n
-    return math.sqrt(intercept), math.sqrt(-intercept / slope), points
 
 
 def verify(name, dim, folder, e_star, bound, force_scale):

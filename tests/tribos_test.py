@@ -63,6 +63,25 @@ def numdiff(result, reference, relative=1e-6, absolute=1e-10):
         raise SystemExit("numdiff: %s differs from %s" % (result, reference))
 
 
+def hertz_fit(rows, dim):
+    """Hertz p0 and a fitted to contact-NNNNN.csv rows: least squares of
+    p^2 = p0^2 (1 - r^2/a^2) over the nodes in contact (r = |x| in 2D,
+    the distance from the z axis in 3D); also returns the (r, p) points."""
+    points = []
+    for r in rows:
+        if r["CPRESS"] > 0:
+            radius = math.hypot(r["x"], r["y"]) if dim == 3 else abs(r["x"])
+            points.append((radius, r["CPRESS"]))
+    n = len(points)
+    sx = sum(p[0] ** 2 for p in points)
+    sy = sum(p[1] ** 2 for p in points)
+    sxx = sum(p[0] ** 4 for p in points)
+    sxy = sum(p[0] ** 2 * p[1] ** 2 for p in points)
+    slope = (n * sxy - sx * sy) / (n * sxx - sx * sx)
+    intercept = (sy - slope * sx) / n
+    return math.sqrt(intercept), math.sqrt(-intercept / slope), points
+
+
 def check(condition, message):
     """Print the check and fail the test if it does not hold."""
     print(("ok      " if condition else "FAILED  ") + message)

@@ -389,11 +389,12 @@ namespace tribos
                          out << std::left << std::setw(20) << section
                              << std::right << std::setw(8)
                              << static_cast<unsigned int>(calls.at(section))
-                             << std::setw(12) << std::setprecision(4)
-                             << seconds << std::setw(6)
-                             << std::setprecision(3)
+                             << ' ' << std::setw(11) << std::fixed
+                             << std::setprecision(4) << seconds << ' '
+                             << std::setw(6) << std::setprecision(2)
                              << (total > 0 ? 100 * seconds / total : 0)
-                             << "%\n";
+                             << "%\n"
+                             << std::defaultfloat;
                      });
   }
 
