@@ -35,13 +35,14 @@ namespace tribos
         result.normal[d] = value(normal[d]);
 
       force = {{Number(0.), Number(0.), Number(0.)}};
-      // Closed for g_N <= 0: a node that just touches carries no pressure
-      // but gives the Newton matrix its contact stiffness, so that the
-      // first iteration of a step does not push it deep into the master.
-      if (value(gap) > 0)
+      // Closed for lambda - eps_N g_N >= 0 (g_N <= 0 for pure penalty): a
+      // node that just touches carries no pressure but gives the Newton
+      // matrix its contact stiffness, so that the first iteration of a step
+      // does not push it deep into the master.
+      if (law.multiplier - law.normal_penalty * value(gap) < 0)
         return;
 
-      const Number pressure = -law.normal_penalty * gap;
+      const Number pressure = law.multiplier - law.normal_penalty * gap;
       result.pressure       = value(pressure);
       result.status         = ContactStatus::stick;
       force                 = scale(-pressure, normal);

@@ -59,10 +59,11 @@ namespace tribos
 
     for (const auto &description : descriptions)
       {
-        AssertThrow(description.method == "penalty",
+        AssertThrow(description.method != "lagrange multiplier",
                     ExcMessage("Contact method <" + description.method +
                                "> is not implemented yet; use "
-                               "Contact/Method = penalty."));
+                               "Contact/Method = penalty or augmented "
+                               "lagrangian."));
         Pair pair;
         pair.description = description;
         pair.slave       = surface(description.slave_boundary);
@@ -93,6 +94,8 @@ namespace tribos
           pair.owned[k] =
             locally_owned_dofs.is_element(pair.slave->nodes()[k].dofs[0]);
         pair.history.resize(n_slaves);
+        pair.multipliers.assign(n_slaves, 0.);
+        pair.committed_multipliers.assign(n_slaves, 0.);
         pair.pairing.resize(n_slaves);
         pair.results.resize(n_slaves);
         for (const auto &node : pair.slave->nodes())
@@ -318,6 +321,8 @@ namespace tribos
                 continue;
               }
             const SlaveHistory &history = pair.history[k];
+            ContactLaw          law     = pair.law;
+            law.multiplier              = pair.multipliers[k];
             const double area = pair.slave->nodes()[k].area * pair.area_factor;
             const Vec3<double> &previous = history.active ? history.traction : zero;
             const Vec3<double> &x        = pair.slave_positions[k];
@@ -340,7 +345,7 @@ namespace tribos
                   pair.old_slave_positions[k],
                   xm_old,
                   previous,
-                  pair.law,
+                  law,
                   area,
                   consistent,
                   R,
@@ -355,7 +360,7 @@ namespace tribos
                                                              old_shift,
                                                              pair.old_slave_positions[k],
                                                              previous,
-                                                             pair.law,
+                                                             law,
                                                              area,
                                                              consistent,
                                                              R,
@@ -411,10 +416,58 @@ namespace tribos
             else
               history.traction = {{0, 0, 0}};
           }
-        pair.old_slave_positions  = pair.slave_positions;
-        pair.old_master_positions = pair.master_positions;
+        pair.old_slave_positions   = pair.slave_positions;
+        pair.old_master_positions  = pair.master_positions;
+        pair.committed_multipliers = pair.multipliers;
       }
     committed_time = time;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::restore()
+  {
+    for (auto &pair : pairs)
+      pair.multipliers = pair.committed_multipliers;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactHandler<dim>::augmented() const
+  {
+    for (const auto &pair : pairs)
+      if (pair.description.method == "augmented lagrangian")
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactHandler<dim>::augment(const double tolerance)
+  {
+    double violation = 0;
+    for (const auto &pair : pairs)
+      if (pair.description.method == "augmented lagrangian")
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          if (pair.owned[k] && pair.results[k].status != ContactStatus::open)
+            {
+              const double area = pair.slave->nodes()[k].area;
+              const double size = (dim == 2 ? area : std::sqrt(area));
+              violation = std::max(violation, -pair.results[k].gap / size);
+            }
+    violation = Utilities::MPI::max(violation, mpi_communicator);
+    if (violation > tolerance)
+      for (auto &pair : pairs)
+        if (pair.description.method == "augmented lagrangian")
+          for (unsigned int k = 0; k < pair.owned.size(); ++k)
+            pair.multipliers[k] = pair.results[k].pressure;
+    return violation;
   }
 
 

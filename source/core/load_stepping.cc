@@ -49,8 +49,31 @@ namespace tribos
             Timer        increment_clock;
             try
               {
-                const IncrementReport report =
+                IncrementReport report =
                   solve_increment(next, step, n_increments_total + 1);
+
+                // Augmented Lagrangian: Uzawa updates of the multipliers,
+                // each followed by a new solve of the same increment.
+                if (contact && contact->augmented())
+                  for (;;)
+                    {
+                      const auto &cp = parameters.contact;
+                      const double violation =
+                        contact->augment(cp.augmentation_tolerance);
+                      if (violation <= cp.augmentation_tolerance)
+                        break;
+                      if (report.n_augmentations >= cp.max_augmentations)
+                        throw NonConvergence(
+                          "penetration " + to_scientific(violation) +
+                          " of the element size after " +
+                          std::to_string(report.n_augmentations) +
+                          " augmentations (Contact/Maximum augmentations)");
+                      const IncrementReport again =
+                        solve_increment(next, step, n_increments_total + 1);
+                      report.n_iterations += again.n_iterations;
+                      report.residual = again.residual;
+                      ++report.n_augmentations;
+                    }
                 commit_history();
                 converged = solution;
                 time      = next;
@@ -75,6 +98,8 @@ namespace tribos
                 solution         = converged;
                 ghosted_solution = solution;
                 history_new      = history_old;
+                if (contact)
+                  contact->restore();
                 ++n_cutbacks;
                 ++n_total_cutbacks;
                 ++cutbacks_in_row;

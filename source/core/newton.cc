@@ -183,10 +183,14 @@ namespace tribos
                             p.absolute_residual_tolerance;
             const bool update_converged =
               update_norm <= p.increment_tolerance * change || change == 0;
-            if (residual_converged && update_converged)
+            // A correction at round-off level of the solution means the
+            // residual cannot get smaller in floating point: accept it
+            // (e.g. a stress-free rigid motion, whose residual is noise).
+            const bool stagnated = update_norm <= 1e-12 * change;
+            if ((residual_converged && update_converged) || stagnated)
               {
                 n_total_newton_iterations += iteration;
-                return {iteration, residual};
+                return {iteration, residual, 0};
               }
             if (iteration >= p.max_iterations)
               throw NonConvergence(

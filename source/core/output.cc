@@ -79,8 +79,11 @@ namespace tribos
         columns.push_back("error_H1");
       }
     if (contact)
-      for (const auto &name : contact->column_names())
-        columns.push_back(name);
+      {
+        for (const auto &name : contact->column_names())
+          columns.push_back(name);
+        columns.push_back("augmentations");
+      }
     history_csv = std::make_unique<CsvWriter>(dir + "/history.csv", columns, root);
     convergence_csv =
       std::make_unique<CsvWriter>(dir + "/convergence.csv",
@@ -176,8 +179,11 @@ namespace tribos
         row.push_back(h1);
       }
     if (contact)
-      for (const double value : contact->columns())
-        row.push_back(value);
+      {
+        for (const double value : contact->columns())
+          row.push_back(value);
+        row.push_back(report.n_augmentations);
+      }
     history_csv->add_row(row);
   }
 

@@ -60,7 +60,12 @@ namespace tribos
                         "penalty",
                         dealii::Patterns::Selection(
                           "penalty|lagrange multiplier|augmented lagrangian"),
-                        "Default enforcement of every pair.");
+                        "Default enforcement of every pair. penalty: t_N = "
+                        "eps_N <-g_N>; augmented lagrangian: t_N = <lambda - "
+                        "eps_N g_N> with the multiplier lambda of each slave "
+                        "node updated (Uzawa) until the penetration is "
+                        "below Augmentation tolerance; lagrange multiplier: "
+                        "not implemented yet.");
       prm.declare_entry("Penalty factor",
                         "100*E",
                         dealii::Patterns::Anything(),
@@ -95,6 +100,20 @@ namespace tribos
                         dealii::Patterns::Double(0),
                         "Slave nodes farther than this from every master "
                         "face are not projected (open). 0: no limit.");
+      prm.declare_entry("Augmentation tolerance",
+                        "1e-4",
+                        dealii::Patterns::Double(0),
+                        "augmented lagrangian: Uzawa updates of the "
+                        "multipliers repeat an increment until every closed "
+                        "slave node penetrates less than this fraction of "
+                        "its local element size (sqrt or value of the "
+                        "tributary area).");
+      prm.declare_entry("Maximum augmentations",
+                        "20",
+                        dealii::Patterns::Integer(0),
+                        "augmented lagrangian: multiplier updates per "
+                        "increment at most; more are a non-convergence "
+                        "(cutback).");
       prm.declare_entry(
         "Rigid surfaces",
         "",
@@ -117,6 +136,8 @@ namespace tribos
       tangent         = prm.get("Tangent");
       passes          = prm.get("Passes");
       search_distance = prm.get_double("Search distance");
+      augmentation_tolerance = prm.get_double("Augmentation tolerance");
+      max_augmentations      = prm.get_integer("Maximum augmentations");
       if (search_distance == 0)
         search_distance = std::numeric_limits<double>::infinity();
 

@@ -111,6 +111,24 @@ namespace tribos
     void
     commit();
 
+    /** Return to the last committed state (after a failed increment). */
+    void
+    restore();
+
+    /** Whether any pair is enforced by the augmented Lagrangian. */
+    bool
+    augmented() const;
+
+    /**
+     * Uzawa step of the augmented Lagrangian pairs at the last evaluated
+     * (converged) state: returns the largest penetration of a closed slave
+     * node relative to its element size; if that exceeds @p tolerance the
+     * multipliers are updated to lambda <- t_N (the increment must then be
+     * solved again), otherwise they are left as they are.
+     */
+    double
+    augment(const double tolerance);
+
     ContactStatistics
     statistics() const;
 
@@ -156,6 +174,7 @@ namespace tribos
       ContactSearch<dim>                    search;
 
       std::vector<bool>               owned;
+      std::vector<double>             multipliers, committed_multipliers;
       std::vector<SlaveHistory>       history;
       std::vector<Pairing>            pairing;
       std::vector<ContactPointResult> results;

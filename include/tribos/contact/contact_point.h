@@ -14,6 +14,11 @@ namespace tribos
     double tangential_penalty = 0;
     /** Coulomb coefficient mu (17); 0 means frictionless. */
     double friction_coefficient = 0;
+    /**
+     * Augmented Lagrangian multiplier lambda of the node (a pressure):
+     * t_N = <lambda - eps_N g_N>. Zero for pure penalty.
+     */
+    double multiplier = 0;
   };
 
   /** Contact status of a slave node, as written to CSTATUS. */

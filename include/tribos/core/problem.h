@@ -33,8 +33,10 @@ namespace tribos
   /** Counters of one converged increment, reported and written to CSV. */
   struct IncrementReport
   {
-    unsigned int n_iterations = 0;
-    double       residual     = 0;
+    unsigned int n_iterations    = 0;
+    double       residual        = 0;
+    /** Uzawa multiplier updates (augmented Lagrangian). */
+    unsigned int n_augmentations = 0;
   };
 
   /**

@@ -77,6 +77,8 @@ namespace tribos
       std::string               tangent;
       std::string               passes;
       double                    search_distance;
+      double                    augmentation_tolerance;
+      unsigned int              max_augmentations;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
