@@ -51,13 +51,13 @@ namespace
     {
       tribos::Problem<dim> problem(parameters, MPI_COMM_WORLD);
       try
-        {
-          problem.run();
-        }
+      {
+        problem.run();
+      }
       catch (...)
-        {
-          failure = std::current_exception();
-        }
+      {
+        failure = std::current_exception();
+      }
     }
     if (failure)
       std::rethrow_exception(failure);
@@ -74,104 +74,101 @@ main(int argc, char **argv)
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   try
+  {
+    std::string              filename;
+    std::vector<std::string> overrides;
+    std::string              print_format;
+    bool                     print = false;
+
+    for (int i = 1; i < argc; ++i)
     {
-      std::string              filename;
-      std::vector<std::string> overrides;
-      std::string              print_format;
-      bool                     print = false;
-
-      for (int i = 1; i < argc; ++i)
-        {
-          const std::string argument = argv[i];
-          if (argument == "--help" || argument == "-h")
-            {
-              if (root)
-                print_help();
-              return 0;
-            }
-          else if (argument == "--set")
-            {
-              AssertThrow(i + 1 < argc,
-                          ExcMessage("--set needs an argument "
-                                     "\"Section/Entry=value\"."));
-              overrides.emplace_back(argv[++i]);
-            }
-          else if (argument.rfind("--set=", 0) == 0)
-            overrides.push_back(argument.substr(6));
-          else if (argument == "--print-parameters")
-            {
-              print        = true;
-              print_format = "prm";
-              if (i + 1 < argc && argv[i + 1][0] != '-')
-                print_format = argv[++i];
-              AssertThrow(print_format == "prm" || print_format == "json",
-                          ExcMessage("--print-parameters: unknown format <" +
-                                     print_format +
-                                     ">. Allowed: prm, json."));
-            }
-          else if (!argument.empty() && argument[0] == '-')
-            {
-              AssertThrow(false,
-                          ExcMessage("Unknown option <" + argument +
-                                     ">. See tribos --help."));
-            }
-          else
-            {
-              AssertThrow(filename.empty(),
-                          ExcMessage("More than one parameter file given (<" +
-                                     filename + "> and <" + argument +
-                                     ">)."));
-              filename = argument;
-            }
-        }
-
-      ParameterHandler prm;
-      tribos::Parameters::AllParameters::declare_parameters(prm);
-
-      if (print)
-        {
-          if (root && print_format == "json")
-            prm.print_parameters(std::cout, ParameterHandler::JSON);
-          else if (root)
-            tribos::Parameters::print_documented_parameters(prm, std::cout);
-          return 0;
-        }
-
-      AssertThrow(!filename.empty(),
-                  ExcMessage("No parameter file given. Usage: tribos "
-                             "FILE.prm [--set \"Section/Entry=value\"]... "
-                             "(see tribos --help)."));
-
-      const unsigned int dim =
-        tribos::Parameters::read_dimension(filename, overrides);
-      tribos::Parameters::read_input(prm, filename, overrides);
-      if (dim == 2)
-        run<2>(prm);
+      const std::string argument = argv[i];
+      if (argument == "--help" || argument == "-h")
+      {
+        if (root)
+          print_help();
+        return 0;
+      }
+      else if (argument == "--set")
+      {
+        AssertThrow(i + 1 < argc,
+                    ExcMessage("--set needs an argument "
+                               "\"Section/Entry=value\"."));
+        overrides.emplace_back(argv[++i]);
+      }
+      else if (argument.rfind("--set=", 0) == 0)
+        overrides.push_back(argument.substr(6));
+      else if (argument == "--print-parameters")
+      {
+        print        = true;
+        print_format = "prm";
+        if (i + 1 < argc && argv[i + 1][0] != '-')
+          print_format = argv[++i];
+        AssertThrow(print_format == "prm" || print_format == "json",
+                    ExcMessage("--print-parameters: unknown format <" +
+                               print_format + ">. Allowed: prm, json."));
+      }
+      else if (!argument.empty() && argument[0] == '-')
+      {
+        AssertThrow(false,
+                    ExcMessage("Unknown option <" + argument +
+                               ">. See tribos --help."));
+      }
       else
-        run<3>(prm);
+      {
+        AssertThrow(filename.empty(),
+                    ExcMessage("More than one parameter file given (<" +
+                               filename + "> and <" + argument + ">)."));
+        filename = argument;
+      }
     }
+
+    ParameterHandler prm;
+    tribos::Parameters::AllParameters::declare_parameters(prm);
+
+    if (print)
+    {
+      if (root && print_format == "json")
+        prm.print_parameters(std::cout, ParameterHandler::JSON);
+      else if (root)
+        tribos::Parameters::print_documented_parameters(prm, std::cout);
+      return 0;
+    }
+
+    AssertThrow(!filename.empty(),
+                ExcMessage("No parameter file given. Usage: tribos "
+                           "FILE.prm [--set \"Section/Entry=value\"]... "
+                           "(see tribos --help)."));
+
+    const unsigned int dim =
+      tribos::Parameters::read_dimension(filename, overrides);
+    tribos::Parameters::read_input(prm, filename, overrides);
+    if (dim == 2)
+      run<2>(prm);
+    else
+      run<3>(prm);
+  }
   catch (const tribos::NonConvergence &failure)
-    {
-      if (root)
-        std::cerr << "\ntribos: NO CONVERGENCE: " << failure.what()
-                  << std::endl;
-      return 2;
-    }
+  {
+    if (root)
+      std::cerr << "\ntribos: NO CONVERGENCE: " << failure.what() << std::endl;
+    return 2;
+  }
   catch (const dealii::ExceptionBase &error)
+  {
+    if (root)
     {
-      if (root)
-        {
-          std::cerr << "\ntribos: ERROR: ";
-          error.print_info(std::cerr);
-          std::cerr << std::endl;
-        }
-      return 1;
+      std::cerr << "\ntribos: ERROR: ";
+      error.print_info(std::cerr);
+      std::cerr << std::endl;
     }
+    return 1;
+  }
   catch (const std::exception &error)
-    {
-      if (root)
-        std::cerr << "\ntribos: ERROR: " << error.what() << std::endl;
-      return 1;
-    }
+  {
+    if (root)
+      std::cerr << "\ntribos: ERROR: " << error.what() << std::endl;
+    return 1;
+  }
   return 0;
 }

@@ -31,180 +31,234 @@ template <int dim>
 void
 check_segment(std::mt19937 &random, Tally &tally, bool &ok)
 {
-  using Element = NodeToSegment<dim>;
-  constexpr unsigned int n = Element::n_dofs;
+  using Element                            = NodeToSegment<dim>;
+  constexpr unsigned int                 n = Element::n_dofs;
   std::uniform_real_distribution<double> u(-1, 1);
 
   for (unsigned int sample = 0; sample < 300; ++sample)
+  {
+    // A warped face around the unit square/segment, normal about +y/+z.
+    Vec3<double> master[4];
+    for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
     {
-      // A warped face around the unit square/segment, normal about +y/+z.
-      Vec3<double> master[4];
-      for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
-        {
-          master[k] = {{0, 0, 0}};
-          master[k][0] = (k % 2) + 0.1 * u(random);
-          if (dim == 3)
-            master[k][1] = (k / 2) + 0.1 * u(random);
-          master[k][dim - 1] = 0.15 * u(random);
-        }
-      // Slave mostly above the face's interior, sometimes beyond an edge.
-      const bool   beyond = (sample % 4 == 0);
-      Vec3<double> slave{{0.5 + 0.4 * u(random) + (beyond ? 0.7 : 0.),
-                          0, 0}};
+      master[k]    = {{0, 0, 0}};
+      master[k][0] = (k % 2) + 0.1 * u(random);
       if (dim == 3)
-        slave[1] = 0.5 + 0.4 * u(random);
-      slave[dim - 1] = -0.05 + 0.1 * u(random);
+        master[k][1] = (k / 2) + 0.1 * u(random);
+      master[k][dim - 1] = 0.15 * u(random);
+    }
+    // Slave mostly above the face's interior, sometimes beyond an edge.
+    const bool   beyond = (sample % 4 == 0);
+    Vec3<double> slave{{0.5 + 0.4 * u(random) + (beyond ? 0.7 : 0.), 0, 0}};
+    if (dim == 3)
+      slave[1] = 0.5 + 0.4 * u(random);
+    slave[dim - 1] = -0.05 + 0.1 * u(random);
 
-      ContactLaw law;
-      law.normal_penalty       = 1e3;
-      law.tangential_penalty   = 5e2 * (1 + 0.5 * u(random));
-      law.friction_coefficient = 0.3;
-      // Positions at the last converged step: a tangential history.
-      Vec3<double> slave_old = slave, master_old[4];
+    ContactLaw law;
+    law.normal_penalty       = 1e3;
+    law.tangential_penalty   = 5e2 * (1 + 0.5 * u(random));
+    law.friction_coefficient = 0.3;
+    // Positions at the last converged step: a tangential history.
+    Vec3<double> slave_old = slave, master_old[4];
+    for (unsigned int d = 0; d < dim; ++d)
+      slave_old[d] += 0.03 * u(random);
+    for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
+    {
+      master_old[k] = master[k];
       for (unsigned int d = 0; d < dim; ++d)
-        slave_old[d] += 0.03 * u(random);
+        master_old[k][d] += 0.01 * u(random);
+    }
+    Vec3<double> traction{{3 * u(random), 3 * u(random), 0}};
+    if (dim == 2)
+      traction[1] = 0;
+
+    const auto residual = [&](const std::vector<double> &x, double *R)
+    {
+      Vec3<double> s = slave, m[4];
       for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
-        {
-          master_old[k] = master[k];
-          for (unsigned int d = 0; d < dim; ++d)
-            master_old[k][d] += 0.01 * u(random);
-        }
-      Vec3<double> traction{{3 * u(random), 3 * u(random), 0}};
-      if (dim == 2)
-        traction[1] = 0;
-
-      const auto residual = [&](const std::vector<double> &x, double *R) {
-        Vec3<double> s = slave, m[4];
+        m[k] = master[k];
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        s[d] += x[d];
         for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
-          m[k] = master[k];
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            s[d] += x[d];
-            for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
-              m[k][d] += x[dim * (1 + k) + d];
-          }
-        const Projection p = project<dim>(s, m);
-        return Element::evaluate(
-          s, m, p, slave_old, master_old, traction, law, 0.7, true, R, nullptr);
-      };
+          m[k][d] += x[dim * (1 + k) + d];
+      }
+      const Projection p = project<dim>(s, m);
+      return Element::evaluate(s,
+                               m,
+                               p,
+                               slave_old,
+                               master_old,
+                               traction,
+                               law,
+                               0.7,
+                               true,
+                               R,
+                               nullptr);
+    };
 
-      std::vector<double> zero(n, 0.), R(n), K(n * n), Kp(n * n);
-      const Projection    p = project<dim>(slave, master);
-      const auto          result = Element::evaluate(
-        slave, master, p, slave_old, master_old, traction, law, 0.7, true, R.data(), K.data());
-      Element::evaluate(
-        slave, master, p, slave_old, master_old, traction, law, 0.7, false, R.data(), Kp.data());
+    std::vector<double> zero(n, 0.), R(n), K(n * n), Kp(n * n);
+    const Projection    p      = project<dim>(slave, master);
+    const auto          result = Element::evaluate(slave,
+                                          master,
+                                          p,
+                                          slave_old,
+                                          master_old,
+                                          traction,
+                                          law,
+                                          0.7,
+                                          true,
+                                          R.data(),
+                                          K.data());
+    Element::evaluate(slave,
+                      master,
+                      p,
+                      slave_old,
+                      master_old,
+                      traction,
+                      law,
+                      0.7,
+                      false,
+                      R.data(),
+                      Kp.data());
 
-      const double h = 1e-7;
-      double       error = 0, size = 0, paper = 0;
-      bool         kink  = false;
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          std::vector<double> plus = zero, minus = zero, Rp(n), Rm(n);
-          plus[j] += h;
-          minus[j] -= h;
-          const auto rp = residual(plus, Rp.data());
-          const auto rm = residual(minus, Rm.data());
-          kink = kink || rp.status != result.status ||
-                 rm.status != result.status;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const double fd = (Rp[i] - Rm[i]) / (2 * h);
-              error += std::pow(K[i * n + j] - fd, 2);
-              paper += std::pow(Kp[i * n + j] - fd, 2);
-              size += std::pow(K[i * n + j], 2);
-            }
-        }
-      if (kink)
-        continue; // a status change within +-h: no derivative to compare
-      ++tally.n[int(result.status)];
-      if (!p.inside() && result.status != ContactStatus::open)
-        ++tally.n_clamped;
-      if (size > 0)
-        {
-          const double relative = std::sqrt(error / size);
-          tally.worst           = std::max(tally.worst, relative);
-          tally.paper_error = std::max(tally.paper_error, std::sqrt(paper / size));
-          if (relative > 1e-6)
-            ok = false;
-        }
-      else if (result.status != ContactStatus::open)
+    const double h     = 1e-7;
+    double       error = 0, size = 0, paper = 0;
+    bool         kink = false;
+    for (unsigned int j = 0; j < n; ++j)
+    {
+      std::vector<double> plus = zero, minus = zero, Rp(n), Rm(n);
+      plus[j] += h;
+      minus[j] -= h;
+      const auto rp = residual(plus, Rp.data());
+      const auto rm = residual(minus, Rm.data());
+      kink = kink || rp.status != result.status || rm.status != result.status;
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const double fd = (Rp[i] - Rm[i]) / (2 * h);
+        error += std::pow(K[i * n + j] - fd, 2);
+        paper += std::pow(Kp[i * n + j] - fd, 2);
+        size += std::pow(K[i * n + j], 2);
+      }
+    }
+    if (kink)
+      continue; // a status change within +-h: no derivative to compare
+    ++tally.n[int(result.status)];
+    if (!p.inside() && result.status != ContactStatus::open)
+      ++tally.n_clamped;
+    if (size > 0)
+    {
+      const double relative = std::sqrt(error / size);
+      tally.worst           = std::max(tally.worst, relative);
+      tally.paper_error = std::max(tally.paper_error, std::sqrt(paper / size));
+      if (relative > 1e-6)
         ok = false;
     }
+    else if (result.status != ContactStatus::open)
+      ok = false;
+  }
 }
 
 
 
 template <int dim>
 void
-check_rigid(const std::string &type, std::mt19937 &random, Tally &tally,
-            bool &ok)
+check_rigid(const std::string &type,
+            std::mt19937      &random,
+            Tally             &tally,
+            bool              &ok)
 {
   std::uniform_real_distribution<double> u(-1, 1);
-  Parameters::RigidSurface description;
-  description.name   = type;
-  description.type   = type;
-  description.point  = {0.1, 0.2, dim == 3 ? 0.3 : 0.};
-  description.radius = 1;
-  description.direction =
-    type == "plane" ? std::vector<double>{0.2, 1, dim == 3 ? 0.3 : 0.} :
-                      std::vector<double>{0.3, 0.1, 1};
-  description.motion = std::vector<std::string>(dim, "0.1*t");
+  Parameters::RigidSurface               description;
+  description.name      = type;
+  description.type      = type;
+  description.point     = {0.1, 0.2, dim == 3 ? 0.3 : 0.};
+  description.radius    = 1;
+  description.direction = type == "plane" ?
+                            std::vector<double>{0.2, 1, dim == 3 ? 0.3 : 0.} :
+                            std::vector<double>{0.3, 0.1, 1};
+  description.motion    = std::vector<std::string>(dim, "0.1*t");
   const RigidSurface<dim> surface(description);
   const Vec3<double>      shift     = surface.translation(0.5);
   const Vec3<double>      shift_old = surface.translation(0.497);
 
   for (unsigned int sample = 0; sample < 200; ++sample)
-    {
-      Vec3<double> slave{{u(random), u(random), dim == 3 ? u(random) : 0.}};
-      // Put the slave slightly inside the surface.
-      Vec3<double> xbar, normal;
-      double       gap;
-      surface.closest_point(slave, shift, xbar, normal, gap);
-      slave = xbar + scale(-0.02 * (1 + u(random)), normal);
-      const Vec3<double> slave_old =
-        slave + Vec3<double>{{3e-4 * u(random), 3e-4 * u(random),
-                              dim == 3 ? 3e-4 * u(random) : 0.}};
-      Vec3<double> traction{{u(random), u(random), dim == 3 ? u(random) : 0.}};
-      ContactLaw   law;
-      law.normal_penalty       = 1e3;
-      law.tangential_penalty   = 1e3;
-      law.friction_coefficient = 0.2;
+  {
+    Vec3<double> slave{{u(random), u(random), dim == 3 ? u(random) : 0.}};
+    // Put the slave slightly inside the surface.
+    Vec3<double> xbar, normal;
+    double       gap;
+    surface.closest_point(slave, shift, xbar, normal, gap);
+    slave = xbar + scale(-0.02 * (1 + u(random)), normal);
+    const Vec3<double> slave_old =
+      slave +
+      Vec3<double>{
+        {3e-4 * u(random), 3e-4 * u(random), dim == 3 ? 3e-4 * u(random) : 0.}};
+    Vec3<double> traction{{u(random), u(random), dim == 3 ? u(random) : 0.}};
+    ContactLaw   law;
+    law.normal_penalty       = 1e3;
+    law.tangential_penalty   = 1e3;
+    law.friction_coefficient = 0.2;
 
-      double     R[dim], K[dim * dim], Rp[dim], Rm[dim];
-      const auto result = NodeToRigid<dim>::evaluate(
-        slave, surface, shift, shift_old, slave_old, traction, law, 1.3, true, R, K);
-      const double h = 1e-7;
-      double       error = 0, size = 0;
-      bool         kink  = false;
-      for (unsigned int j = 0; j < dim; ++j)
-        {
-          Vec3<double> plus = slave, minus = slave;
-          plus[j] += h;
-          minus[j] -= h;
-          kink = kink || NodeToRigid<dim>::evaluate(plus, surface, shift, shift_old, slave_old,
-                                                     traction, law, 1.3, true, Rp,
-                                                     nullptr)
-                             .status != result.status;
-          kink = kink || NodeToRigid<dim>::evaluate(minus, surface, shift, shift_old, slave_old,
-                                                     traction, law, 1.3, true, Rm,
-                                                     nullptr)
-                             .status != result.status;
-          for (unsigned int i = 0; i < dim; ++i)
-            {
-              const double fd = (Rp[i] - Rm[i]) / (2 * h);
-              error += std::pow(K[i * dim + j] - fd, 2);
-              size += std::pow(K[i * dim + j], 2);
-            }
-        }
-      if (kink)
-        continue;
-      ++tally.n[int(result.status)];
-      const double relative = size > 0 ? std::sqrt(error / size) : 1.;
-      tally.worst           = std::max(tally.worst, relative);
-      if (relative > 1e-6)
-        ok = false;
+    double       R[dim], K[dim * dim], Rp[dim], Rm[dim];
+    const auto   result = NodeToRigid<dim>::evaluate(slave,
+                                                   surface,
+                                                   shift,
+                                                   shift_old,
+                                                   slave_old,
+                                                   traction,
+                                                   law,
+                                                   1.3,
+                                                   true,
+                                                   R,
+                                                   K);
+    const double h      = 1e-7;
+    double       error = 0, size = 0;
+    bool         kink = false;
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      Vec3<double> plus = slave, minus = slave;
+      plus[j] += h;
+      minus[j] -= h;
+      kink = kink || NodeToRigid<dim>::evaluate(plus,
+                                                surface,
+                                                shift,
+                                                shift_old,
+                                                slave_old,
+                                                traction,
+                                                law,
+                                                1.3,
+                                                true,
+                                                Rp,
+                                                nullptr)
+                         .status != result.status;
+      kink = kink || NodeToRigid<dim>::evaluate(minus,
+                                                surface,
+                                                shift,
+                                                shift_old,
+                                                slave_old,
+                                                traction,
+                                                law,
+                                                1.3,
+                                                true,
+                                                Rm,
+                                                nullptr)
+                         .status != result.status;
+      for (unsigned int i = 0; i < dim; ++i)
+      {
+        const double fd = (Rp[i] - Rm[i]) / (2 * h);
+        error += std::pow(K[i * dim + j] - fd, 2);
+        size += std::pow(K[i * dim + j], 2);
+      }
     }
+    if (kink)
+      continue;
+    ++tally.n[int(result.status)];
+    const double relative = size > 0 ? std::sqrt(error / size) : 1.;
+    tally.worst           = std::max(tally.worst, relative);
+    if (relative > 1e-6)
+      ok = false;
+  }
 }
 
 
@@ -214,7 +268,8 @@ main()
 {
   std::mt19937 random(7);
   bool         all_ok = true;
-  const auto   report = [&](const std::string &name, const Tally &t, bool ok) {
+  const auto   report = [&](const std::string &name, const Tally &t, bool ok)
+  {
     std::cout << name << ": open " << t.n[0] << ", stick " << t.n[1]
               << ", slip " << t.n[2] << ", clamped " << t.n_clamped
               << "; max relative error " << t.worst;
@@ -239,13 +294,13 @@ main()
     report("3D node-to-face", t, ok);
   }
   for (const std::string type : {"plane", "sphere", "cylinder"})
-    {
-      Tally t2, t3;
-      bool  ok2 = true, ok3 = true;
-      check_rigid<2>(type, random, t2, ok2);
-      check_rigid<3>(type, random, t3, ok3);
-      report("2D rigid " + type, t2, ok2);
-      report("3D rigid " + type, t3, ok3);
-    }
+  {
+    Tally t2, t3;
+    bool  ok2 = true, ok3 = true;
+    check_rigid<2>(type, random, t2, ok2);
+    check_rigid<3>(type, random, t3, ok3);
+    report("2D rigid " + type, t2, ok2);
+    report("3D rigid " + type, t3, ok3);
+  }
   return all_ok ? 0 : 1;
 }

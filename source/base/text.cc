@@ -31,20 +31,20 @@ namespace tribos
       int         depth = 0;
       std::string current;
       for (const char c : text)
-        {
-          if (c == '(')
-            ++depth;
-          else if (c == ')')
-            --depth;
+      {
+        if (c == '(')
+          ++depth;
+        else if (c == ')')
+          --depth;
 
-          if (c == separator && depth == 0)
-            {
-              pieces.push_back(trim(current));
-              current.clear();
-            }
-          else
-            current += c;
+        if (c == separator && depth == 0)
+        {
+          pieces.push_back(trim(current));
+          current.clear();
         }
+        else
+          current += c;
+      }
       pieces.push_back(trim(current));
       return pieces;
     }
@@ -56,17 +56,17 @@ namespace tribos
     {
       std::vector<double> values;
       for (const auto &piece : split_top_level(text, ','))
-        {
-          char        *end   = nullptr;
-          const double value = std::strtod(piece.c_str(), &end);
-          AssertThrow(!piece.empty() && end != nullptr && *end == '\0',
-                      dealii::ExcMessage("Parameter <" + entry +
-                                         ">: cannot read <" + piece +
-                                         "> as a number in <" + text +
-                                         ">. Expected a comma-separated "
-                                         "list of numbers."));
-          values.push_back(value);
-        }
+      {
+        char        *end   = nullptr;
+        const double value = std::strtod(piece.c_str(), &end);
+        AssertThrow(!piece.empty() && end != nullptr && *end == '\0',
+                    dealii::ExcMessage("Parameter <" + entry +
+                                       ">: cannot read <" + piece +
+                                       "> as a number in <" + text +
+                                       ">. Expected a comma-separated "
+                                       "list of numbers."));
+        values.push_back(value);
+      }
       return values;
     }
 
@@ -77,16 +77,15 @@ namespace tribos
     {
       std::vector<unsigned int> values;
       for (const auto &piece : split_top_level(text, ','))
-        {
-          char      *end   = nullptr;
-          const long value = std::strtol(piece.c_str(), &end, 10);
-          AssertThrow(!piece.empty() && *end == '\0' && value >= 0,
-                      dealii::ExcMessage("Parameter <" + entry +
-                                         ">: cannot read <" + piece +
-                                         "> as a non-negative integer in <" +
-                                         text + ">."));
-          values.push_back(static_cast<unsigned int>(value));
-        }
+      {
+        char      *end   = nullptr;
+        const long value = std::strtol(piece.c_str(), &end, 10);
+        AssertThrow(!piece.empty() && *end == '\0' && value >= 0,
+                    dealii::ExcMessage(
+                      "Parameter <" + entry + ">: cannot read <" + piece +
+                      "> as a non-negative integer in <" + text + ">."));
+        values.push_back(static_cast<unsigned int>(value));
+      }
       return values;
     }
   } // namespace Text

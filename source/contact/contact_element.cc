@@ -22,13 +22,13 @@ namespace tribos
      */
     template <typename Number>
     void
-    interface_law(const Number             &gap,
-                  const Vec3<Number>       &normal,
-                  const Vec3<Number>       &slip_increment,
-                  const Vec3<double>       &previous_traction,
-                  const ContactLaw         &law,
-                  Vec3<Number>             &force,
-                  ContactPointResult       &result)
+    interface_law(const Number       &gap,
+                  const Vec3<Number> &normal,
+                  const Vec3<Number> &slip_increment,
+                  const Vec3<double> &previous_traction,
+                  const ContactLaw   &law,
+                  Vec3<Number>       &force,
+                  ContactPointResult &result)
     {
       result.gap = value(gap);
       for (unsigned int d = 0; d < 3; ++d)
@@ -48,30 +48,30 @@ namespace tribos
       force                 = scale(-pressure, normal);
 
       if (law.friction_coefficient > 0)
+      {
+        // Stick trial (16): the committed traction, kept tangent to the
+        // current surface, plus the elastic part of the slip increment.
+        const Vec3<Number> old_traction = to<Number>(previous_traction);
+        const Vec3<Number> trial =
+          (old_traction - scale(dot(old_traction, normal), normal)) +
+          scale(law.tangential_penalty, slip_increment);
+        const Number magnitude = norm(trial);
+        const Number limit     = law.friction_coefficient * pressure;
+        Vec3<Number> traction  = trial;
+        // Slip indicator (17) and return mapping (18)-(19). At equality
+        // the node sticks: a node that slipped in the last step starts
+        // the next one on the stick branch (paper, Table 1).
+        if (value(magnitude) > value(limit))
         {
-          // Stick trial (16): the committed traction, kept tangent to the
-          // current surface, plus the elastic part of the slip increment.
-          const Vec3<Number> old_traction = to<Number>(previous_traction);
-          const Vec3<Number> trial =
-            (old_traction - scale(dot(old_traction, normal), normal)) +
-            scale(law.tangential_penalty, slip_increment);
-          const Number magnitude = norm(trial);
-          const Number limit     = law.friction_coefficient * pressure;
-          Vec3<Number> traction  = trial;
-          // Slip indicator (17) and return mapping (18)-(19). At equality
-          // the node sticks: a node that slipped in the last step starts
-          // the next one on the stick branch (paper, Table 1).
-          if (value(magnitude) > value(limit))
-            {
-              traction              = scale(limit / magnitude, trial);
-              result.status         = ContactStatus::slip;
-              result.slip_increment = value((magnitude - limit) /
-                                            law.tangential_penalty);
-            }
-          force = force + traction;
-          for (unsigned int d = 0; d < 3; ++d)
-            result.traction[d] = value(traction[d]);
+          traction      = scale(limit / magnitude, trial);
+          result.status = ContactStatus::slip;
+          result.slip_increment =
+            value((magnitude - limit) / law.tangential_penalty);
         }
+        force = force + traction;
+        for (unsigned int d = 0; d < 3; ++d)
+          result.traction[d] = value(traction[d]);
+      }
     }
 
 
@@ -128,33 +128,33 @@ namespace tribos
       AD             residual[2];
       double         J[2][2] = {{0, 0}, {0, 0}};
       for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-        {
-          residual[alpha] =
-            consistent ? dot(r, a_ad[alpha]) : dot(r, to<AD>(a0[alpha]));
-          for (unsigned int beta = 0; beta < Face::n_coords; ++beta)
-            J[alpha][beta] = dot(a0[alpha], a0[beta]);
-        }
+      {
+        residual[alpha] =
+          consistent ? dot(r, a_ad[alpha]) : dot(r, to<AD>(a0[alpha]));
+        for (unsigned int beta = 0; beta < Face::n_coords; ++beta)
+          J[alpha][beta] = dot(a0[alpha], a0[beta]);
+      }
       if constexpr (dim == 3)
         if (consistent)
-          {
-            Vec3<double> a12{{0, 0, 0}};
-            for (unsigned int k = 0; k < 4; ++k)
-              a12 = a12 + scale(Face::mixed_derivative(k), master[k]);
-            const double curvature = dot(slave - xbar0, a12);
-            J[0][1] -= curvature;
-            J[1][0] -= curvature;
-          }
-      if (projection.inside())
         {
-          if constexpr (dim == 2)
-            xi[0] += residual[0] / J[0][0];
-          else
-            {
-              const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-              xi[0] += (J[1][1] * residual[0] - J[0][1] * residual[1]) / det;
-              xi[1] += (J[0][0] * residual[1] - J[1][0] * residual[0]) / det;
-            }
+          Vec3<double> a12{{0, 0, 0}};
+          for (unsigned int k = 0; k < 4; ++k)
+            a12 = a12 + scale(Face::mixed_derivative(k), master[k]);
+          const double curvature = dot(slave - xbar0, a12);
+          J[0][1] -= curvature;
+          J[1][0] -= curvature;
         }
+      if (projection.inside())
+      {
+        if constexpr (dim == 2)
+          xi[0] += residual[0] / J[0][0];
+        else
+        {
+          const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+          xi[0] += (J[1][1] * residual[0] - J[0][1] * residual[1]) / det;
+          xi[1] += (J[0][0] * residual[1] - J[1][0] * residual[0]) / det;
+        }
+      }
       else
         for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
           if (projection.clamped[alpha] == 0)
@@ -164,11 +164,11 @@ namespace tribos
     Vec3<AD> xbar, a[2], normal;
     Face::geometry(xm, xi, xbar, a, normal);
     if (!consistent)
-      {
-        normal = to<AD>(n0);
-        for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-          a[alpha] = to<AD>(a0[alpha]);
-      }
+    {
+      normal = to<AD>(n0);
+      for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
+        a[alpha] = to<AD>(a0[alpha]);
+    }
     const AD gap = dot(xs - xbar, normal);
 
     AD N[n_nodes], dN[n_nodes][2];
@@ -186,18 +186,18 @@ namespace tribos
 
     AD residual[n_dofs];
     for (unsigned int d = 0; d < dim; ++d)
-      {
-        residual[d] = area * force[d];
-        for (unsigned int k = 0; k < n_nodes; ++k)
-          residual[dim * (1 + k) + d] = -area * N[k] * force[d];
-      }
+    {
+      residual[d] = area * force[d];
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        residual[dim * (1 + k) + d] = -area * N[k] * force[d];
+    }
     for (unsigned int i = 0; i < n_dofs; ++i)
-      {
-        R[i] = residual[i].val();
-        if (K != nullptr)
-          for (unsigned int j = 0; j < n_dofs; ++j)
-            K[i * n_dofs + j] = residual[i].dx(j);
-      }
+    {
+      R[i] = residual[i].val();
+      if (K != nullptr)
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          K[i * n_dofs + j] = residual[i].dx(j);
+    }
     result.xi[0] = value(xi[0]);
     result.xi[1] = value(xi[1]);
     return result;
@@ -226,19 +226,19 @@ namespace tribos
     AD       gap;
     surface.closest_point(xs, shift, xbar, normal, gap);
     if (!consistent)
+    {
+      // Hold the closest point's normal fixed: the small-deformation
+      // linearization.
+      Vec3<double> n0, xbar0;
+      for (unsigned int d = 0; d < 3; ++d)
       {
-        // Hold the closest point's normal fixed: the small-deformation
-        // linearization.
-        Vec3<double> n0, xbar0;
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            n0[d]    = normal[d].val();
-            xbar0[d] = xbar[d].val();
-          }
-        normal = to<AD>(n0);
-        gap    = dot(xs - to<AD>(xbar0), normal);
-        xbar   = xs - scale(gap, normal);
+        n0[d]    = normal[d].val();
+        xbar0[d] = xbar[d].val();
       }
+      normal = to<AD>(n0);
+      gap    = dot(xs - to<AD>(xbar0), normal);
+      xbar   = xs - scale(gap, normal);
+    }
 
     // Slip: the tangential part of the slave's motion relative to the
     // surface during the step.
@@ -250,13 +250,13 @@ namespace tribos
     interface_law(gap, normal, slip, previous_traction, law, force, result);
 
     for (unsigned int i = 0; i < dim; ++i)
-      {
-        const AD residual = area * force[i];
-        R[i]              = residual.val();
-        if (K != nullptr)
-          for (unsigned int j = 0; j < dim; ++j)
-            K[i * dim + j] = residual.dx(j);
-      }
+    {
+      const AD residual = area * force[i];
+      R[i]              = residual.val();
+      if (K != nullptr)
+        for (unsigned int j = 0; j < dim; ++j)
+          K[i * dim + j] = residual.dx(j);
+    }
     return result;
   }
 

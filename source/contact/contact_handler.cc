@@ -1,7 +1,6 @@
 #include <tribos/contact/contact_handler.h>
 
 #include <deal.II/base/mpi.h>
-
 #include <deal.II/lac/full_matrix.h>
 
 #include <cmath>
@@ -14,23 +13,25 @@ namespace tribos
 {
   template <int dim>
   ContactHandler<dim>::ContactHandler(
-    const Parameters::Contact                         &parameters,
-    const DoFHandler<dim>                             &dof_handler,
+    const Parameters::Contact                       &parameters,
+    const DoFHandler<dim>                           &dof_handler,
     const std::function<double(types::material_id)> &youngs_modulus,
-    const IndexSet                                    &locally_owned_dofs,
-    const MPI_Comm                                     mpi_communicator)
+    const IndexSet                                  &locally_owned_dofs,
+    const MPI_Comm                                   mpi_communicator)
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
     , consistent(parameters.tangent == "consistent")
     , all_contact_dofs(dof_handler.n_dofs())
   {
     std::set<types::boundary_id> existing;
-    for (const auto &face : dof_handler.get_triangulation().active_face_iterators())
+    for (const auto &face :
+         dof_handler.get_triangulation().active_face_iterators())
       if (face->at_boundary())
         existing.insert(face->boundary_id());
 
     std::map<types::boundary_id, std::shared_ptr<ContactSurface<dim>>> surfaces;
-    const auto surface = [&](const unsigned int id) {
+    const auto surface = [&](const unsigned int id)
+    {
       AssertThrow(existing.count(id) == 1,
                   ExcMessage("Parameter <Contact/Pairs> names boundary id " +
                              std::to_string(id) +
@@ -50,63 +51,62 @@ namespace tribos
     if (parameters.passes == "two-pass")
       for (const auto &p : parameters.pairs)
         if (p.rigid_surface.empty())
-          {
-            auto swapped            = p;
-            swapped.slave_boundary  = p.master_boundary;
-            swapped.master_boundary = p.slave_boundary;
-            descriptions.push_back(swapped);
-          }
+        {
+          auto swapped            = p;
+          swapped.slave_boundary  = p.master_boundary;
+          swapped.master_boundary = p.slave_boundary;
+          descriptions.push_back(swapped);
+        }
 
     for (const auto &description : descriptions)
+    {
+      AssertThrow(description.method != "lagrange multiplier",
+                  ExcMessage("Contact method <" + description.method +
+                             "> is not implemented yet; use "
+                             "Contact/Method = penalty or augmented "
+                             "lagrangian."));
+      Pair pair;
+      pair.description = description;
+      pair.slave       = surface(description.slave_boundary);
+      double E         = std::numeric_limits<double>::max();
+      for (const auto body : pair.slave->bodies())
+        E = std::min(E, youngs_modulus(body));
+      if (description.rigid_surface.empty())
       {
-        AssertThrow(description.method != "lagrange multiplier",
-                    ExcMessage("Contact method <" + description.method +
-                               "> is not implemented yet; use "
-                               "Contact/Method = penalty or augmented "
-                               "lagrangian."));
-        Pair pair;
-        pair.description = description;
-        pair.slave       = surface(description.slave_boundary);
-        double E         = std::numeric_limits<double>::max();
-        for (const auto body : pair.slave->bodies())
+        AssertThrow(description.master_boundary != description.slave_boundary,
+                    ExcMessage("Parameter <Contact/Pairs>: a pair needs "
+                               "different slave and master boundaries."));
+        pair.master = surface(description.master_boundary);
+        for (const auto body : pair.master->bodies())
           E = std::min(E, youngs_modulus(body));
-        if (description.rigid_surface.empty())
-          {
-            AssertThrow(description.master_boundary !=
-                          description.slave_boundary,
-                        ExcMessage("Parameter <Contact/Pairs>: a pair needs "
-                                   "different slave and master boundaries."));
-            pair.master = surface(description.master_boundary);
-            for (const auto body : pair.master->bodies())
-              E = std::min(E, youngs_modulus(body));
-            pair.area_factor = (parameters.passes == "two-pass" ? 0.5 : 1.);
-          }
-        else
-          pair.rigid = rigid_surfaces.at(description.rigid_surface);
-
-        pair.law.normal_penalty     = description.normal_penalty.resolve(E);
-        pair.law.tangential_penalty = description.tangential_penalty.resolve(E);
-        pair.law.friction_coefficient = description.friction_coefficient;
-
-        const unsigned int n_slaves = pair.slave->nodes().size();
-        pair.owned.resize(n_slaves);
-        for (unsigned int k = 0; k < n_slaves; ++k)
-          pair.owned[k] =
-            locally_owned_dofs.is_element(pair.slave->nodes()[k].dofs[0]);
-        pair.history.resize(n_slaves);
-        pair.multipliers.assign(n_slaves, 0.);
-        pair.committed_multipliers.assign(n_slaves, 0.);
-        pair.pairing.resize(n_slaves);
-        pair.results.resize(n_slaves);
-        for (const auto &node : pair.slave->nodes())
-          pair.slave_positions.push_back(node.reference);
-        pair.old_slave_positions = pair.slave_positions;
-        if (pair.master)
-          for (const auto &node : pair.master->nodes())
-            pair.master_positions.push_back(node.reference);
-        pair.old_master_positions = pair.master_positions;
-        pairs.push_back(std::move(pair));
+        pair.area_factor = (parameters.passes == "two-pass" ? 0.5 : 1.);
       }
+      else
+        pair.rigid = rigid_surfaces.at(description.rigid_surface);
+
+      pair.law.normal_penalty       = description.normal_penalty.resolve(E);
+      pair.law.tangential_penalty   = description.tangential_penalty.resolve(E);
+      pair.law.friction_coefficient = description.friction_coefficient;
+
+      const unsigned int n_slaves = pair.slave->nodes().size();
+      pair.owned.resize(n_slaves);
+      for (unsigned int k = 0; k < n_slaves; ++k)
+        pair.owned[k] =
+          locally_owned_dofs.is_element(pair.slave->nodes()[k].dofs[0]);
+      pair.history.resize(n_slaves);
+      pair.multipliers.assign(n_slaves, 0.);
+      pair.committed_multipliers.assign(n_slaves, 0.);
+      pair.pairing.resize(n_slaves);
+      pair.results.resize(n_slaves);
+      for (const auto &node : pair.slave->nodes())
+        pair.slave_positions.push_back(node.reference);
+      pair.old_slave_positions = pair.slave_positions;
+      if (pair.master)
+        for (const auto &node : pair.master->nodes())
+          pair.master_positions.push_back(node.reference);
+      pair.old_master_positions = pair.master_positions;
+      pairs.push_back(std::move(pair));
+    }
 
     for (const auto &[id, s] : surfaces)
       for (const auto &node : s->nodes())
@@ -130,121 +130,123 @@ namespace tribos
   ContactHandler<dim>::update(const TrilinosWrappers::MPI::Vector &solution,
                               const double                         t)
   {
-    time                 = t;
-    bool new_coupling    = false;
-    const auto positions = [&solution](const auto &surface,
-                                       std::vector<Vec3<double>> &x) {
+    time                    = t;
+    bool       new_coupling = false;
+    const auto positions =
+      [&solution](const auto &surface, std::vector<Vec3<double>> &x)
+    {
       const auto &nodes = surface.nodes();
       for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          x[k] = nodes[k].reference;
-          for (unsigned int d = 0; d < dim; ++d)
-            x[k][d] += solution[nodes[k].dofs[d]];
-        }
+      {
+        x[k] = nodes[k].reference;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[k][d] += solution[nodes[k].dofs[d]];
+      }
     };
 
     for (auto &pair : pairs)
+    {
+      positions(*pair.slave, pair.slave_positions);
+      if (pair.rigid)
       {
-        positions(*pair.slave, pair.slave_positions);
-        if (pair.rigid)
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          pair.pairing[k].valid = pair.owned[k];
+        continue;
+      }
+      positions(*pair.master, pair.master_positions);
+      pair.search.build(*pair.master, pair.master_positions);
+
+      const auto &faces = pair.master->faces();
+      for (unsigned int k = 0; k < pair.owned.size(); ++k)
+      {
+        Pairing &pairing = pair.pairing[k];
+        if (!pair.owned[k])
+          continue;
+        const Vec3<double> &x = pair.slave_positions[k];
+
+        // Keep the face of the last evaluation while the node projects
+        // onto it or onto its extension within a small band: over a
+        // master vertex (a concave kink of the deformed master) the
+        // closest face would otherwise flip between iterations and
+        // Newton would cycle between two smooth residuals.
+        if (pairing.valid)
+        {
+          Vec3<double> xm[4];
+          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+            xm[v] = pair.master_positions[faces[pairing.face].nodes[v]];
+          const Projection kept = project<dim>(x, xm, false);
+          bool             near = kept.distance <= parameters.search_distance;
+          for (unsigned int c = 0; c < dim - 1; ++c)
+            near = near && std::abs(kept.xi[c]) <= 1. + edge_band;
+          if (near)
           {
-            for (unsigned int k = 0; k < pair.owned.size(); ++k)
-              pair.pairing[k].valid = pair.owned[k];
+            pairing.projection = kept;
             continue;
           }
-        positions(*pair.master, pair.master_positions);
-        pair.search.build(*pair.master, pair.master_positions);
+        }
+        pairing = Pairing();
 
-        const auto &faces = pair.master->faces();
-        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+        unsigned int closest;
+        double       squared_distance;
+        if (!pair.search.closest_face(x, closest, squared_distance) ||
+            std::sqrt(squared_distance) > parameters.search_distance)
+          continue;
+
+        // Exact projection on the candidate and its neighbours: prefer
+        // a projection inside a face (the closest such), else the
+        // closest clamped one.
+        std::vector<unsigned int> candidates = faces[closest].neighbours;
+        candidates.insert(candidates.begin(), closest);
+        bool   best_inside   = false;
+        double best_distance = std::numeric_limits<double>::max();
+        for (const unsigned int f : candidates)
+        {
+          Vec3<double> xm[4];
+          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+            xm[v] = pair.master_positions[faces[f].nodes[v]];
+          const Projection p      = project<dim>(x, xm);
+          const bool       inside = p.inside();
+          if ((inside && !best_inside) ||
+              (inside == best_inside && p.distance < best_distance))
           {
-            Pairing &pairing = pair.pairing[k];
-            if (!pair.owned[k])
-              continue;
-            const Vec3<double> &x = pair.slave_positions[k];
-
-            // Keep the face of the last evaluation while the node projects
-            // onto it or onto its extension within a small band: over a
-            // master vertex (a concave kink of the deformed master) the
-            // closest face would otherwise flip between iterations and
-            // Newton would cycle between two smooth residuals.
-            if (pairing.valid)
-              {
-                Vec3<double> xm[4];
-                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-                  xm[v] = pair.master_positions[faces[pairing.face].nodes[v]];
-                const Projection kept = project<dim>(x, xm, false);
-                bool             near = kept.distance <= parameters.search_distance;
-                for (unsigned int c = 0; c < dim - 1; ++c)
-                  near = near && std::abs(kept.xi[c]) <= 1. + edge_band;
-                if (near)
-                  {
-                    pairing.projection = kept;
-                    continue;
-                  }
-              }
-            pairing = Pairing();
-
-            unsigned int        closest;
-            double              squared_distance;
-            if (!pair.search.closest_face(x, closest, squared_distance) ||
-                std::sqrt(squared_distance) > parameters.search_distance)
-              continue;
-
-            // Exact projection on the candidate and its neighbours: prefer
-            // a projection inside a face (the closest such), else the
-            // closest clamped one.
-            std::vector<unsigned int> candidates = faces[closest].neighbours;
-            candidates.insert(candidates.begin(), closest);
-            bool   best_inside   = false;
-            double best_distance = std::numeric_limits<double>::max();
-            for (const unsigned int f : candidates)
-              {
-                Vec3<double> xm[4];
-                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-                  xm[v] = pair.master_positions[faces[f].nodes[v]];
-                const Projection p      = project<dim>(x, xm);
-                const bool       inside = p.inside();
-                if ((inside && !best_inside) ||
-                    (inside == best_inside && p.distance < best_distance))
-                  {
-                    best_inside        = inside;
-                    best_distance      = p.distance;
-                    pairing.face       = f;
-                    pairing.projection = p;
-                  }
-              }
-            // A projection clamped at an edge where the master surface ends:
-            // within a small band beyond the edge the node sees the face's
-            // extension (a smooth residual for nodes flush with the end of
-            // the master); farther out it has slid off: no contact.
-            pairing.valid = true;
-            bool at_end   = false;
-            for (unsigned int c = 0; c < dim - 1; ++c)
-              if (pairing.projection.clamped[c] != 0 &&
-                  !faces[pairing.face].continues[c][pairing.projection.clamped[c] > 0])
-                at_end = true;
-            if (at_end)
-              {
-                Vec3<double> xm[4];
-                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-                  xm[v] = pair.master_positions[faces[pairing.face].nodes[v]];
-                const Projection extended = project<dim>(x, xm, false);
-                for (unsigned int c = 0; c < dim - 1; ++c)
-                  if (std::abs(extended.xi[c]) > 1. + edge_band)
-                    pairing.valid = false;
-                pairing.projection = extended;
-              }
-
-            if (pair.couplings.count({k, pairing.face}) == 0)
-              {
-                new_coupling = true;
-                pair.couplings.insert({k, pairing.face});
-                for (const unsigned int g : faces[pairing.face].neighbours)
-                  pair.couplings.insert({k, g});
-              }
+            best_inside        = inside;
+            best_distance      = p.distance;
+            pairing.face       = f;
+            pairing.projection = p;
           }
+        }
+        // A projection clamped at an edge where the master surface ends:
+        // within a small band beyond the edge the node sees the face's
+        // extension (a smooth residual for nodes flush with the end of
+        // the master); farther out it has slid off: no contact.
+        pairing.valid = true;
+        bool at_end   = false;
+        for (unsigned int c = 0; c < dim - 1; ++c)
+          if (pairing.projection.clamped[c] != 0 &&
+              !faces[pairing.face]
+                 .continues[c][pairing.projection.clamped[c] > 0])
+            at_end = true;
+        if (at_end)
+        {
+          Vec3<double> xm[4];
+          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+            xm[v] = pair.master_positions[faces[pairing.face].nodes[v]];
+          const Projection extended = project<dim>(x, xm, false);
+          for (unsigned int c = 0; c < dim - 1; ++c)
+            if (std::abs(extended.xi[c]) > 1. + edge_band)
+              pairing.valid = false;
+          pairing.projection = extended;
+        }
+
+        if (pair.couplings.count({k, pairing.face}) == 0)
+        {
+          new_coupling = true;
+          pair.couplings.insert({k, pairing.face});
+          for (const unsigned int g : faces[pairing.face].neighbours)
+            pair.couplings.insert({k, g});
+        }
       }
+    }
     if (Utilities::MPI::max(new_coupling ? 1 : 0, mpi_communicator) == 1)
       outdated = true;
   }
@@ -256,8 +258,9 @@ namespace tribos
   ContactHandler<dim>::element_dofs(const Pair        &pair,
                                     const unsigned int node) const
   {
-    std::vector<types::global_dof_index> dofs(pair.slave->nodes()[node].dofs.begin(),
-                                              pair.slave->nodes()[node].dofs.end());
+    std::vector<types::global_dof_index> dofs(
+      pair.slave->nodes()[node].dofs.begin(),
+      pair.slave->nodes()[node].dofs.end());
     if (pair.master)
       for (const unsigned int m :
            pair.master->faces()[pair.pairing[node].face].nodes)
@@ -277,14 +280,15 @@ namespace tribos
     outdated = false;
     for (const auto &pair : pairs)
       for (const auto &[k, f] : pair.couplings)
-        {
-          std::vector<types::global_dof_index> dofs(
-            pair.slave->nodes()[k].dofs.begin(), pair.slave->nodes()[k].dofs.end());
-          for (const unsigned int m : pair.master->faces()[f].nodes)
-            for (const auto dof : pair.master->nodes()[m].dofs)
-              dofs.push_back(dof);
-          constraints.add_entries_local_to_global(dofs, dsp, false);
-        }
+      {
+        std::vector<types::global_dof_index> dofs(
+          pair.slave->nodes()[k].dofs.begin(),
+          pair.slave->nodes()[k].dofs.end());
+        for (const unsigned int m : pair.master->faces()[f].nodes)
+          for (const auto dof : pair.master->nodes()[m].dofs)
+            dofs.push_back(dof);
+        constraints.add_entries_local_to_global(dofs, dsp, false);
+      }
   }
 
 
@@ -304,93 +308,96 @@ namespace tribos
     const Vec3<double>     zero{{0, 0, 0}};
 
     for (auto &pair : pairs)
+    {
+      const unsigned int n_dofs =
+        pair.master ? NodeToSegment<dim>::n_dofs : NodeToRigid<dim>::n_dofs;
+      const Vec3<double> shift =
+        pair.rigid ? pair.rigid->translation(time) : zero;
+      const Vec3<double> old_shift =
+        pair.rigid ? pair.rigid->translation(committed_time) : zero;
+
+      for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
-        const unsigned int n_dofs =
-          pair.master ? NodeToSegment<dim>::n_dofs : NodeToRigid<dim>::n_dofs;
-        const Vec3<double> shift =
-          pair.rigid ? pair.rigid->translation(time) : zero;
-        const Vec3<double> old_shift =
-          pair.rigid ? pair.rigid->translation(committed_time) : zero;
+        pair.results[k] = ContactPointResult();
+        if (!pair.pairing[k].valid)
+        {
+          pair.results[k].gap = std::numeric_limits<double>::quiet_NaN();
+          continue;
+        }
+        const SlaveHistory &history = pair.history[k];
+        ContactLaw          law     = pair.law;
+        law.multiplier              = pair.multipliers[k];
+        const double area = pair.slave->nodes()[k].area * pair.area_factor;
+        const Vec3<double> &previous = history.active ? history.traction : zero;
+        const Vec3<double> &x        = pair.slave_positions[k];
 
-        for (unsigned int k = 0; k < pair.owned.size(); ++k)
-          {
-            pair.results[k] = ContactPointResult();
-            if (!pair.pairing[k].valid)
-              {
-                pair.results[k].gap = std::numeric_limits<double>::quiet_NaN();
-                continue;
-              }
-            const SlaveHistory &history = pair.history[k];
-            ContactLaw          law     = pair.law;
-            law.multiplier              = pair.multipliers[k];
-            const double area = pair.slave->nodes()[k].area * pair.area_factor;
-            const Vec3<double> &previous = history.active ? history.traction : zero;
-            const Vec3<double> &x        = pair.slave_positions[k];
+        if (pair.master)
+        {
+          const auto  &faces = pair.master->faces();
+          const int    face  = pair.pairing[k].face;
+          Vec3<double> xm[4];
+          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+            xm[v] = pair.master_positions[faces[face].nodes[v]];
 
-            if (pair.master)
-              {
-                const auto  &faces = pair.master->faces();
-                const int    face  = pair.pairing[k].face;
-                Vec3<double> xm[4];
-                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-                  xm[v] = pair.master_positions[faces[face].nodes[v]];
+          Vec3<double> xm_old[4];
+          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+            xm_old[v] = pair.old_master_positions[faces[face].nodes[v]];
+          pair.results[k] =
+            NodeToSegment<dim>::evaluate(x,
+                                         xm,
+                                         pair.pairing[k].projection,
+                                         pair.old_slave_positions[k],
+                                         xm_old,
+                                         previous,
+                                         law,
+                                         area,
+                                         consistent,
+                                         R,
+                                         with_matrix ? K : nullptr);
+          pair.results[k].face = face;
+        }
+        else
+        {
+          pair.results[k] =
+            NodeToRigid<dim>::evaluate(x,
+                                       *pair.rigid,
+                                       shift,
+                                       old_shift,
+                                       pair.old_slave_positions[k],
+                                       previous,
+                                       law,
+                                       area,
+                                       consistent,
+                                       R,
+                                       with_matrix ? K : nullptr);
+        }
 
-                Vec3<double> xm_old[4];
-                for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-                  xm_old[v] = pair.old_master_positions[faces[face].nodes[v]];
-                pair.results[k] = NodeToSegment<dim>::evaluate(
-                  x,
-                  xm,
-                  pair.pairing[k].projection,
-                  pair.old_slave_positions[k],
-                  xm_old,
-                  previous,
-                  law,
-                  area,
-                  consistent,
-                  R,
-                  with_matrix ? K : nullptr);
-                pair.results[k].face = face;
-              }
-            else
-              {
-                pair.results[k] = NodeToRigid<dim>::evaluate(x,
-                                                             *pair.rigid,
-                                                             shift,
-                                                             old_shift,
-                                                             pair.old_slave_positions[k],
-                                                             previous,
-                                                             law,
-                                                             area,
-                                                             consistent,
-                                                             R,
-                                                             with_matrix ? K :
-                                                                           nullptr);
-              }
+        if (pair.results[k].status == ContactStatus::open)
+          continue;
 
-            if (pair.results[k].status == ContactStatus::open)
-              continue;
-
-            const auto dofs = element_dofs(pair, k);
-            dealii::Vector<double> local_rhs(n_dofs), local_residual(n_dofs);
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                local_rhs(i)      = -R[i];
-                local_residual(i) = R[i];
-              }
-            full_residual.add(dofs, local_residual);
-            homogeneous.distribute_local_to_global(local_rhs, dofs, free_residual);
-            if (with_matrix)
-              {
-                FullMatrix<double> local_matrix(n_dofs, n_dofs);
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  for (unsigned int j = 0; j < n_dofs; ++j)
-                    local_matrix(i, j) = K[i * n_dofs + j];
-                constraints.distribute_local_to_global(
-                  local_matrix, local_rhs, dofs, matrix, rhs);
-              }
-          }
+        const auto             dofs = element_dofs(pair, k);
+        dealii::Vector<double> local_rhs(n_dofs), local_residual(n_dofs);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          local_rhs(i)      = -R[i];
+          local_residual(i) = R[i];
+        }
+        full_residual.add(dofs, local_residual);
+        homogeneous.distribute_local_to_global(local_rhs, dofs, free_residual);
+        if (with_matrix)
+        {
+          FullMatrix<double> local_matrix(n_dofs, n_dofs);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              local_matrix(i, j) = K[i * n_dofs + j];
+          constraints.distribute_local_to_global(local_matrix,
+                                                 local_rhs,
+                                                 dofs,
+                                                 matrix,
+                                                 rhs);
+        }
       }
+    }
   }
 
 
@@ -400,26 +407,26 @@ namespace tribos
   ContactHandler<dim>::commit()
   {
     for (auto &pair : pairs)
+    {
+      for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
-        for (unsigned int k = 0; k < pair.owned.size(); ++k)
-          {
-            if (!pair.owned[k])
-              continue;
-            const auto &result  = pair.results[k];
-            auto       &history = pair.history[k];
-            history.active      = result.status != ContactStatus::open;
-            if (history.active)
-              {
-                history.traction = result.traction;
-                history.slip += result.slip_increment;
-              }
-            else
-              history.traction = {{0, 0, 0}};
-          }
-        pair.old_slave_positions   = pair.slave_positions;
-        pair.old_master_positions  = pair.master_positions;
-        pair.committed_multipliers = pair.multipliers;
+        if (!pair.owned[k])
+          continue;
+        const auto &result  = pair.results[k];
+        auto       &history = pair.history[k];
+        history.active      = result.status != ContactStatus::open;
+        if (history.active)
+        {
+          history.traction = result.traction;
+          history.slip += result.slip_increment;
+        }
+        else
+          history.traction = {{0, 0, 0}};
       }
+      pair.old_slave_positions   = pair.slave_positions;
+      pair.old_master_positions  = pair.master_positions;
+      pair.committed_multipliers = pair.multipliers;
+    }
     committed_time = time;
   }
 
@@ -456,11 +463,11 @@ namespace tribos
       if (pair.description.method == "augmented lagrangian")
         for (unsigned int k = 0; k < pair.owned.size(); ++k)
           if (pair.owned[k] && pair.results[k].status != ContactStatus::open)
-            {
-              const double area = pair.slave->nodes()[k].area;
-              const double size = (dim == 2 ? area : std::sqrt(area));
-              violation = std::max(violation, -pair.results[k].gap / size);
-            }
+          {
+            const double area = pair.slave->nodes()[k].area;
+            const double size = (dim == 2 ? area : std::sqrt(area));
+            violation = std::max(violation, -pair.results[k].gap / size);
+          }
     violation = Utilities::MPI::max(violation, mpi_communicator);
     if (violation > tolerance)
       for (auto &pair : pairs)
@@ -478,33 +485,34 @@ namespace tribos
   {
     ContactStatistics s;
     for (const auto &pair : pairs)
+    {
+      std::array<double, 5> forces = {{0, 0, 0, 0, 0}};
+      for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
-        std::array<double, 5> forces = {{0, 0, 0, 0, 0}};
-        for (unsigned int k = 0; k < pair.owned.size(); ++k)
-          {
-            const auto &r = pair.results[k];
-            if (!pair.owned[k] || r.status == ContactStatus::open)
-              continue;
-            const double area = pair.slave->nodes()[k].area * pair.area_factor;
-            forces[0] += area * r.pressure;
-            forces[1] += area * norm(r.traction);
-            for (unsigned int d = 0; d < 3; ++d)
-              forces[2 + d] += area * (r.pressure * r.normal[d] - r.traction[d]);
-            s.max_penetration = std::max(s.max_penetration, -r.gap);
-            ++s.n_active;
-            if (r.status == ContactStatus::stick)
-              ++s.n_stick;
-            else
-              ++s.n_slip;
-          }
-        for (auto &f : forces)
-          f = Utilities::MPI::sum(f, mpi_communicator);
-        s.pair_forces.push_back(forces);
+        const auto &r = pair.results[k];
+        if (!pair.owned[k] || r.status == ContactStatus::open)
+          continue;
+        const double area = pair.slave->nodes()[k].area * pair.area_factor;
+        forces[0] += area * r.pressure;
+        forces[1] += area * norm(r.traction);
+        for (unsigned int d = 0; d < 3; ++d)
+          forces[2 + d] += area * (r.pressure * r.normal[d] - r.traction[d]);
+        s.max_penetration = std::max(s.max_penetration, -r.gap);
+        ++s.n_active;
+        if (r.status == ContactStatus::stick)
+          ++s.n_stick;
+        else
+          ++s.n_slip;
       }
-    s.max_penetration = Utilities::MPI::max(s.max_penetration, mpi_communicator);
-    s.n_active        = Utilities::MPI::sum(s.n_active, mpi_communicator);
-    s.n_stick         = Utilities::MPI::sum(s.n_stick, mpi_communicator);
-    s.n_slip          = Utilities::MPI::sum(s.n_slip, mpi_communicator);
+      for (auto &f : forces)
+        f = Utilities::MPI::sum(f, mpi_communicator);
+      s.pair_forces.push_back(forces);
+    }
+    s.max_penetration =
+      Utilities::MPI::max(s.max_penetration, mpi_communicator);
+    s.n_active = Utilities::MPI::sum(s.n_active, mpi_communicator);
+    s.n_stick  = Utilities::MPI::sum(s.n_stick, mpi_communicator);
+    s.n_slip   = Utilities::MPI::sum(s.n_slip, mpi_communicator);
     return s;
   }
 
@@ -517,13 +525,13 @@ namespace tribos
     std::vector<std::string> names;
     const char              *axis = "xyz";
     for (unsigned int p = 0; p < pairs.size(); ++p)
-      {
-        const std::string prefix = "pair" + std::to_string(p) + "_";
-        names.push_back(prefix + "normal_force");
-        names.push_back(prefix + "tangential_force");
-        for (unsigned int d = 0; d < dim; ++d)
-          names.push_back(prefix + "F" + axis[d]);
-      }
+    {
+      const std::string prefix = "pair" + std::to_string(p) + "_";
+      names.push_back(prefix + "normal_force");
+      names.push_back(prefix + "tangential_force");
+      for (unsigned int d = 0; d < dim; ++d)
+        names.push_back(prefix + "F" + axis[d]);
+    }
     for (const std::string name :
          {"max_penetration", "n_active", "n_stick", "n_slip"})
       names.push_back(name);
@@ -559,33 +567,33 @@ namespace tribos
     constexpr unsigned int n_columns = 13;
     std::vector<double>    rows;
     for (unsigned int p = 0; p < pairs.size(); ++p)
+    {
+      const auto &pair = pairs[p];
+      for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
-        const auto &pair = pairs[p];
-        for (unsigned int k = 0; k < pair.owned.size(); ++k)
-          {
-            if (!pair.owned[k])
-              continue;
-            const auto &r    = pair.results[k];
-            const auto &x    = pair.slave_positions[k];
-            const auto &node = pair.slave->nodes()[k];
-            const auto  body = pair.slave->faces()[node.faces[0]].body;
-            const double values[n_columns] = {double(p),
-                                              double(body),
-                                              x[0],
-                                              x[1],
-                                              x[2],
-                                              r.pressure,
-                                              -r.traction[0],
-                                              -r.traction[1],
-                                              -r.traction[2],
-                                              r.gap,
-                                              pair.history[k].slip +
-                                                r.slip_increment,
-                                              double(int(r.status)),
-                                              double(k)};
-            rows.insert(rows.end(), values, values + n_columns);
-          }
+        if (!pair.owned[k])
+          continue;
+        const auto  &r    = pair.results[k];
+        const auto  &x    = pair.slave_positions[k];
+        const auto  &node = pair.slave->nodes()[k];
+        const auto   body = pair.slave->faces()[node.faces[0]].body;
+        const double values[n_columns] = {double(p),
+                                          double(body),
+                                          x[0],
+                                          x[1],
+                                          x[2],
+                                          r.pressure,
+                                          -r.traction[0],
+                                          -r.traction[1],
+                                          -r.traction[2],
+                                          r.gap,
+                                          pair.history[k].slip +
+                                            r.slip_increment,
+                                          double(int(r.status)),
+                                          double(k)};
+        rows.insert(rows.end(), values, values + n_columns);
       }
+    }
     const auto gathered = Utilities::MPI::gather(mpi_communicator, rows, 0);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
@@ -595,14 +603,15 @@ namespace tribos
     std::vector<std::array<double, n_columns>> all;
     for (const auto &part : gathered)
       for (unsigned int i = 0; i < part.size(); i += n_columns)
-        {
-          std::array<double, n_columns> row;
-          std::copy(part.begin() + i, part.begin() + i + n_columns, row.begin());
-          all.push_back(row);
-        }
-    std::sort(all.begin(), all.end(), [](const auto &a, const auto &b) {
-      return a[0] != b[0] ? a[0] < b[0] : a[12] < b[12];
-    });
+      {
+        std::array<double, n_columns> row;
+        std::copy(part.begin() + i, part.begin() + i + n_columns, row.begin());
+        all.push_back(row);
+      }
+    std::sort(all.begin(),
+              all.end(),
+              [](const auto &a, const auto &b)
+              { return a[0] != b[0] ? a[0] < b[0] : a[12] < b[12]; });
 
     const std::string temporary = filename + ".part";
     {
@@ -612,12 +621,12 @@ namespace tribos
              "CSTATUS\n"
           << std::setprecision(10);
       for (const auto &row : all)
-        {
-          out << int(row[0]) << ',' << int(row[1]);
-          for (unsigned int c = 2; c < 11; ++c)
-            out << ',' << row[c];
-          out << ',' << int(row[11]) << '\n';
-        }
+      {
+        out << int(row[0]) << ',' << int(row[1]);
+        for (unsigned int c = 2; c < 11; ++c)
+          out << ',' << row[c];
+        out << ',' << int(row[11]) << '\n';
+      }
     }
     std::rename(temporary.c_str(), filename.c_str());
   }
@@ -633,19 +642,19 @@ namespace tribos
   {
     for (const auto &pair : pairs)
       for (unsigned int k = 0; k < pair.owned.size(); ++k)
-        {
-          if (!pair.owned[k])
-            continue;
-          const auto &node = pair.slave->nodes()[k];
-          const auto &r    = pair.results[k];
-          const auto  dof  = vertex_to_dof[node.vertex];
-          scalars[0][dof] += r.pressure;
-          scalars[1][dof] += std::isfinite(r.gap) ? r.gap : 0.;
-          scalars[2][dof] += pair.history[k].slip + r.slip_increment;
-          scalars[3][dof] += int(r.status);
-          for (unsigned int d = 0; d < dim; ++d)
-            shear[node.dofs[d]] -= r.traction[d];
-        }
+      {
+        if (!pair.owned[k])
+          continue;
+        const auto &node = pair.slave->nodes()[k];
+        const auto &r    = pair.results[k];
+        const auto  dof  = vertex_to_dof[node.vertex];
+        scalars[0][dof] += r.pressure;
+        scalars[1][dof] += std::isfinite(r.gap) ? r.gap : 0.;
+        scalars[2][dof] += pair.history[k].slip + r.slip_increment;
+        scalars[3][dof] += int(r.status);
+        for (unsigned int d = 0; d < dim; ++d)
+          shear[node.dofs[d]] -= r.traction[d];
+      }
     for (auto &v : scalars)
       Utilities::MPI::sum(v, mpi_communicator, v);
     Utilities::MPI::sum(shear, mpi_communicator, shear);

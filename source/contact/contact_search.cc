@@ -59,7 +59,8 @@ namespace tribos
   template <int dim>
   ContactSearch<dim>::ContactSearch()
     : tree(std::make_unique<Tree>())
-  {}
+  {
+  }
 
 
 
@@ -84,21 +85,21 @@ namespace tribos
     elements.clear();
     elements.reserve(surface.faces().size() * Primitives<dim>::per_face);
     for (const auto &face : surface.faces())
+    {
+      const auto &n = face.nodes;
+      if constexpr (dim == 2)
+        elements.emplace_back(point(positions[n[0]]), point(positions[n[1]]));
+      else
       {
-        const auto &n = face.nodes;
-        if constexpr (dim == 2)
-          elements.emplace_back(point(positions[n[0]]), point(positions[n[1]]));
-        else
-          {
-            // Lexicographic quad 0 1 / 2 3 as triangles (0,1,3), (0,3,2).
-            elements.emplace_back(point(positions[n[0]]),
-                                  point(positions[n[1]]),
-                                  point(positions[n[3]]));
-            elements.emplace_back(point(positions[n[0]]),
-                                  point(positions[n[3]]),
-                                  point(positions[n[2]]));
-          }
+        // Lexicographic quad 0 1 / 2 3 as triangles (0,1,3), (0,3,2).
+        elements.emplace_back(point(positions[n[0]]),
+                              point(positions[n[1]]),
+                              point(positions[n[3]]));
+        elements.emplace_back(point(positions[n[0]]),
+                              point(positions[n[3]]),
+                              point(positions[n[2]]));
       }
+    }
     tree->tree.clear();
     tree->tree.insert(elements.cbegin(), elements.cend());
     tree->tree.build();
@@ -116,7 +117,8 @@ namespace tribos
     if (tree->elements.empty())
       return false;
     const auto result = tree->tree.closest_point_and_primitive(point(x));
-    face = (result.second - tree->elements.cbegin()) / Primitives<dim>::per_face;
+    face =
+      (result.second - tree->elements.cbegin()) / Primitives<dim>::per_face;
     squared_distance = CGAL::squared_distance(result.first, point(x));
     return true;
   }

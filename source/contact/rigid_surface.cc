@@ -10,44 +10,44 @@ namespace tribos
   {
     for (unsigned int d = 0; d < 3; ++d)
       point[d] = description.point[d];
-    direction = {{0, 0, 0}};
-    const bool uses_direction =
-      description.type == "plane" || (description.type == "cylinder" && dim == 3);
+    direction                 = {{0, 0, 0}};
+    const bool uses_direction = description.type == "plane" ||
+                                (description.type == "cylinder" && dim == 3);
     if (uses_direction)
-      {
-        for (unsigned int d = 0; d < 3; ++d)
-          direction[d] = description.direction[d];
-        const double length = norm(direction);
-        AssertThrow(length > 0,
-                    ExcMessage("Parameter <Contact/Rigid surfaces>: surface <" +
-                               description.name +
-                               "> has a zero normal or axis."));
-        direction = scale(1. / length, direction);
-        AssertThrow(dim == 3 || std::abs(direction[2]) == 0,
-                    ExcMessage("Parameter <Contact/Rigid surfaces>: surface <" +
-                               description.name +
-                               "> must have a zero z-component in 2D."));
-      }
+    {
+      for (unsigned int d = 0; d < 3; ++d)
+        direction[d] = description.direction[d];
+      const double length = norm(direction);
+      AssertThrow(length > 0,
+                  ExcMessage("Parameter <Contact/Rigid surfaces>: surface <" +
+                             description.name +
+                             "> has a zero normal or axis."));
+      direction = scale(1. / length, direction);
+      AssertThrow(dim == 3 || std::abs(direction[2]) == 0,
+                  ExcMessage("Parameter <Contact/Rigid surfaces>: surface <" +
+                             description.name +
+                             "> must have a zero z-component in 2D."));
+    }
 
     std::string expressions;
     for (unsigned int d = 0; d < dim; ++d)
       expressions += (d ? ";" : "") + description.motion[d];
     motion = std::make_unique<FunctionParser<1>>(dim);
     try
-      {
-        // The motion depends on time only; x is a dummy variable.
-        motion->initialize("x_dummy,t", expressions, {{"pi", numbers::PI}}, true);
-        dealii::Vector<double> value(dim);
-        motion->vector_value(Point<1>(), value);
-      }
+    {
+      // The motion depends on time only; x is a dummy variable.
+      motion->initialize("x_dummy,t", expressions, {{"pi", numbers::PI}}, true);
+      dealii::Vector<double> value(dim);
+      motion->vector_value(Point<1>(), value);
+    }
     catch (...)
-      {
-        AssertThrow(false,
-                    ExcMessage("Parameter <Contact/Rigid surfaces>: cannot "
-                               "parse the motion <" + expressions +
-                               "> of surface <" + description.name +
-                               ">. Use expressions in t."));
-      }
+    {
+      AssertThrow(false,
+                  ExcMessage("Parameter <Contact/Rigid surfaces>: cannot "
+                             "parse the motion <" +
+                             expressions + "> of surface <" + description.name +
+                             ">. Use expressions in t."));
+    }
   }
 
 

@@ -1,7 +1,6 @@
 #include <tribos/core/problem.h>
 
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/lac/full_matrix.h>
 
 namespace tribos
@@ -13,19 +12,19 @@ namespace tribos
                          const double                     time)
   {
     if (contact)
-      {
-        TimerOutput::Scope search_timer(timer, "contact search");
-        contact->update(ghosted_solution, time);
-        if (with_matrix && contact->sparsity_outdated())
-          make_sparsity();
-      }
+    {
+      TimerOutput::Scope search_timer(timer, "contact search");
+      contact->update(ghosted_solution, time);
+      if (with_matrix && contact->sparsity_outdated())
+        make_sparsity();
+    }
 
     TimerOutput::Scope t(timer, "assembly");
     if (with_matrix)
-      {
-        system_matrix = 0;
-        system_rhs    = 0;
-      }
+    {
+      system_matrix = 0;
+      system_rhs    = 0;
+    }
     free_residual = 0;
     full_residual = 0;
 
@@ -38,14 +37,15 @@ namespace tribos
                                      update_values | update_quadrature_points |
                                        update_JxW_values);
 
-    const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
-    const unsigned int n_q           = quadrature.size();
-    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    const unsigned int     dofs_per_cell = fe->n_dofs_per_cell();
+    const unsigned int     n_q           = quadrature.size();
+    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
     dealii::Vector<double> cell_rhs(dofs_per_cell);
     dealii::Vector<double> cell_residual(dofs_per_cell);
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    std::vector<types::global_dof_index>     dof_indices(dofs_per_cell);
     std::vector<std::vector<Tensor<1, dim>>> gradients(
-      n_q, std::vector<Tensor<1, dim>>(dim));
+      n_q,
+      std::vector<Tensor<1, dim>>(dim));
     std::vector<unsigned int> component(dofs_per_cell);
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       component[i] = fe->system_to_component_index(i).first;
@@ -60,109 +60,113 @@ namespace tribos
     Tensor<4, dim> A;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      if (!cell->is_locally_owned())
+        continue;
+      fe_values.reinit(cell);
+      cell->get_dof_indices(dof_indices);
+      cell_matrix = 0;
+      cell_rhs    = 0;
+
+      fe_values.get_function_gradients(ghosted_solution, gradients);
+      const Material<dim> &material  = *materials[cell->material_id()];
+      const unsigned int   n_history = material.n_history_variables();
+      const unsigned int   offset = history_offset[cell->active_cell_index()];
+
+      for (unsigned int q = 0; q < n_q; ++q)
       {
-        if (!cell->is_locally_owned())
-          continue;
-        fe_values.reinit(cell);
-        cell->get_dof_indices(dof_indices);
-        cell_matrix = 0;
-        cell_rhs    = 0;
+        Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+        for (unsigned int c = 0; c < dim; ++c)
+          F[c] += gradients[q][c];
 
-        fe_values.get_function_gradients(ghosted_solution, gradients);
-        const Material<dim> &material = *materials[cell->material_id()];
-        const unsigned int   n_history = material.n_history_variables();
-        const unsigned int   offset =
-          history_offset[cell->active_cell_index()];
+        const double *old_history =
+          n_history ? &history_old[offset + q * n_history] : nullptr;
+        double *new_history =
+          n_history ? &history_new[offset + q * n_history] : nullptr;
+        material.evaluate(F,
+                          old_history,
+                          new_history,
+                          P,
+                          with_matrix ? &A : nullptr);
 
-        for (unsigned int q = 0; q < n_q; ++q)
+        const double JxW = fe_values.JxW(q);
+        if (body_force)
+          body_force->vector_value(fe_values.quadrature_point(q), force);
+
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const unsigned int    ci     = component[i];
+          const Tensor<1, dim> &grad_i = fe_values.shape_grad(i, q);
+          double                r      = P[ci] * grad_i;
+          if (body_force)
+            r -= force[ci] * fe_values.shape_value(i, q);
+          cell_rhs(i) -= r * JxW;
+
+          if (with_matrix)
           {
-            Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-            for (unsigned int c = 0; c < dim; ++c)
-              F[c] += gradients[q][c];
+            // A_{ci l cj n} grad_i[l]: the row of A seen by dof i.
+            Tensor<2, dim> row;
+            for (unsigned int l = 0; l < dim; ++l)
+              row += grad_i[l] * A[ci][l];
+            for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              cell_matrix(i, j) +=
+                (row[component[j]] * fe_values.shape_grad(j, q)) * JxW;
+          }
+        }
+      }
 
-            const double *old_history =
-              n_history ? &history_old[offset + q * n_history] : nullptr;
-            double *new_history =
-              n_history ? &history_new[offset + q * n_history] : nullptr;
-            material.evaluate(
-              F, old_history, new_history, P, with_matrix ? &A : nullptr);
-
-            const double JxW = fe_values.JxW(q);
-            if (body_force)
-              body_force->vector_value(fe_values.quadrature_point(q), force);
-
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const unsigned int    ci     = component[i];
-                const Tensor<1, dim> &grad_i = fe_values.shape_grad(i, q);
-                double                r      = P[ci] * grad_i;
-                if (body_force)
-                  r -= force[ci] * fe_values.shape_value(i, q);
-                cell_rhs(i) -= r * JxW;
-
-                if (with_matrix)
-                  {
-                    // A_{ci l cj n} grad_i[l]: the row of A seen by dof i.
-                    Tensor<2, dim> row;
-                    for (unsigned int l = 0; l < dim; ++l)
-                      row += grad_i[l] * A[ci][l];
-                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                      cell_matrix(i, j) +=
-                        (row[component[j]] * fe_values.shape_grad(j, q)) *
-                        JxW;
-                  }
-              }
+      if (!neumann_functions.empty())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+          {
+            const auto it = neumann_functions.find(face->boundary_id());
+            if (it == neumann_functions.end())
+              continue;
+            fe_face_values.reinit(cell, face);
+            for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+            {
+              it->second->vector_value(fe_face_values.quadrature_point(q),
+                                       force);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                cell_rhs(i) += force[component[i]] *
+                               fe_face_values.shape_value(i, q) *
+                               fe_face_values.JxW(q);
+            }
           }
 
-        if (!neumann_functions.empty())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary())
-              {
-                const auto it = neumann_functions.find(face->boundary_id());
-                if (it == neumann_functions.end())
-                  continue;
-                fe_face_values.reinit(cell, face);
-                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                  {
-                    it->second->vector_value(
-                      fe_face_values.quadrature_point(q), force);
-                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                      cell_rhs(i) += force[component[i]] *
-                                     fe_face_values.shape_value(i, q) *
-                                     fe_face_values.JxW(q);
-                  }
-              }
-
-        // The unconstrained residual carries the reactions.
-        cell_residual = cell_rhs;
-        cell_residual *= -1.;
-        full_residual.add(dof_indices, cell_residual);
-        homogeneous_constraints.distribute_local_to_global(cell_rhs,
-                                                           dof_indices,
-                                                           free_residual);
-        if (with_matrix)
-          constraints.distribute_local_to_global(
-            cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
-      }
+      // The unconstrained residual carries the reactions.
+      cell_residual = cell_rhs;
+      cell_residual *= -1.;
+      full_residual.add(dof_indices, cell_residual);
+      homogeneous_constraints.distribute_local_to_global(cell_rhs,
+                                                         dof_indices,
+                                                         free_residual);
+      if (with_matrix)
+        constraints.distribute_local_to_global(cell_matrix,
+                                               cell_rhs,
+                                               dof_indices,
+                                               system_matrix,
+                                               system_rhs);
+    }
 
     t.stop();
     if (contact)
-      {
-        TimerOutput::Scope contact_timer(timer, "contact assembly");
-        contact->assemble(with_matrix,
-                          constraints,
-                          homogeneous_constraints,
-                          system_matrix,
-                          system_rhs,
-                          free_residual,
-                          full_residual);
-      }
+    {
+      TimerOutput::Scope contact_timer(timer, "contact assembly");
+      contact->assemble(with_matrix,
+                        constraints,
+                        homogeneous_constraints,
+                        system_matrix,
+                        system_rhs,
+                        free_residual,
+                        full_residual);
+    }
 
     if (with_matrix)
-      {
-        system_matrix.compress(VectorOperation::add);
-        system_rhs.compress(VectorOperation::add);
-      }
+    {
+      system_matrix.compress(VectorOperation::add);
+      system_rhs.compress(VectorOperation::add);
+    }
     free_residual.compress(VectorOperation::add);
     full_residual.compress(VectorOperation::add);
     return free_residual.l2_norm();

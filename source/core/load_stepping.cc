@@ -17,8 +17,8 @@ namespace tribos
     setup_system();
     open_output();
 
-    pcout << "tribos: " << dim << "D scene <" << parameters.scene.name
-          << ">, " << triangulation.n_active_cells() << " cells, "
+    pcout << "tribos: " << dim << "D scene <" << parameters.scene.name << ">, "
+          << triangulation.n_active_cells() << " cells, "
           << dof_handler.n_dofs() << " dofs, " << materials.size()
           << " bodies, " << Utilities::MPI::n_mpi_processes(mpi_communicator)
           << " MPI process(es)" << std::endl;
@@ -29,114 +29,118 @@ namespace tribos
 
     write_vtu(0, 0.);
 
-    double       time      = 0;
-    double       increment = nominal_step;
-    Vector       converged = solution;
+    double       time               = 0;
+    double       increment          = nominal_step;
+    Vector       converged          = solution;
     unsigned int n_increments_total = 0;
 
     for (unsigned int step = 1; step <= ts.n_steps; ++step)
+    {
+      const double target          = step * nominal_step;
+      unsigned int n_iterations    = 0;
+      unsigned int n_cutbacks      = 0;
+      unsigned int cutbacks_in_row = 0;
+      double       residual        = 0;
+      unsigned int n_increments    = 0;
+
+      while (time < target - epsilon)
       {
-        const double target          = step * nominal_step;
-        unsigned int n_iterations    = 0;
-        unsigned int n_cutbacks      = 0;
-        unsigned int cutbacks_in_row = 0;
-        double       residual        = 0;
-        unsigned int n_increments    = 0;
+        const double next = std::min(time + increment, target);
+        Timer        increment_clock;
+        try
+        {
+          IncrementReport report =
+            solve_increment(next, step, n_increments_total + 1);
 
-        while (time < target - epsilon)
+          // Augmented Lagrangian: Uzawa updates of the multipliers,
+          // each followed by a new solve of the same increment.
+          if (contact && contact->augmented())
+            for (;;)
+            {
+              const auto  &cp = parameters.contact;
+              const double violation =
+                contact->augment(cp.augmentation_tolerance);
+              if (violation <= cp.augmentation_tolerance)
+                break;
+              if (report.n_augmentations >= cp.max_augmentations)
+                throw NonConvergence(
+                  "penetration " + to_scientific(violation) +
+                  " of the element size after " +
+                  std::to_string(report.n_augmentations) +
+                  " augmentations (Contact/Maximum augmentations)");
+              const IncrementReport again =
+                solve_increment(next, step, n_increments_total + 1);
+              report.n_iterations += again.n_iterations;
+              report.residual = again.residual;
+              ++report.n_augmentations;
+            }
+          commit_history();
+          converged = solution;
+          time      = next;
+          ++n_increments;
+          ++n_increments_total;
+          ++n_converged_increments;
+          n_iterations += report.n_iterations;
+          residual        = report.residual;
+          cutbacks_in_row = 0;
+          write_history_row(step,
+                            n_increments_total,
+                            time,
+                            report,
+                            n_cutbacks,
+                            increment_clock.wall_time());
+          if (report.n_iterations <= ts.easy_iterations)
+            increment = std::min(increment * ts.growth_factor, nominal_step);
+        }
+        catch (const NonConvergence &failure)
+        {
+          solution         = converged;
+          ghosted_solution = solution;
+          history_new      = history_old;
+          if (contact)
+            contact->restore();
+          ++n_cutbacks;
+          ++n_total_cutbacks;
+          ++cutbacks_in_row;
+          if (cutbacks_in_row > ts.max_cutbacks)
           {
-            const double next = std::min(time + increment, target);
-            Timer        increment_clock;
-            try
-              {
-                IncrementReport report =
-                  solve_increment(next, step, n_increments_total + 1);
-
-                // Augmented Lagrangian: Uzawa updates of the multipliers,
-                // each followed by a new solve of the same increment.
-                if (contact && contact->augmented())
-                  for (;;)
-                    {
-                      const auto &cp = parameters.contact;
-                      const double violation =
-                        contact->augment(cp.augmentation_tolerance);
-                      if (violation <= cp.augmentation_tolerance)
-                        break;
-                      if (report.n_augmentations >= cp.max_augmentations)
-                        throw NonConvergence(
-                          "penetration " + to_scientific(violation) +
-                          " of the element size after " +
-                          std::to_string(report.n_augmentations) +
-                          " augmentations (Contact/Maximum augmentations)");
-                      const IncrementReport again =
-                        solve_increment(next, step, n_increments_total + 1);
-                      report.n_iterations += again.n_iterations;
-                      report.residual = again.residual;
-                      ++report.n_augmentations;
-                    }
-                commit_history();
-                converged = solution;
-                time      = next;
-                ++n_increments;
-                ++n_increments_total;
-                ++n_converged_increments;
-                n_iterations += report.n_iterations;
-                residual        = report.residual;
-                cutbacks_in_row = 0;
-                write_history_row(step,
-                                  n_increments_total,
-                                  time,
-                                  report,
-                                  n_cutbacks,
-                                  increment_clock.wall_time());
-                if (report.n_iterations <= ts.easy_iterations)
-                  increment = std::min(increment * ts.growth_factor,
-                                       nominal_step);
-              }
-            catch (const NonConvergence &failure)
-              {
-                solution         = converged;
-                ghosted_solution = solution;
-                history_new      = history_old;
-                if (contact)
-                  contact->restore();
-                ++n_cutbacks;
-                ++n_total_cutbacks;
-                ++cutbacks_in_row;
-                if (cutbacks_in_row > ts.max_cutbacks)
-                  {
-                    const std::string message =
-                      "step " + std::to_string(step) + " at t = " +
-                      to_scientific(next) + " did not converge after " +
-                      std::to_string(ts.max_cutbacks) +
-                      " cutbacks (Time stepping/Maximum cutbacks): " +
-                      failure.what() +
-                      ". Outputs of the converged steps are kept.";
-                    write_summary("FAILED: " + message);
-                    throw NonConvergence(message);
-                  }
-                increment *= 0.5;
-                pcout << "  cutback " << cutbacks_in_row << " at t = " << next
-                      << " (" << failure.what() << "), new increment "
-                      << increment << std::endl;
-              }
+            const std::string message =
+              "step " + std::to_string(step) +
+              " at t = " + to_scientific(next) + " did not converge after " +
+              std::to_string(ts.max_cutbacks) +
+              " cutbacks (Time stepping/Maximum cutbacks): " + failure.what() +
+              ". Outputs of the converged steps are kept.";
+            write_summary("FAILED: " + message);
+            throw NonConvergence(message);
           }
-
-        const double elapsed = wall_clock.wall_time();
-        const double eta     = elapsed / time * (ts.end_time - time);
-        pcout << "step " << std::setw(4) << step << "/" << ts.n_steps
-              << "  t=" << std::setw(9) << std::setprecision(4) << time
-              << "  lf=" << std::fixed << std::setprecision(3)
-              << time / ts.end_time << std::defaultfloat
-              << "  incr " << n_increments << "  newton " << std::setw(3)
-              << n_iterations << "  |R|=" << std::scientific
-              << std::setprecision(2) << residual << std::defaultfloat
-              << "  cutbacks " << n_cutbacks << "  " << std::setprecision(3)
-              << elapsed << " s  ETA " << eta << " s" << std::endl;
-
-        if (parameters.output.is_output_step(step, ts.n_steps))
-          write_vtu(step, time);
+          increment *= 0.5;
+          pcout << "  cutback " << cutbacks_in_row << " at t = " << next << " ("
+                << failure.what() << "), new increment " << increment
+                << std::endl;
+        }
       }
+
+      const double elapsed = wall_clock.wall_time();
+      const double eta     = elapsed / time * (ts.end_time - time);
+      pcout << "step " << std::setw(4) << step << "/" << ts.n_steps
+            << "  t=" << std::setw(9) << std::setprecision(4) << time
+            << "  lf=" << std::fixed << std::setprecision(3)
+            << time / ts.end_time << std::defaultfloat << "  incr "
+            << n_increments << "  newton " << std::setw(3) << n_iterations
+            << "  |R|=" << std::scientific << std::setprecision(2) << residual
+            << std::defaultfloat << "  cutbacks " << n_cutbacks;
+      if (contact)
+      {
+        const ContactStatistics s = contact->statistics();
+        pcout << "  active/stick/slip " << s.n_active << "/" << s.n_stick << "/"
+              << s.n_slip;
+      }
+      pcout << "  " << std::setprecision(3) << elapsed << " s  ETA " << eta
+            << " s" << std::endl;
+
+      if (parameters.output.is_output_step(step, ts.n_steps))
+        write_vtu(step, time);
+    }
 
     write_summary("completed");
     pcout << "done: " << n_converged_increments << " increments, "

@@ -1,12 +1,11 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/core/problem.h>
 
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
-
-#include <deal.II/dofs/dof_tools.h>
 
 #include <cmath>
 #include <limits>
@@ -20,45 +19,44 @@ namespace tribos
     TimerOutput::Scope t(timer, "linear solve");
     const auto        &p = parameters.linear_solver;
     if (p.type == "direct")
-      {
-        SolverControl                  control(1, 0);
-        TrilinosWrappers::SolverDirect solver(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                         p.direct_solver));
-        solver.solve(system_matrix, newton_update, system_rhs);
-      }
+    {
+      SolverControl                  control(1, 0);
+      TrilinosWrappers::SolverDirect solver(
+        control,
+        TrilinosWrappers::SolverDirect::AdditionalData(false, p.direct_solver));
+      solver.solve(system_matrix, newton_update, system_rhs);
+    }
     else
-      {
-        TrilinosWrappers::PreconditionAMG                 amg;
-        TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        std::vector<std::vector<bool>>                    constant_modes;
-        DoFTools::extract_constant_modes(dof_handler,
-                                         ComponentMask(dim, true),
-                                         constant_modes);
-        data.constant_modes        = constant_modes;
-        data.elliptic              = true;
-        data.higher_order_elements = parameters.finite_element.degree > 1;
-        data.smoother_sweeps       = 2;
-        data.aggregation_threshold = 0.02;
-        amg.initialize(system_matrix, data);
+    {
+      TrilinosWrappers::PreconditionAMG                 amg;
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      std::vector<std::vector<bool>>                    constant_modes;
+      DoFTools::extract_constant_modes(dof_handler,
+                                       ComponentMask(dim, true),
+                                       constant_modes);
+      data.constant_modes        = constant_modes;
+      data.elliptic              = true;
+      data.higher_order_elements = parameters.finite_element.degree > 1;
+      data.smoother_sweeps       = 2;
+      data.aggregation_threshold = 0.02;
+      amg.initialize(system_matrix, data);
 
-        SolverControl control(p.max_iterations,
-                              p.tolerance * system_rhs.l2_norm());
-        SolverGMRES<Vector> solver(
-          control, SolverGMRES<Vector>::AdditionalData(200));
-        try
-          {
-            solver.solve(system_matrix, newton_update, system_rhs, amg);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            throw NonConvergence("GMRES/AMG did not converge in " +
-                                 std::to_string(e.last_step) +
-                                 " iterations (Linear solver/Maximum "
-                                 "iterations); try Type = direct");
-          }
+      SolverControl       control(p.max_iterations,
+                            p.tolerance * system_rhs.l2_norm());
+      SolverGMRES<Vector> solver(control,
+                                 SolverGMRES<Vector>::AdditionalData(200));
+      try
+      {
+        solver.solve(system_matrix, newton_update, system_rhs, amg);
       }
+      catch (const SolverControl::NoConvergence &e)
+      {
+        throw NonConvergence("GMRES/AMG did not converge in " +
+                             std::to_string(e.last_step) +
+                             " iterations (Linear solver/Maximum "
+                             "iterations); try Type = direct");
+      }
+    }
   }
 
 
@@ -81,35 +79,35 @@ namespace tribos
         columns.push_back(j);
 
     double       error = 0, size = 0;
-    const double h     = 1e-7 * std::max(1., solution.linfty_norm());
+    const double h = 1e-7 * std::max(1., solution.linfty_norm());
     Vector       unit(locally_owned_dofs, mpi_communicator);
     Vector       plus(locally_owned_dofs, mpi_communicator);
     Vector       column(locally_owned_dofs, mpi_communicator);
     for (const auto j : columns)
-      {
-        unit    = 0;
-        unit[j] = 1;
-        system_matrix.vmult(column, unit);
-        homogeneous_constraints.distribute(unit);
+    {
+      unit    = 0;
+      unit[j] = 1;
+      system_matrix.vmult(column, unit);
+      homogeneous_constraints.distribute(unit);
 
-        solution = start;
-        solution.add(h, unit);
-        ghosted_solution = solution;
-        assemble(false, homogeneous_constraints, time);
-        plus = free_residual;
-        solution = start;
-        solution.add(-h, unit);
-        ghosted_solution = solution;
-        assemble(false, homogeneous_constraints, time);
-        // free_residual holds -R: dR/du_j = -(r+ - r-)/(2h) = K e_j.
-        for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-          if (!homogeneous_constraints.is_constrained(i))
-            {
-              const double fd = -(plus[i] - free_residual[i]) / (2 * h);
-              error += (column[i] - fd) * (column[i] - fd);
-              size += column[i] * column[i];
-            }
-      }
+      solution = start;
+      solution.add(h, unit);
+      ghosted_solution = solution;
+      assemble(false, homogeneous_constraints, time);
+      plus     = free_residual;
+      solution = start;
+      solution.add(-h, unit);
+      ghosted_solution = solution;
+      assemble(false, homogeneous_constraints, time);
+      // free_residual holds -R: dR/du_j = -(r+ - r-)/(2h) = K e_j.
+      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+        if (!homogeneous_constraints.is_constrained(i))
+        {
+          const double fd = -(plus[i] - free_residual[i]) / (2 * h);
+          error += (column[i] - fd) * (column[i] - fd);
+          size += column[i] * column[i];
+        }
+    }
     solution         = start;
     ghosted_solution = solution;
     return size > 0 ? std::sqrt(error / size) : 0.;
@@ -140,110 +138,110 @@ namespace tribos
     const double nan         = std::numeric_limits<double>::quiet_NaN();
 
     for (unsigned int iteration = 0;; ++iteration)
+    {
+      const AffineConstraints<double> &constraints =
+        (iteration == 0 ? increment_constraints : homogeneous_constraints);
+      const double residual = assemble(true, constraints, time);
+      if (!std::isfinite(residual))
+        throw NonConvergence("the residual is not finite");
+      const double force_scale = full_residual.l2_norm();
+
+      // Observed order of convergence from three successive residuals
+      // after the first solve (iteration 0 precedes the Dirichlet
+      // increment and says nothing about the rate).
+      double order = nan;
+      if (iteration >= 3 && previous[0] > 0 && previous[1] > 0 &&
+          residual > 0 && previous[0] != previous[1])
+        order = std::log(residual / previous[0]) /
+                std::log(previous[0] / previous[1]);
+      previous[1] = previous[0];
+      previous[0] = residual;
+
+      const double scale = std::max(std::max(reference, residual), force_scale);
+      convergence_csv->add_row({double(step),
+                                double(increment),
+                                time,
+                                double(iteration),
+                                residual,
+                                scale > 0 ? residual / scale : 0.,
+                                update_norm,
+                                step_length,
+                                order});
+
+      bool residual_converged = false;
+      if (iteration > 0)
       {
-        const AffineConstraints<double> &constraints =
-          (iteration == 0 ? increment_constraints : homogeneous_constraints);
-        const double residual = assemble(true, constraints, time);
-        if (!std::isfinite(residual))
-          throw NonConvergence("the residual is not finite");
-        const double force_scale = full_residual.l2_norm();
-
-        // Observed order of convergence from three successive residuals
-        // after the first solve (iteration 0 precedes the Dirichlet
-        // increment and says nothing about the rate).
-        double order = nan;
-        if (iteration >= 3 && previous[0] > 0 && previous[1] > 0 &&
-            residual > 0 && previous[0] != previous[1])
-          order = std::log(residual / previous[0]) /
-                  std::log(previous[0] / previous[1]);
-        previous[1] = previous[0];
-        previous[0] = residual;
-
-        const double scale = std::max(std::max(reference, residual), force_scale);
-        convergence_csv->add_row({double(step),
-                                  double(increment),
-                                  time,
-                                  double(iteration),
-                                  residual,
-                                  scale > 0 ? residual / scale : 0.,
-                                  update_norm,
-                                  step_length,
-                                  order});
-
-        bool residual_converged = false;
-        if (iteration > 0)
-          {
-            difference = solution;
-            difference -= start;
-            const double change = std::max(difference.l2_norm(),
-                                           solution.l2_norm());
-            residual_converged =
-              residual <= p.residual_tolerance * std::max(reference,
-                                                          force_scale) +
-                            p.absolute_residual_tolerance;
-            const bool update_converged =
-              update_norm <= p.increment_tolerance * change || change == 0;
-            // A correction at round-off level of the solution means the
-            // residual cannot get smaller in floating point: accept it
-            // (e.g. a stress-free rigid motion, whose residual is noise).
-            const bool stagnated = update_norm <= 1e-12 * change;
-            if ((residual_converged && update_converged) || stagnated)
-              {
-                n_total_newton_iterations += iteration;
-                return {iteration, residual, 0};
-              }
-            if (iteration >= p.max_iterations)
-              throw NonConvergence(
-                "Newton did not converge in " + std::to_string(iteration) +
-                " iterations (|R| = " + to_scientific(residual) +
-                "; Nonlinear solver/Maximum iterations)");
-          }
-        reference = std::max(reference, residual);
-
-        if (p.check_tangent && iteration > 0)
-          {
-            pcout << "  tangent check, iteration " << iteration
-                  << ": relative error " << tangent_error(time) << std::endl;
-            assemble(true, constraints, time);
-          }
-
-        newton_update = 0;
-        solve_linear_system(newton_update);
-        constraints.distribute(newton_update);
-
-        step_length = 1;
-        // No line search once the residual is at its tolerance (only the
-        // update is still too large): there is nothing left to decrease.
-        if (p.line_search && iteration > 0 && !residual_converged)
-          {
-            // Backtracking (Armijo) on the free residual norm. The first
-            // iteration carries the Dirichlet increment and is taken whole.
-            line_search_base = solution;
-            for (unsigned int k = 0;; ++k)
-              {
-                solution = line_search_base;
-                solution.add(step_length, newton_update);
-                ghosted_solution = solution;
-                double trial     = std::numeric_limits<double>::infinity();
-                try
-                  {
-                    trial = assemble(false, homogeneous_constraints, time);
-                  }
-                catch (const InvertedElement &)
-                  {}
-                if (trial <= (1 - 1e-4 * step_length) * residual ||
-                    k >= p.max_line_search_steps)
-                  break;
-                step_length *= 0.5;
-              }
-          }
-        else
-          {
-            solution.add(1., newton_update);
-            ghosted_solution = solution;
-          }
-        update_norm = step_length * newton_update.l2_norm();
+        difference = solution;
+        difference -= start;
+        const double change =
+          std::max(difference.l2_norm(), solution.l2_norm());
+        residual_converged =
+          residual <= p.residual_tolerance * std::max(reference, force_scale) +
+                        p.absolute_residual_tolerance;
+        const bool update_converged =
+          update_norm <= p.increment_tolerance * change || change == 0;
+        // A correction at round-off level of the solution means the
+        // residual cannot get smaller in floating point: accept it
+        // (e.g. a stress-free rigid motion, whose residual is noise).
+        const bool stagnated = update_norm <= 1e-12 * change;
+        if ((residual_converged && update_converged) || stagnated)
+        {
+          n_total_newton_iterations += iteration;
+          return {iteration, residual, 0};
+        }
+        if (iteration >= p.max_iterations)
+          throw NonConvergence("Newton did not converge in " +
+                               std::to_string(iteration) +
+                               " iterations (|R| = " + to_scientific(residual) +
+                               "; Nonlinear solver/Maximum iterations)");
       }
+      reference = std::max(reference, residual);
+
+      if (p.check_tangent && iteration > 0)
+      {
+        pcout << "  tangent check, iteration " << iteration
+              << ": relative error " << tangent_error(time) << std::endl;
+        assemble(true, constraints, time);
+      }
+
+      newton_update = 0;
+      solve_linear_system(newton_update);
+      constraints.distribute(newton_update);
+
+      step_length = 1;
+      // No line search once the residual is at its tolerance (only the
+      // update is still too large): there is nothing left to decrease.
+      if (p.line_search && iteration > 0 && !residual_converged)
+      {
+        // Backtracking (Armijo) on the free residual norm. The first
+        // iteration carries the Dirichlet increment and is taken whole.
+        line_search_base = solution;
+        for (unsigned int k = 0;; ++k)
+        {
+          solution = line_search_base;
+          solution.add(step_length, newton_update);
+          ghosted_solution = solution;
+          double trial     = std::numeric_limits<double>::infinity();
+          try
+          {
+            trial = assemble(false, homogeneous_constraints, time);
+          }
+          catch (const InvertedElement &)
+          {
+          }
+          if (trial <= (1 - 1e-4 * step_length) * residual ||
+              k >= p.max_line_search_steps)
+            break;
+          step_length *= 0.5;
+        }
+      }
+      else
+      {
+        solution.add(1., newton_update);
+        ghosted_solution = solution;
+      }
+      update_norm = step_length * newton_update.l2_norm();
+    }
   }
 
   template class Problem<2>;

@@ -1,10 +1,8 @@
 #include <tribos/core/problem.h>
 
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -39,26 +37,25 @@ namespace tribos
   void
   Problem<dim>::open_output()
   {
-    const bool        root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
-    const std::string dir  = parameters.output.directory;
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    const std::string dir = parameters.output.directory;
     if (root)
+    {
+      std::error_code error;
+      std::filesystem::create_directories(dir, error);
+      AssertThrow(!error && std::filesystem::is_directory(dir),
+                  ExcMessage("Parameter <Output/Directory> = <" + dir +
+                             ">: cannot create the directory (" +
+                             error.message() + ")."));
+      // Remove the series files of an earlier run, so that the folder
+      // holds one consistent run; other files are left alone.
+      for (const auto &entry : std::filesystem::directory_iterator(dir))
       {
-        std::error_code error;
-        std::filesystem::create_directories(dir, error);
-        AssertThrow(!error && std::filesystem::is_directory(dir),
-                    ExcMessage("Parameter <Output/Directory> = <" + dir +
-                               ">: cannot create the directory (" +
-                               error.message() + ")."));
-        // Remove the series files of an earlier run, so that the folder
-        // holds one consistent run; other files are left alone.
-        for (const auto &entry : std::filesystem::directory_iterator(dir))
-          {
-            const std::string name = entry.path().filename().string();
-            if (name.rfind("solution-", 0) == 0 ||
-                name.rfind("contact-", 0) == 0)
-              std::filesystem::remove(entry.path());
-          }
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("solution-", 0) == 0 || name.rfind("contact-", 0) == 0)
+          std::filesystem::remove(entry.path());
       }
+    }
     MPI_Barrier(mpi_communicator);
 
     std::vector<std::string> columns = {"step",
@@ -71,20 +68,20 @@ namespace tribos
                                         "wall_time"};
     for (const auto &c : parameters.boundary_conditions.dirichlet)
       for (unsigned int d = 0; d < dim; ++d)
-        columns.push_back("RF" + std::to_string(c.boundary_id) + "_" +
-                          axis[d]);
+        columns.push_back("RF" + std::to_string(c.boundary_id) + "_" + axis[d]);
     if (exact_displacement)
-      {
-        columns.push_back("error_L2");
-        columns.push_back("error_H1");
-      }
+    {
+      columns.push_back("error_L2");
+      columns.push_back("error_H1");
+    }
     if (contact)
-      {
-        for (const auto &name : contact->column_names())
-          columns.push_back(name);
-        columns.push_back("augmentations");
-      }
-    history_csv = std::make_unique<CsvWriter>(dir + "/history.csv", columns, root);
+    {
+      for (const auto &name : contact->column_names())
+        columns.push_back(name);
+      columns.push_back("augmentations");
+    }
+    history_csv =
+      std::make_unique<CsvWriter>(dir + "/history.csv", columns, root);
     convergence_csv =
       std::make_unique<CsvWriter>(dir + "/convergence.csv",
                                   std::vector<std::string>{"step",
@@ -108,13 +105,13 @@ namespace tribos
     std::vector<double> forces;
     for (const auto &per_component : reaction_dofs)
       for (unsigned int d = 0; d < dim; ++d)
-        {
-          double sum = 0;
-          for (const auto dof : per_component[d])
-            if (locally_owned_dofs.is_element(dof))
-              sum += full_residual[dof];
-          forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
-        }
+      {
+        double sum = 0;
+        for (const auto dof : per_component[d])
+          if (locally_owned_dofs.is_element(dof))
+            sum += full_residual[dof];
+        forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
+      }
     return forces;
   }
 
@@ -125,8 +122,8 @@ namespace tribos
   Problem<dim>::displacement_errors(const double time) const
   {
     exact_displacement->set_time(time);
-    const QGauss<dim>      error_quadrature(parameters.finite_element.degree + 3);
-    dealii::Vector<float>  cellwise(triangulation.n_active_cells());
+    const QGauss<dim> error_quadrature(parameters.finite_element.degree + 3);
+    dealii::Vector<float> cellwise(triangulation.n_active_cells());
     VectorTools::integrate_difference(dof_handler,
                                       ghosted_solution,
                                       *exact_displacement,
@@ -173,17 +170,17 @@ namespace tribos
     for (const double f : reaction_forces())
       row.push_back(f);
     if (exact_displacement)
-      {
-        const auto [l2, h1] = displacement_errors(time);
-        row.push_back(l2);
-        row.push_back(h1);
-      }
+    {
+      const auto [l2, h1] = displacement_errors(time);
+      row.push_back(l2);
+      row.push_back(h1);
+    }
     if (contact)
-      {
-        for (const double value : contact->columns())
-          row.push_back(value);
-        row.push_back(report.n_augmentations);
-      }
+    {
+      for (const double value : contact->columns())
+        row.push_back(value);
+      row.push_back(report.n_augmentations);
+    }
     history_csv->add_row(row);
   }
 
@@ -204,13 +201,17 @@ namespace tribos
     // Cell averages of the Cauchy stress: honest for every material,
     // including those whose stress lives only at quadrature points.
     const unsigned int n_stress = (dim == 2 ? 4 : 6);
-    const unsigned int stress_index[6][2] = {
-      {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
-    const char *stress_names[6] = {
-      "stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz",
-      "stress_xz"};
+    const unsigned int stress_index[6][2] =
+      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+    const char                         *stress_names[6] = {"stress_xx",
+                                                           "stress_yy",
+                                                           "stress_zz",
+                                                           "stress_xy",
+                                                           "stress_yz",
+                                                           "stress_xz"};
     std::vector<dealii::Vector<double>> stress(
-      n_stress, dealii::Vector<double>(triangulation.n_active_cells()));
+      n_stress,
+      dealii::Vector<double>(triangulation.n_active_cells()));
     dealii::Vector<double> von_mises(triangulation.n_active_cells());
     dealii::Vector<double> plastic_strain(triangulation.n_active_cells());
     dealii::Vector<double> body_id(triangulation.n_active_cells());
@@ -219,57 +220,61 @@ namespace tribos
     for (const auto &m : materials)
       any_history = any_history || m->n_history_variables() > 0;
 
-    FEValues<dim> fe_values(*fe, quadrature, update_gradients | update_JxW_values);
+    FEValues<dim>                            fe_values(*fe,
+                            quadrature,
+                            update_gradients | update_JxW_values);
     std::vector<std::vector<Tensor<1, dim>>> gradients(
-      quadrature.size(), std::vector<Tensor<1, dim>>(dim));
+      quadrature.size(),
+      std::vector<Tensor<1, dim>>(dim));
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
+      {
+        const unsigned int index = cell->active_cell_index();
+        fe_values.reinit(cell);
+        fe_values.get_function_gradients(ghosted_solution, gradients);
+        const auto           &material  = *materials[cell->material_id()];
+        const unsigned int    n_history = material.n_history_variables();
+        SymmetricTensor<2, 3> average;
+        double                volume = 0, peeq = 0;
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
         {
-          const unsigned int index = cell->active_cell_index();
-          fe_values.reinit(cell);
-          fe_values.get_function_gradients(ghosted_solution, gradients);
-          const auto        &material  = *materials[cell->material_id()];
-          const unsigned int n_history = material.n_history_variables();
-          SymmetricTensor<2, 3> average;
-          double                volume = 0, peeq = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            {
-              Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-              for (unsigned int c = 0; c < dim; ++c)
-                F[c] += gradients[q][c];
-              const double *history =
-                n_history ? &history_old[history_offset[index] + q * n_history] :
-                            nullptr;
-              average += fe_values.JxW(q) * material.cauchy_stress(F, history);
-              peeq += fe_values.JxW(q) *
-                      material.equivalent_plastic_strain(history);
-              volume += fe_values.JxW(q);
-            }
-          average /= volume;
-          for (unsigned int s = 0; s < n_stress; ++s)
-            stress[s][index] = average[stress_index[s][0]][stress_index[s][1]];
-          const SymmetricTensor<2, 3> dev = deviator(average);
-          von_mises[index]      = std::sqrt(1.5 * (dev * dev));
-          plastic_strain[index] = peeq / volume;
-          body_id[index]        = cell->material_id();
-          subdomain[index]      = cell->subdomain_id();
+          Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+          for (unsigned int c = 0; c < dim; ++c)
+            F[c] += gradients[q][c];
+          const double *history =
+            n_history ? &history_old[history_offset[index] + q * n_history] :
+                        nullptr;
+          average += fe_values.JxW(q) * material.cauchy_stress(F, history);
+          peeq +=
+            fe_values.JxW(q) * material.equivalent_plastic_strain(history);
+          volume += fe_values.JxW(q);
         }
+        average /= volume;
+        for (unsigned int s = 0; s < n_stress; ++s)
+          stress[s][index] = average[stress_index[s][0]][stress_index[s][1]];
+        const SymmetricTensor<2, 3> dev = deviator(average);
+        von_mises[index]                = std::sqrt(1.5 * (dev * dev));
+        plastic_strain[index]           = peeq / volume;
+        body_id[index]                  = cell->material_id();
+        subdomain[index]                = cell->subdomain_id();
+      }
 
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     using cell_iterator = typename Triangulation<dim>::active_cell_iterator;
-    const auto next_owned = [](const Triangulation<dim> &tria,
-                               cell_iterator             cell) {
+    const auto next_owned =
+      [](const Triangulation<dim> &tria, cell_iterator cell)
+    {
       while (cell != tria.end() && !cell->is_locally_owned())
         ++cell;
       return cell;
     };
     data_out.set_cell_selection(
-      [next_owned](const Triangulation<dim> &tria) {
-        return next_owned(tria, tria.begin_active());
-      },
-      [next_owned](const Triangulation<dim>                             &tria,
-                   const typename Triangulation<dim>::cell_iterator &cell) {
+      [next_owned](const Triangulation<dim> &tria)
+      { return next_owned(tria, tria.begin_active()); },
+      [next_owned](const Triangulation<dim>                         &tria,
+                   const typename Triangulation<dim>::cell_iterator &cell)
+      {
         cell_iterator next(cell);
         return next_owned(tria, ++next);
       });
@@ -293,28 +298,33 @@ namespace tribos
     std::array<dealii::Vector<double>, 4> contact_scalars;
     dealii::Vector<double>                contact_shear;
     if (contact)
-      {
-        node_dof_handler.distribute_dofs(node_fe);
-        std::vector<types::global_dof_index> vertex_to_dof(
-          triangulation.n_vertices(), numbers::invalid_dof_index);
-        for (const auto &cell : node_dof_handler.active_cell_iterators())
-          for (const unsigned int v : cell->vertex_indices())
-            vertex_to_dof[cell->vertex_index(v)] = cell->vertex_dof_index(v, 0);
-        for (auto &v : contact_scalars)
-          v.reinit(node_dof_handler.n_dofs());
-        contact_shear.reinit(dof_handler.n_dofs());
-        contact->nodal_fields(vertex_to_dof, contact_scalars, contact_shear);
-        const char *names[4] = {"CPRESS", "COPEN", "CSLIP", "CSTATUS"};
-        for (unsigned int i = 0; i < 4; ++i)
-          data_out.add_data_vector(node_dof_handler, contact_scalars[i], names[i]);
-        data_out.add_data_vector(contact_shear,
-                                 std::vector<std::string>(dim, "CSHEAR"),
-                                 DataOut<dim>::type_dof_data,
-                                 interpretation);
-      }
+    {
+      node_dof_handler.distribute_dofs(node_fe);
+      std::vector<types::global_dof_index> vertex_to_dof(
+        triangulation.n_vertices(),
+        numbers::invalid_dof_index);
+      for (const auto &cell : node_dof_handler.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          vertex_to_dof[cell->vertex_index(v)] = cell->vertex_dof_index(v, 0);
+      for (auto &v : contact_scalars)
+        v.reinit(node_dof_handler.n_dofs());
+      contact_shear.reinit(dof_handler.n_dofs());
+      contact->nodal_fields(vertex_to_dof, contact_scalars, contact_shear);
+      const char *names[4] = {"CPRESS", "COPEN", "CSLIP", "CSTATUS"};
+      for (unsigned int i = 0; i < 4; ++i)
+        data_out.add_data_vector(node_dof_handler,
+                                 contact_scalars[i],
+                                 names[i]);
+      data_out.add_data_vector(contact_shear,
+                               std::vector<std::string>(dim, "CSHEAR"),
+                               DataOut<dim>::type_dof_data,
+                               interpretation);
+    }
 
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const unsigned int rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
     if (n_ranks > 1)
       data_out.add_data_vector(subdomain, "subdomain");
     data_out.build_patches(parameters.finite_element.degree);
@@ -326,34 +336,34 @@ namespace tribos
 
     const std::string base = "solution-" + Utilities::int_to_string(step, 5);
     if (n_ranks == 1)
-      {
-        write_atomically(dir + base + ".vtu",
-                         [&](std::ostream &out) { data_out.write_vtu(out); });
-        pvd_records.emplace_back(time, base + ".vtu");
-      }
+    {
+      write_atomically(dir + base + ".vtu",
+                       [&](std::ostream &out) { data_out.write_vtu(out); });
+      pvd_records.emplace_back(time, base + ".vtu");
+    }
     else
+    {
+      const std::string piece =
+        base + "." + Utilities::int_to_string(rank, 4) + ".vtu";
+      write_atomically(dir + piece,
+                       [&](std::ostream &out) { data_out.write_vtu(out); });
+      MPI_Barrier(mpi_communicator);
+      if (rank == 0)
       {
-        const std::string piece =
-          base + "." + Utilities::int_to_string(rank, 4) + ".vtu";
-        write_atomically(dir + piece,
-                         [&](std::ostream &out) { data_out.write_vtu(out); });
-        MPI_Barrier(mpi_communicator);
-        if (rank == 0)
-          {
-            std::vector<std::string> pieces;
-            for (unsigned int r = 0; r < n_ranks; ++r)
-              pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
-                               ".vtu");
-            write_atomically(dir + base + ".pvtu", [&](std::ostream &out) {
-              data_out.write_pvtu_record(out, pieces);
-            });
-          }
-        pvd_records.emplace_back(time, base + ".pvtu");
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(base + "." + Utilities::int_to_string(r, 4) +
+                           ".vtu");
+        write_atomically(dir + base + ".pvtu",
+                         [&](std::ostream &out)
+                         { data_out.write_pvtu_record(out, pieces); });
       }
+      pvd_records.emplace_back(time, base + ".pvtu");
+    }
     if (rank == 0)
-      write_atomically(dir + "solution.pvd", [&](std::ostream &out) {
-        DataOutBase::write_pvd_record(out, pvd_records);
-      });
+      write_atomically(dir + "solution.pvd",
+                       [&](std::ostream &out)
+                       { DataOutBase::write_pvd_record(out, pvd_records); });
   }
 
 
@@ -364,44 +374,36 @@ namespace tribos
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
-    const auto wall = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto wall  = timer.get_summary_data(TimerOutput::total_wall_time);
     const auto calls = timer.get_summary_data(TimerOutput::n_calls);
     double     total = 0;
     for (const auto &[section, seconds] : wall)
       total += seconds;
 
-    write_atomically(parameters.output.directory + "/summary.txt",
-                     [&](std::ostream &out) {
-                       out << "status            " << status << '\n'
-                           << "dimension         " << dim << '\n'
-                           << "scene             " << parameters.scene.name
-                           << '\n'
-                           << "cells             "
-                           << triangulation.n_active_cells() << '\n'
-                           << "dofs              " << dof_handler.n_dofs()
-                           << '\n'
-                           << "bodies            " << materials.size() << '\n'
-                           << "MPI processes     "
-                           << Utilities::MPI::n_mpi_processes(mpi_communicator)
-                           << '\n'
-                           << "increments        " << n_converged_increments
-                           << '\n'
-                           << "newton iterations " << n_total_newton_iterations
-                           << '\n'
-                           << "cutbacks          " << n_total_cutbacks
-                           << "\n\n"
-                           << "section               calls    wall [s]  share\n";
-                       for (const auto &[section, seconds] : wall)
-                         out << std::left << std::setw(20) << section
-                             << std::right << std::setw(8)
-                             << static_cast<unsigned int>(calls.at(section))
-                             << ' ' << std::setw(11) << std::fixed
-                             << std::setprecision(4) << seconds << ' '
-                             << std::setw(6) << std::setprecision(2)
-                             << (total > 0 ? 100 * seconds / total : 0)
-                             << "%\n"
-                             << std::defaultfloat;
-                     });
+    write_atomically(
+      parameters.output.directory + "/summary.txt",
+      [&](std::ostream &out)
+      {
+        out << "status            " << status << '\n'
+            << "dimension         " << dim << '\n'
+            << "scene             " << parameters.scene.name << '\n'
+            << "cells             " << triangulation.n_active_cells() << '\n'
+            << "dofs              " << dof_handler.n_dofs() << '\n'
+            << "bodies            " << materials.size() << '\n'
+            << "MPI processes     "
+            << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'
+            << "increments        " << n_converged_increments << '\n'
+            << "newton iterations " << n_total_newton_iterations << '\n'
+            << "cutbacks          " << n_total_cutbacks << "\n\n"
+            << "section               calls    wall [s]  share\n";
+        for (const auto &[section, seconds] : wall)
+          out << std::left << std::setw(20) << section << std::right
+              << std::setw(8) << static_cast<unsigned int>(calls.at(section))
+              << ' ' << std::setw(11) << std::fixed << std::setprecision(4)
+              << seconds << ' ' << std::setw(6) << std::setprecision(2)
+              << (total > 0 ? 100 * seconds / total : 0) << "%\n"
+              << std::defaultfloat;
+      });
   }
 
   template class Problem<2>;

@@ -2,13 +2,10 @@
 #include <tribos/scene/scene.h>
 
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q1.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <set>
@@ -28,25 +25,24 @@ namespace tribos
         joined += (i ? ";" : "") + expressions[i];
       auto function = std::make_unique<FunctionParser<dim>>(expressions.size());
       try
-        {
-          function->initialize(FunctionParser<dim>::default_variable_names() +
-                                 ",t",
-                               joined,
-                               {{"pi", numbers::PI}},
-                               true);
-          // Evaluate once so that unknown symbols are reported now.
-          Vector<double> value(expressions.size());
-          function->vector_value(Point<dim>(), value);
-        }
+      {
+        function->initialize(FunctionParser<dim>::default_variable_names() +
+                               ",t",
+                             joined,
+                             {{"pi", numbers::PI}},
+                             true);
+        // Evaluate once so that unknown symbols are reported now.
+        Vector<double> value(expressions.size());
+        function->vector_value(Point<dim>(), value);
+      }
       catch (...)
-        {
-          AssertThrow(false,
-                      ExcMessage("Parameter <" + entry +
-                                 ">: cannot parse the expression(s) <" +
-                                 joined +
-                                 ">. Use x, y, z, t, pi and the functions "
-                                 "of deal.II's FunctionParser (muparser)."));
-        }
+      {
+        AssertThrow(false,
+                    ExcMessage("Parameter <" + entry +
+                               ">: cannot parse the expression(s) <" + joined +
+                               ">. Use x, y, z, t, pi and the functions "
+                               "of deal.II's FunctionParser (muparser)."));
+      }
       return function;
     }
   } // namespace
@@ -58,8 +54,7 @@ namespace tribos
                         const MPI_Comm                   mpi_communicator)
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
-    , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , timer(mpi_communicator,
             pcout,
             TimerOutput::never,
@@ -86,7 +81,8 @@ namespace tribos
     for (const auto &face : triangulation.active_face_iterators())
       if (face->at_boundary())
         existing.insert(face->boundary_id());
-    const auto require = [&](const unsigned int id, const std::string &entry) {
+    const auto require = [&](const unsigned int id, const std::string &entry)
+    {
       AssertThrow(existing.count(id) == 1,
                   ExcMessage("Parameter <Boundary conditions/" + entry +
                              "> names boundary id " + std::to_string(id) +
@@ -108,7 +104,7 @@ namespace tribos
   void
   Problem<dim>::setup_materials()
   {
-    const auto &m = parameters.materials;
+    const auto        &m        = parameters.materials;
     types::material_id max_body = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       max_body = std::max(max_body, cell->material_id());
@@ -130,27 +126,27 @@ namespace tribos
     unsigned int n_values = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
+      {
+        const unsigned int n =
+          materials[cell->material_id()]->n_history_variables();
+        if (n > 0)
         {
-          const unsigned int n =
-            materials[cell->material_id()]->n_history_variables();
-          if (n > 0)
-            {
-              history_offset[cell->active_cell_index()] = n_values;
-              n_values += n * n_q;
-            }
+          history_offset[cell->active_cell_index()] = n_values;
+          n_values += n * n_q;
         }
+      }
     history_old.assign(n_values, 0.);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() &&
           history_offset[cell->active_cell_index()] !=
             numbers::invalid_unsigned_int)
-        {
-          const auto        &material = *materials[cell->material_id()];
-          const unsigned int n        = material.n_history_variables();
-          for (unsigned int q = 0; q < n_q; ++q)
-            material.initialize_history(
-              &history_old[history_offset[cell->active_cell_index()] + q * n]);
-        }
+      {
+        const auto        &material = *materials[cell->material_id()];
+        const unsigned int n        = material.n_history_variables();
+        for (unsigned int q = 0; q < n_q; ++q)
+          material.initialize_history(
+            &history_old[history_offset[cell->active_cell_index()] + q * n]);
+      }
     history_new = history_old;
   }
 
@@ -161,8 +157,9 @@ namespace tribos
   Problem<dim>::setup_system()
   {
     TimerOutput::Scope t(timer, "setup");
-    fe = std::make_unique<FESystem<dim>>(
-      FE_Q<dim>(parameters.finite_element.degree), dim);
+    fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(
+                                           parameters.finite_element.degree),
+                                         dim);
     dof_handler.distribute_dofs(*fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
@@ -171,29 +168,29 @@ namespace tribos
     dirichlet_functions.clear();
     reaction_dofs.clear();
     for (const auto &c : bc.dirichlet)
+    {
+      dirichlet_functions.push_back(
+        make_vector_function<dim>(c.expressions,
+                                  "Boundary conditions/Dirichlet"));
+      std::vector<IndexSet> per_component;
+      for (unsigned int d = 0; d < dim; ++d)
       {
-        dirichlet_functions.push_back(make_vector_function<dim>(
-          c.expressions, "Boundary conditions/Dirichlet"));
-        std::vector<IndexSet> per_component;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            ComponentMask mask(dim, false);
-            mask.set(d, true);
-            per_component.push_back(
-              DoFTools::extract_boundary_dofs(dof_handler,
-                                              mask,
-                                              {static_cast<types::boundary_id>(
-                                                c.boundary_id)}));
-          }
-        reaction_dofs.push_back(per_component);
+        ComponentMask mask(dim, false);
+        mask.set(d, true);
+        per_component.push_back(DoFTools::extract_boundary_dofs(
+          dof_handler,
+          mask,
+          {static_cast<types::boundary_id>(c.boundary_id)}));
       }
+      reaction_dofs.push_back(per_component);
+    }
     neumann_functions.clear();
     for (const auto &c : bc.neumann)
       neumann_functions[c.boundary_id] =
         make_vector_function<dim>(c.expressions, "Boundary conditions/Neumann");
     if (!bc.body_force.empty())
-      body_force =
-        make_vector_function<dim>(bc.body_force, "Boundary conditions/Body force");
+      body_force = make_vector_function<dim>(bc.body_force,
+                                             "Boundary conditions/Body force");
     if (!parameters.verification.exact_displacement.empty())
       exact_displacement =
         make_vector_function<dim>(parameters.verification.exact_displacement,
@@ -202,23 +199,22 @@ namespace tribos
     setup_materials();
 
     if (!parameters.contact.pairs.empty())
-      {
-        AssertThrow(parameters.finite_element.degree == 1,
-                    ExcMessage("Contact needs Finite element/Polynomial "
-                               "degree = 1: node-to-segment contact works on "
-                               "the vertices and linear faces of Q1."));
-        contact = std::make_unique<ContactHandler<dim>>(
-          parameters.contact,
-          dof_handler,
-          [this](const types::material_id body) {
-            return materials[body]->youngs_modulus();
-          },
-          locally_owned_dofs,
-          mpi_communicator);
-        // Contact couples this process's slave nodes to master nodes
-        // anywhere: their dofs count as relevant (ghosted, constrained).
-        locally_relevant_dofs.add_indices(contact->contact_dofs());
-      }
+    {
+      AssertThrow(parameters.finite_element.degree == 1,
+                  ExcMessage("Contact needs Finite element/Polynomial "
+                             "degree = 1: node-to-segment contact works on "
+                             "the vertices and linear faces of Q1."));
+      contact = std::make_unique<ContactHandler<dim>>(
+        parameters.contact,
+        dof_handler,
+        [this](const types::material_id body)
+        { return materials[body]->youngs_modulus(); },
+        locally_owned_dofs,
+        mpi_communicator);
+      // Contact couples this process's slave nodes to master nodes
+      // anywhere: their dofs count as relevant (ghosted, constrained).
+      locally_relevant_dofs.add_indices(contact->contact_dofs());
+    }
 
     make_constraints(0, true, homogeneous_constraints);
     make_sparsity();
@@ -273,52 +269,53 @@ namespace tribos
     // Dirichlet: du = g(t) - u on the constrained dofs, or du = 0.
     const auto &bc = parameters.boundary_conditions;
     for (unsigned int i = 0; i < bc.dirichlet.size(); ++i)
+    {
+      const auto &c        = bc.dirichlet[i];
+      auto       &function = *dirichlet_functions[i];
+      function.set_time(time);
+      for (unsigned int k = 0; k < c.components.size(); ++k)
       {
-        const auto &c        = bc.dirichlet[i];
-        auto       &function = *dirichlet_functions[i];
-        function.set_time(time);
-        for (unsigned int k = 0; k < c.components.size(); ++k)
+        const unsigned int d = c.components[k];
+        ComponentMask      mask(dim, false);
+        mask.set(d, true);
+        std::map<types::global_dof_index, double> values;
+        // Expand the k-th expression to a dim-vector function whose
+        // component d is that expression.
+        const auto scalar = [&function, k](const Point<dim> &p)
+        {
+          return function.value(p, k);
+        };
+        VectorFunctionFromScalarFunctionObject<dim> component(scalar, d, dim);
+        VectorTools::interpolate_boundary_values(dof_handler,
+                                                 c.boundary_id,
+                                                 component,
+                                                 values,
+                                                 mask);
+        for (const auto &[dof, value] : values)
+          if (locally_relevant_dofs.is_element(dof) &&
+              !constraints.is_constrained(dof))
           {
-            const unsigned int d = c.components[k];
-            ComponentMask      mask(dim, false);
-            mask.set(d, true);
-            std::map<types::global_dof_index, double> values;
-            // Expand the k-th expression to a dim-vector function whose
-            // component d is that expression.
-            const auto scalar = [&function, k](const Point<dim> &p) {
-              return function.value(p, k);
-            };
-            VectorFunctionFromScalarFunctionObject<dim> component(scalar,
-                                                                  d,
-                                                                  dim);
-            VectorTools::interpolate_boundary_values(
-              dof_handler, c.boundary_id, component, values, mask);
-            for (const auto &[dof, value] : values)
-              if (locally_relevant_dofs.is_element(dof) &&
-                  !constraints.is_constrained(dof))
-                {
-                  constraints.add_line(dof);
-                  if (!homogeneous)
-                    constraints.set_inhomogeneity(dof,
-                                                  value - ghosted_solution[dof]);
-                }
+            constraints.add_line(dof);
+            if (!homogeneous)
+              constraints.set_inhomogeneity(dof, value - ghosted_solution[dof]);
           }
       }
+    }
 
     if (!bc.symmetry.empty())
-      {
-        AffineConstraints<double> symmetry(locally_relevant_dofs);
-        const std::set<types::boundary_id> ids(bc.symmetry.begin(),
-                                               bc.symmetry.end());
-        VectorTools::compute_no_normal_flux_constraints(dof_handler,
-                                                        0,
-                                                        ids,
-                                                        symmetry);
-        symmetry.close();
-        constraints.merge(
-          symmetry,
-          AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
-      }
+    {
+      AffineConstraints<double>          symmetry(locally_relevant_dofs);
+      const std::set<types::boundary_id> ids(bc.symmetry.begin(),
+                                             bc.symmetry.end());
+      VectorTools::compute_no_normal_flux_constraints(dof_handler,
+                                                      0,
+                                                      ids,
+                                                      symmetry);
+      symmetry.close();
+      constraints.merge(
+        symmetry,
+        AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
+    }
     constraints.close();
   }
 

@@ -7,7 +7,8 @@ namespace tribos
     : E(E)
     , lambda(E * nu / ((1 + nu) * (1 - 2 * nu)))
     , mu(E / (2 * (1 + nu)))
-  {}
+  {
+  }
 
 
 
@@ -27,17 +28,17 @@ namespace tribos
       P[i][i] += lambda * trace;
 
     if (tangent != nullptr)
-      {
-        Tensor<4, dim> &A = *tangent;
-        A                 = 0;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            {
-              A[i][i][j][j] += lambda;
-              A[i][j][i][j] += mu;
-              A[i][j][j][i] += mu;
-            }
-      }
+    {
+      Tensor<4, dim> &A = *tangent;
+      A                 = 0;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+        {
+          A[i][i][j][j] += lambda;
+          A[i][j][i][j] += mu;
+          A[i][j][j][i] += mu;
+        }
+    }
   }
 
 

@@ -16,8 +16,7 @@ namespace tribos
       return std::make_unique<NeoHookean<dim>>(E, nu);
     AssertThrow(false,
                 ExcMessage("Parameter <Materials/Model>: unknown model <" +
-                           model +
-                           ">. Allowed: linear elastic, neo-Hookean."));
+                           model + ">. Allowed: linear elastic, neo-Hookean."));
     return nullptr;
   }
 

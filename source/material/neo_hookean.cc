@@ -10,7 +10,8 @@ namespace tribos
     : E(E)
     , lambda(E * nu / ((1 + nu) * (1 - 2 * nu)))
     , mu(E / (2 * (1 + nu)))
-  {}
+  {
+  }
 
 
 
@@ -30,21 +31,20 @@ namespace tribos
     const double         log_J  = std::log(J);
     const Tensor<2, dim> F_inv  = invert(F);
     const Tensor<2, dim> F_invT = transpose(F_inv);
-    P = mu * (F - F_invT) + lambda * log_J * F_invT;
+    P                           = mu * (F - F_invT) + lambda * log_J * F_invT;
 
     if (tangent != nullptr)
-      {
-        Tensor<4, dim> &A           = *tangent;
-        const double    coefficient = mu - lambda * log_J;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            for (unsigned int k = 0; k < dim; ++k)
-              for (unsigned int l = 0; l < dim; ++l)
-                A[i][j][k][l] =
-                  (i == k && j == l ? mu : 0.) +
-                  coefficient * F_inv[j][k] * F_inv[l][i] +
-                  lambda * F_invT[i][j] * F_invT[k][l];
-      }
+    {
+      Tensor<4, dim> &A           = *tangent;
+      const double    coefficient = mu - lambda * log_J;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              A[i][j][k][l] = (i == k && j == l ? mu : 0.) +
+                              coefficient * F_inv[j][k] * F_inv[l][i] +
+                              lambda * F_invT[i][j] * F_invT[k][l];
+    }
   }
 
 

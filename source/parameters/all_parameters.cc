@@ -2,7 +2,6 @@
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
-
 #include <filesystem>
 #include <sstream>
 
@@ -68,36 +67,35 @@ namespace tribos
         // Entries first, then subsections, as in deal.II's own output.
         for (const auto &[name, node] : tree)
           if (node.get_child_optional("value"))
+          {
+            // Word-wrap the documentation to 78 columns.
+            std::istringstream words(node.get<std::string>("documentation"));
+            std::string        line;
+            for (std::string word; words >> word;)
             {
-              // Word-wrap the documentation to 78 columns.
-              std::istringstream words(node.get<std::string>("documentation"));
-              std::string        line;
-              for (std::string word; words >> word;)
-                {
-                  if (!line.empty() &&
-                      pad.size() + 2 + line.size() + 1 + word.size() > 78)
-                    {
-                      out << pad << "# " << line << '\n';
-                      line.clear();
-                    }
-                  line += (line.empty() ? "" : " ") + word;
-                }
-              if (!line.empty())
+              if (!line.empty() &&
+                  pad.size() + 2 + line.size() + 1 + word.size() > 78)
+              {
                 out << pad << "# " << line << '\n';
-              out << pad << "# Default: <"
-                  << node.get<std::string>("default_value")
-                  << ">  Allowed: " << node.get<std::string>("pattern_description")
-                  << '\n'
-                  << pad << "set " << name << " = "
-                  << node.get<std::string>("value") << "\n\n";
+                line.clear();
+              }
+              line += (line.empty() ? "" : " ") + word;
             }
+            if (!line.empty())
+              out << pad << "# " << line << '\n';
+            out << pad << "# Default: <"
+                << node.get<std::string>("default_value") << ">  Allowed: "
+                << node.get<std::string>("pattern_description") << '\n'
+                << pad << "set " << name << " = "
+                << node.get<std::string>("value") << "\n\n";
+          }
         for (const auto &[name, node] : tree)
           if (!node.get_child_optional("value"))
-            {
-              out << pad << "subsection " << name << "\n\n";
-              print_tree(node, out, indent + 2);
-              out << pad << "end\n\n";
-            }
+          {
+            out << pad << "subsection " << name << "\n\n";
+            print_tree(node, out, indent + 2);
+            out << pad << "end\n\n";
+          }
       }
     } // namespace
 
@@ -123,48 +121,48 @@ namespace tribos
                     const std::vector<std::string> &overrides)
     {
       for (const auto &assignment : overrides)
+      {
+        const auto equal = assignment.find('=');
+        AssertThrow(equal != std::string::npos,
+                    dealii::ExcMessage("--set <" + assignment +
+                                       ">: expected 'Section/Entry=value'."));
+        const std::string path  = assignment.substr(0, equal);
+        const std::string value = assignment.substr(equal + 1);
+
+        std::vector<std::string> sections;
+        std::string::size_type   begin = 0, slash;
+        while ((slash = path.find('/', begin)) != std::string::npos)
         {
-          const auto equal = assignment.find('=');
-          AssertThrow(equal != std::string::npos,
-                      dealii::ExcMessage("--set <" + assignment +
-                                         ">: expected 'Section/Entry=value'."));
-          const std::string path  = assignment.substr(0, equal);
-          const std::string value = assignment.substr(equal + 1);
+          sections.push_back(path.substr(begin, slash - begin));
+          begin = slash + 1;
+        }
+        const std::string entry = path.substr(begin);
 
-          std::vector<std::string> sections;
-          std::string::size_type   begin = 0, slash;
-          while ((slash = path.find('/', begin)) != std::string::npos)
-            {
-              sections.push_back(path.substr(begin, slash - begin));
-              begin = slash + 1;
-            }
-          const std::string entry = path.substr(begin);
-
-          unsigned int n_entered = 0;
-          try
-            {
-              for (const auto &section : sections)
-                {
-                  prm.enter_subsection(section);
-                  ++n_entered;
-                }
-              prm.set(entry, value);
-            }
-          catch (const dealii::ExceptionBase &)
-            {
-              for (; n_entered > 0; --n_entered)
-                prm.leave_subsection();
-              AssertThrow(false,
-                          dealii::ExcMessage(
-                            "--set <" + assignment + ">: <" + path +
-                            "> is not a declared parameter, or <" + value +
-                            "> is not an allowed value for it. Run "
-                            "'tribos --print-parameters' for every entry "
-                            "and its allowed values."));
-            }
+        unsigned int n_entered = 0;
+        try
+        {
+          for (const auto &section : sections)
+          {
+            prm.enter_subsection(section);
+            ++n_entered;
+          }
+          prm.set(entry, value);
+        }
+        catch (const dealii::ExceptionBase &)
+        {
           for (; n_entered > 0; --n_entered)
             prm.leave_subsection();
+          AssertThrow(false,
+                      dealii::ExcMessage(
+                        "--set <" + assignment + ">: <" + path +
+                        "> is not a declared parameter, or <" + value +
+                        "> is not an allowed value for it. Run "
+                        "'tribos --print-parameters' for every entry "
+                        "and its allowed values."));
         }
+        for (; n_entered > 0; --n_entered)
+          prm.leave_subsection();
+      }
     }
 
 
@@ -175,13 +173,13 @@ namespace tribos
                const std::vector<std::string> &overrides)
     {
       if (!filename.empty())
-        {
-          AssertThrow(std::filesystem::is_regular_file(filename),
-                      dealii::ExcMessage("Parameter file <" + filename +
-                                         "> does not exist or is not a "
-                                         "regular file."));
-          prm.parse_input(filename);
-        }
+      {
+        AssertThrow(std::filesystem::is_regular_file(filename),
+                    dealii::ExcMessage("Parameter file <" + filename +
+                                       "> does not exist or is not a "
+                                       "regular file."));
+        prm.parse_input(filename);
+      }
       apply_overrides(prm, overrides);
     }
 
@@ -194,13 +192,13 @@ namespace tribos
       dealii::ParameterHandler prm;
       prm.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3));
       if (!filename.empty())
-        {
-          AssertThrow(std::filesystem::is_regular_file(filename),
-                      dealii::ExcMessage("Parameter file <" + filename +
-                                         "> does not exist or is not a "
-                                         "regular file."));
-          prm.parse_input(filename, "", /*skip_undefined=*/true);
-        }
+      {
+        AssertThrow(std::filesystem::is_regular_file(filename),
+                    dealii::ExcMessage("Parameter file <" + filename +
+                                       "> does not exist or is not a "
+                                       "regular file."));
+        prm.parse_input(filename, "", /*skip_undefined=*/true);
+      }
       std::vector<std::string> dimension_overrides;
       for (const auto &o : overrides)
         if (o.rfind("Dimension=", 0) == 0)

@@ -62,54 +62,51 @@ namespace tribos
       neumann.clear();
 
       const std::string dirichlet_entry = "Boundary conditions/Dirichlet";
-      for (const auto &item :
-           Text::split_top_level(prm.get("Dirichlet"), ';'))
+      for (const auto &item : Text::split_top_level(prm.get("Dirichlet"), ';'))
+      {
+        const auto parts = Text::split_top_level(item, ':');
+        AssertThrow(parts.size() == 3,
+                    dealii::ExcMessage(
+                      "Parameter <" + dirichlet_entry + ">: item <" + item +
+                      "> must read 'id : components : values', e.g. "
+                      "'0 : xy : 0, 0'."));
+        DirichletCondition condition;
+        condition.boundary_id = read_boundary_id(parts[0], dirichlet_entry);
+        for (const char c : parts[1])
         {
-          const auto parts = Text::split_top_level(item, ':');
-          AssertThrow(parts.size() == 3,
+          AssertThrow(c == 'x' || c == 'y' || c == 'z',
                       dealii::ExcMessage(
-                        "Parameter <" + dirichlet_entry + ">: item <" + item +
-                        "> must read 'id : components : values', e.g. "
-                        "'0 : xy : 0, 0'."));
-          DirichletCondition condition;
-          condition.boundary_id = read_boundary_id(parts[0], dirichlet_entry);
-          for (const char c : parts[1])
-            {
-              AssertThrow(c == 'x' || c == 'y' || c == 'z',
-                          dealii::ExcMessage(
-                            "Parameter <" + dirichlet_entry +
-                            ">: components <" + parts[1] +
-                            "> may only contain the letters x, y, z."));
-              condition.components.push_back(c - 'x');
-            }
-          condition.expressions = Text::split_top_level(parts[2], ',');
-          AssertThrow(condition.expressions.size() ==
-                        condition.components.size(),
-                      dealii::ExcMessage(
-                        "Parameter <" + dirichlet_entry + ">: item <" + item +
-                        "> names " + std::to_string(condition.components.size()) +
-                        " components but gives " +
-                        std::to_string(condition.expressions.size()) +
-                        " values."));
-          dirichlet.push_back(condition);
+                        "Parameter <" + dirichlet_entry + ">: components <" +
+                        parts[1] + "> may only contain the letters x, y, z."));
+          condition.components.push_back(c - 'x');
         }
+        condition.expressions = Text::split_top_level(parts[2], ',');
+        AssertThrow(condition.expressions.size() == condition.components.size(),
+                    dealii::ExcMessage(
+                      "Parameter <" + dirichlet_entry + ">: item <" + item +
+                      "> names " + std::to_string(condition.components.size()) +
+                      " components but gives " +
+                      std::to_string(condition.expressions.size()) +
+                      " values."));
+        dirichlet.push_back(condition);
+      }
 
       symmetry = Text::parse_unsigned(prm.get("Symmetry"),
                                       "Boundary conditions/Symmetry");
 
       for (const auto &item : Text::split_top_level(prm.get("Neumann"), ';'))
-        {
-          const auto parts = Text::split_top_level(item, ':');
-          AssertThrow(parts.size() == 2,
-                      dealii::ExcMessage(
-                        "Parameter <Boundary conditions/Neumann>: item <" +
-                        item + "> must read 'id : tx, ty(, tz)'."));
-          NeumannCondition condition;
-          condition.boundary_id =
-            read_boundary_id(parts[0], "Boundary conditions/Neumann");
-          condition.expressions = Text::split_top_level(parts[1], ',');
-          neumann.push_back(condition);
-        }
+      {
+        const auto parts = Text::split_top_level(item, ':');
+        AssertThrow(parts.size() == 2,
+                    dealii::ExcMessage(
+                      "Parameter <Boundary conditions/Neumann>: item <" + item +
+                      "> must read 'id : tx, ty(, tz)'."));
+        NeumannCondition condition;
+        condition.boundary_id =
+          read_boundary_id(parts[0], "Boundary conditions/Neumann");
+        condition.expressions = Text::split_top_level(parts[1], ',');
+        neumann.push_back(condition);
+      }
 
       body_force = Text::split_top_level(prm.get("Body force"), ',');
       prm.leave_subsection();

@@ -20,16 +20,16 @@ namespace tribos
       std::string number = text;
       const auto  star   = text.find('*');
       if (text == "E")
-        {
-          result.relative_to_E = true;
-          number               = "1";
-        }
+      {
+        result.relative_to_E = true;
+        number               = "1";
+      }
       else if (star != std::string::npos &&
                Text::trim(text.substr(star + 1)) == "E")
-        {
-          result.relative_to_E = true;
-          number               = Text::trim(text.substr(0, star));
-        }
+      {
+        result.relative_to_E = true;
+        number               = Text::trim(text.substr(0, star));
+      }
       char *end    = nullptr;
       result.value = std::strtod(number.c_str(), &end);
       AssertThrow(!number.empty() && *end == '\0' && result.value > 0,
@@ -133,17 +133,17 @@ namespace tribos
     Contact::parse_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      tangent         = prm.get("Tangent");
-      passes          = prm.get("Passes");
-      search_distance = prm.get_double("Search distance");
+      tangent                = prm.get("Tangent");
+      passes                 = prm.get("Passes");
+      search_distance        = prm.get_double("Search distance");
       augmentation_tolerance = prm.get_double("Augmentation tolerance");
       max_augmentations      = prm.get_integer("Maximum augmentations");
       if (search_distance == 0)
         search_distance = std::numeric_limits<double>::infinity();
 
       const std::string default_method = prm.get("Method");
-      const auto        default_normal =
-        PenaltyValue::parse(prm.get("Penalty factor"), "Contact/Penalty factor");
+      const auto default_normal = PenaltyValue::parse(prm.get("Penalty factor"),
+                                                      "Contact/Penalty factor");
       AssertThrow(default_normal.given,
                   dealii::ExcMessage(
                     "Parameter <Contact/Penalty factor> must not be empty."));
@@ -158,146 +158,146 @@ namespace tribos
       const std::string rigid_entry = "Contact/Rigid surfaces";
       for (const auto &item :
            Text::split_top_level(prm.get("Rigid surfaces"), ';'))
+      {
+        const auto parts = Text::split_top_level(item, ':');
+        AssertThrow(parts.size() >= 4,
+                    dealii::ExcMessage("Parameter <" + rigid_entry +
+                                       ">: item <" + item +
+                                       "> is incomplete; see the entry's "
+                                       "documentation."));
+        RigidSurface surface;
+        surface.name     = parts[0];
+        surface.type     = parts[1];
+        surface.point    = Text::parse_doubles(parts[2], rigid_entry);
+        std::size_t next = 3;
+        if (surface.type == "plane")
+          surface.direction = Text::parse_doubles(parts[next++], rigid_entry);
+        else if (surface.type == "sphere" || surface.type == "cylinder")
         {
-          const auto parts = Text::split_top_level(item, ':');
-          AssertThrow(parts.size() >= 4,
-                      dealii::ExcMessage("Parameter <" + rigid_entry +
-                                         ">: item <" + item +
-                                         "> is incomplete; see the entry's "
-                                         "documentation."));
-          RigidSurface surface;
-          surface.name = parts[0];
-          surface.type = parts[1];
-          surface.point = Text::parse_doubles(parts[2], rigid_entry);
-          std::size_t next = 3;
-          if (surface.type == "plane")
-            surface.direction = Text::parse_doubles(parts[next++], rigid_entry);
-          else if (surface.type == "sphere" || surface.type == "cylinder")
-            {
-              const auto r = Text::parse_doubles(parts[next++], rigid_entry);
-              AssertThrow(r.size() == 1 && r[0] > 0,
-                          dealii::ExcMessage("Parameter <" + rigid_entry +
-                                             ">: surface <" + surface.name +
-                                             "> needs one radius > 0."));
-              surface.radius = r[0];
-              if (surface.type == "cylinder" && parts.size() == 6)
-                surface.direction =
-                  Text::parse_doubles(parts[next++], rigid_entry);
-            }
-          else
-            AssertThrow(false,
-                        dealii::ExcMessage(
-                          "Parameter <" + rigid_entry + ">: surface <" +
-                          surface.name + "> has unknown type <" +
-                          surface.type + ">. Allowed: plane, sphere, "
-                                         "cylinder."));
-          AssertThrow(next + 1 == parts.size(),
-                      dealii::ExcMessage("Parameter <" + rigid_entry +
-                                         ">: item <" + item +
-                                         "> has the wrong number of ':' "
-                                         "fields for a " + surface.type + "."));
-          surface.motion = Text::split_top_level(parts[next], ',');
-          AssertThrow(surface.point.size() == 3,
+          const auto r = Text::parse_doubles(parts[next++], rigid_entry);
+          AssertThrow(r.size() == 1 && r[0] > 0,
                       dealii::ExcMessage("Parameter <" + rigid_entry +
                                          ">: surface <" + surface.name +
-                                         "> needs a point with 3 "
-                                         "coordinates (z = 0 in 2D)."));
-          rigid_surfaces.push_back(surface);
+                                         "> needs one radius > 0."));
+          surface.radius = r[0];
+          if (surface.type == "cylinder" && parts.size() == 6)
+            surface.direction = Text::parse_doubles(parts[next++], rigid_entry);
         }
+        else
+          AssertThrow(false,
+                      dealii::ExcMessage("Parameter <" + rigid_entry +
+                                         ">: surface <" + surface.name +
+                                         "> has unknown type <" + surface.type +
+                                         ">. Allowed: plane, sphere, "
+                                         "cylinder."));
+        AssertThrow(next + 1 == parts.size(),
+                    dealii::ExcMessage("Parameter <" + rigid_entry +
+                                       ">: item <" + item +
+                                       "> has the wrong number of ':' "
+                                       "fields for a " +
+                                       surface.type + "."));
+        surface.motion = Text::split_top_level(parts[next], ',');
+        AssertThrow(surface.point.size() == 3,
+                    dealii::ExcMessage("Parameter <" + rigid_entry +
+                                       ">: surface <" + surface.name +
+                                       "> needs a point with 3 "
+                                       "coordinates (z = 0 in 2D)."));
+        rigid_surfaces.push_back(surface);
+      }
 
       pairs.clear();
       const std::string pair_entry = "Contact/Pairs";
       for (const auto &item : Text::split_top_level(prm.get("Pairs"), ';'))
+      {
+        const auto parts = Text::split_top_level(item, ':');
+        AssertThrow(parts.size() == 2 || parts.size() == 3,
+                    dealii::ExcMessage("Parameter <" + pair_entry +
+                                       ">: item <" + item +
+                                       "> must read 'slave : master' or "
+                                       "'slave : master : key=value, ...'."));
+        ContactPair pair;
+        const auto  slave = Text::parse_unsigned(parts[0], pair_entry);
+        AssertThrow(slave.size() == 1,
+                    dealii::ExcMessage("Parameter <" + pair_entry +
+                                       ">: slave <" + parts[0] +
+                                       "> must be one boundary id."));
+        pair.slave_boundary  = slave[0];
+        pair.master_boundary = std::numeric_limits<unsigned int>::max();
+        bool is_rigid        = false;
+        for (const auto &surface : rigid_surfaces)
+          if (surface.name == parts[1])
+            is_rigid = true;
+        if (is_rigid)
+          pair.rigid_surface = parts[1];
+        else
         {
-          const auto parts = Text::split_top_level(item, ':');
-          AssertThrow(parts.size() == 2 || parts.size() == 3,
-                      dealii::ExcMessage("Parameter <" + pair_entry +
-                                         ">: item <" + item +
-                                         "> must read 'slave : master' or "
-                                         "'slave : master : key=value, ...'."));
-          ContactPair pair;
-          const auto slave = Text::parse_unsigned(parts[0], pair_entry);
-          AssertThrow(slave.size() == 1,
-                      dealii::ExcMessage("Parameter <" + pair_entry +
-                                         ">: slave <" + parts[0] +
-                                         "> must be one boundary id."));
-          pair.slave_boundary  = slave[0];
-          pair.master_boundary = std::numeric_limits<unsigned int>::max();
-          bool is_rigid        = false;
-          for (const auto &surface : rigid_surfaces)
-            if (surface.name == parts[1])
-              is_rigid = true;
-          if (is_rigid)
-            pair.rigid_surface = parts[1];
-          else
-            {
-              char      *end = nullptr;
-              const long id  = std::strtol(parts[1].c_str(), &end, 10);
-              AssertThrow(!parts[1].empty() && *end == '\0' && id >= 0,
-                          dealii::ExcMessage(
-                            "Parameter <" + pair_entry + ">: master <" +
-                            parts[1] +
-                            "> is neither a boundary id nor the name of a "
-                            "surface in <Contact/Rigid surfaces>."));
-              pair.master_boundary = id;
-            }
-          pair.method               = default_method;
-          pair.normal_penalty       = default_normal;
-          pair.tangential_penalty   = default_tangential;
-          pair.friction_coefficient = default_mu;
-          bool tangential_given     = false;
-          if (parts.size() == 3)
-            for (const auto &option : Text::split_top_level(parts[2], ','))
-              {
-                const auto equal = option.find('=');
-                AssertThrow(equal != std::string::npos,
-                            dealii::ExcMessage("Parameter <" + pair_entry +
-                                               ">: option <" + option +
-                                               "> must read key=value."));
-                const std::string key = Text::trim(option.substr(0, equal));
-                const std::string value = Text::trim(option.substr(equal + 1));
-                if (key == "method")
-                  {
-                    AssertThrow(value == "penalty" ||
-                                  value == "lagrange multiplier" ||
-                                  value == "augmented lagrangian",
-                                dealii::ExcMessage(
-                                  "Parameter <" + pair_entry + ">: method <" +
-                                  value +
-                                  "> unknown. Allowed: penalty, lagrange "
-                                  "multiplier, augmented lagrangian."));
-                    pair.method = value;
-                  }
-                else if (key == "penalty")
-                  pair.normal_penalty = PenaltyValue::parse(value, pair_entry);
-                else if (key == "tangential penalty")
-                  {
-                    pair.tangential_penalty =
-                      PenaltyValue::parse(value, pair_entry);
-                    tangential_given = true;
-                  }
-                else if (key == "mu")
-                  {
-                    char *end                 = nullptr;
-                    pair.friction_coefficient = std::strtod(value.c_str(), &end);
-                    AssertThrow(*end == '\0' && pair.friction_coefficient >= 0,
-                                dealii::ExcMessage(
-                                  "Parameter <" + pair_entry + ">: mu = <" +
-                                  value + "> must be a number >= 0."));
-                  }
-                else
-                  AssertThrow(false,
-                              dealii::ExcMessage(
-                                "Parameter <" + pair_entry + ">: unknown "
-                                "option <" + key + ">. Allowed: method, "
-                                "penalty, tangential penalty, mu."));
-              }
-          if (!tangential_given && parts.size() == 3 &&
-              !PenaltyValue::parse(prm.get("Tangential penalty factor"), "")
-                 .given)
-            pair.tangential_penalty = pair.normal_penalty;
-          pairs.push_back(pair);
+          char      *end = nullptr;
+          const long id  = std::strtol(parts[1].c_str(), &end, 10);
+          AssertThrow(!parts[1].empty() && *end == '\0' && id >= 0,
+                      dealii::ExcMessage(
+                        "Parameter <" + pair_entry + ">: master <" + parts[1] +
+                        "> is neither a boundary id nor the name of a "
+                        "surface in <Contact/Rigid surfaces>."));
+          pair.master_boundary = id;
         }
+        pair.method               = default_method;
+        pair.normal_penalty       = default_normal;
+        pair.tangential_penalty   = default_tangential;
+        pair.friction_coefficient = default_mu;
+        bool tangential_given     = false;
+        if (parts.size() == 3)
+          for (const auto &option : Text::split_top_level(parts[2], ','))
+          {
+            const auto equal = option.find('=');
+            AssertThrow(equal != std::string::npos,
+                        dealii::ExcMessage("Parameter <" + pair_entry +
+                                           ">: option <" + option +
+                                           "> must read key=value."));
+            const std::string key   = Text::trim(option.substr(0, equal));
+            const std::string value = Text::trim(option.substr(equal + 1));
+            if (key == "method")
+            {
+              AssertThrow(value == "penalty" ||
+                            value == "lagrange multiplier" ||
+                            value == "augmented lagrangian",
+                          dealii::ExcMessage(
+                            "Parameter <" + pair_entry + ">: method <" + value +
+                            "> unknown. Allowed: penalty, lagrange "
+                            "multiplier, augmented lagrangian."));
+              pair.method = value;
+            }
+            else if (key == "penalty")
+              pair.normal_penalty = PenaltyValue::parse(value, pair_entry);
+            else if (key == "tangential penalty")
+            {
+              pair.tangential_penalty = PenaltyValue::parse(value, pair_entry);
+              tangential_given        = true;
+            }
+            else if (key == "mu")
+            {
+              char *end                 = nullptr;
+              pair.friction_coefficient = std::strtod(value.c_str(), &end);
+              AssertThrow(*end == '\0' && pair.friction_coefficient >= 0,
+                          dealii::ExcMessage("Parameter <" + pair_entry +
+                                             ">: mu = <" + value +
+                                             "> must be a number >= 0."));
+            }
+            else
+              AssertThrow(false,
+                          dealii::ExcMessage(
+                            "Parameter <" + pair_entry +
+                            ">: unknown "
+                            "option <" +
+                            key +
+                            ">. Allowed: method, "
+                            "penalty, tangential penalty, mu."));
+          }
+        if (!tangential_given && parts.size() == 3 &&
+            !PenaltyValue::parse(prm.get("Tangential penalty factor"), "")
+               .given)
+          pair.tangential_penalty = pair.normal_penalty;
+        pairs.push_back(pair);
+      }
       prm.leave_subsection();
     }
 
@@ -307,26 +307,27 @@ namespace tribos
     Contact::check(const unsigned int dim) const
     {
       for (const auto &surface : rigid_surfaces)
-        {
-          AssertThrow(surface.motion.size() == dim,
+      {
+        AssertThrow(surface.motion.size() == dim,
+                    dealii::ExcMessage(
+                      "Parameter <Contact/Rigid surfaces>: surface <" +
+                      surface.name + "> needs " + std::to_string(dim) +
+                      " motion expressions."));
+        if (surface.type == "plane")
+          AssertThrow(surface.direction.size() == 3,
                       dealii::ExcMessage(
-                        "Parameter <Contact/Rigid surfaces>: surface <" +
-                        surface.name + "> needs " + std::to_string(dim) +
-                        " motion expressions."));
-          if (surface.type == "plane")
-            AssertThrow(surface.direction.size() == 3,
-                        dealii::ExcMessage(
-                          "Parameter <Contact/Rigid surfaces>: plane <" +
-                          surface.name +
-                          "> needs a normal with 3 components (z = 0 in "
-                          "2D)."));
-          if (surface.type == "cylinder" && dim == 3)
-            AssertThrow(surface.direction.size() == 3,
-                        dealii::ExcMessage(
-                          "Parameter <Contact/Rigid surfaces>: cylinder <" +
-                          surface.name + "> needs an axis 'ax, ay, az' in "
-                                         "3D."));
-        }
+                        "Parameter <Contact/Rigid surfaces>: plane <" +
+                        surface.name +
+                        "> needs a normal with 3 components (z = 0 in "
+                        "2D)."));
+        if (surface.type == "cylinder" && dim == 3)
+          AssertThrow(surface.direction.size() == 3,
+                      dealii::ExcMessage(
+                        "Parameter <Contact/Rigid surfaces>: cylinder <" +
+                        surface.name +
+                        "> needs an axis 'ax, ay, az' in "
+                        "3D."));
+      }
     }
   } // namespace Parameters
 } // namespace tribos

@@ -33,13 +33,11 @@ namespace tribos
     Materials::parse_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Materials");
-      models = dealii::Utilities::split_string_list(prm.get("Model"));
-      youngs_moduli =
-        Text::parse_doubles(prm.get("Young's modulus"),
-                            "Materials/Young's modulus");
-      poissons_ratios =
-        Text::parse_doubles(prm.get("Poisson's ratio"),
-                            "Materials/Poisson's ratio");
+      models          = dealii::Utilities::split_string_list(prm.get("Model"));
+      youngs_moduli   = Text::parse_doubles(prm.get("Young's modulus"),
+                                          "Materials/Young's modulus");
+      poissons_ratios = Text::parse_doubles(prm.get("Poisson's ratio"),
+                                            "Materials/Poisson's ratio");
       for (const double E : youngs_moduli)
         AssertThrow(E > 0,
                     dealii::ExcMessage(

@@ -54,11 +54,12 @@ namespace tribos
     NonlinearSolver::parse_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Nonlinear solver");
-      max_iterations              = prm.get_integer("Maximum iterations");
-      residual_tolerance          = prm.get_double("Residual tolerance");
-      absolute_residual_tolerance = prm.get_double("Absolute residual tolerance");
-      increment_tolerance         = prm.get_double("Increment tolerance");
-      line_search                 = prm.get_bool("Line search");
+      max_iterations     = prm.get_integer("Maximum iterations");
+      residual_tolerance = prm.get_double("Residual tolerance");
+      absolute_residual_tolerance =
+        prm.get_double("Absolute residual tolerance");
+      increment_tolerance   = prm.get_double("Increment tolerance");
+      line_search           = prm.get_bool("Line search");
       max_line_search_steps = prm.get_integer("Maximum line search steps");
       check_tangent         = prm.get_bool("Check tangent");
       prm.leave_subsection();

@@ -149,7 +149,10 @@ namespace tribos
                         Patterns::Double(),
                         "2D: the block spans x in [-w/2, w/2]; 3D (quarter "
                         "model): x, y in [0, w/2].");
-      prm.declare_entry("Block height", "2", Patterns::Double(), "Depth of the block below y = 0 (2D) or z = 0 (3D).");
+      prm.declare_entry("Block height",
+                        "2",
+                        Patterns::Double(),
+                        "Depth of the block below y = 0 (2D) or z = 0 (3D).");
       prm.declare_entry("Block subdivisions",
                         "8, 4",
                         Patterns::Anything(),

@@ -37,15 +37,15 @@ namespace tribos
     std::ostringstream row;
     row << std::setprecision(10);
     for (unsigned int i = 0; i < values.size(); ++i)
-      {
-        if (i)
-          row << ',';
-        // Integers (counters, ids) print without exponent or decimals.
-        if (values[i] == std::floor(values[i]) && std::abs(values[i]) < 1e15)
-          row << static_cast<long long>(values[i]);
-        else
-          row << values[i];
-      }
+    {
+      if (i)
+        row << ',';
+      // Integers (counters, ids) print without exponent or decimals.
+      if (values[i] == std::floor(values[i]) && std::abs(values[i]) < 1e15)
+        row << static_cast<long long>(values[i]);
+      else
+        row << values[i];
+    }
     file << row.str() << '\n' << std::flush;
   }
 } // namespace tribos

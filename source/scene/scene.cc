@@ -141,34 +141,36 @@ namespace tribos
                   const unsigned int  n_refinements)
     {
       if (dim == 2)
-        {
-          // Half disc x >= 0, then rotate by -90 degrees: y <= 0.
-          GridGenerator::half_hyper_ball(tria, Point<dim>(), radius);
-          tria.refine_global(n_refinements);
-          GridTools::transform(
-            [](const Point<dim> &x) {
-              Point<dim> y;
-              y[0] = x[1];
-              y[1] = -x[0];
-              return y;
-            },
-            tria);
-        }
+      {
+        // Half disc x >= 0, then rotate by -90 degrees: y <= 0.
+        GridGenerator::half_hyper_ball(tria, Point<dim>(), radius);
+        tria.refine_global(n_refinements);
+        GridTools::transform(
+          [](const Point<dim> &x)
+          {
+            Point<dim> y;
+            y[0] = x[1];
+            y[1] = -x[0];
+            return y;
+          },
+          tria);
+      }
       else
-        {
-          // Octant x, y, z >= 0, then rotate by -90 degrees about x.
-          GridGenerator::quarter_hyper_ball(tria, Point<dim>(), radius);
-          tria.refine_global(n_refinements);
-          GridTools::transform(
-            [](const Point<dim> &x) {
-              Point<dim> y;
-              y[0] = x[0];
-              y[1] = x[dim - 1];
-              y[2] = -x[1];
-              return y;
-            },
-            tria);
-        }
+      {
+        // Octant x, y, z >= 0, then rotate by -90 degrees about x.
+        GridGenerator::quarter_hyper_ball(tria, Point<dim>(), radius);
+        tria.refine_global(n_refinements);
+        GridTools::transform(
+          [](const Point<dim> &x)
+          {
+            Point<dim> y;
+            y[0] = x[0];
+            y[1] = x[dim - 1];
+            y[2] = -x[1];
+            return y;
+          },
+          tria);
+      }
       Tensor<1, dim> shift;
       shift[dim - 1] = radius + gap;
       GridTools::shift(shift, tria);
@@ -176,17 +178,17 @@ namespace tribos
       const double tolerance = 1e-10 * radius;
       for (const auto &face : tria.active_face_iterators())
         if (face->at_boundary())
-          {
-            const Point<dim> c = face->center();
-            if (std::abs(c[dim - 1] - (radius + gap)) < tolerance)
-              face->set_boundary_id(11);
-            else if (dim == 3 && std::abs(c[0]) < tolerance)
-              face->set_boundary_id(12);
-            else if (dim == 3 && std::abs(c[1]) < tolerance)
-              face->set_boundary_id(13);
-            else
-              face->set_boundary_id(10);
-          }
+        {
+          const Point<dim> c = face->center();
+          if (std::abs(c[dim - 1] - (radius + gap)) < tolerance)
+            face->set_boundary_id(11);
+          else if (dim == 3 && std::abs(c[0]) < tolerance)
+            face->set_boundary_id(12);
+          else if (dim == 3 && std::abs(c[1]) < tolerance)
+            face->set_boundary_id(13);
+          else
+            face->set_boundary_id(10);
+        }
       set_material_id(tria, 1);
     }
 
@@ -206,10 +208,10 @@ namespace tribos
         n <<= p.refinement;
       Point<dim> p1, p2;
       for (unsigned int d = 0; d < dim - 1; ++d)
-        {
-          p1[d] = (dim == 2 ? -0.5 * s.block_width : 0.);
-          p2[d] = 0.5 * s.block_width;
-        }
+      {
+        p1[d] = (dim == 2 ? -0.5 * s.block_width : 0.);
+        p2[d] = 0.5 * s.block_width;
+      }
       p1[dim - 1] = -s.block_height;
       make_box(block, counts, p1, p2, 0, 0);
 
@@ -232,19 +234,19 @@ namespace tribos
           face->set_all_manifold_ids(1);
       tria.set_manifold(1, SphericalManifold<dim>(centre));
       for (unsigned int cycle = 0; cycle < s.contact_refinements; ++cycle)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
         {
-          for (const auto &cell : tria.active_cell_iterators())
-            {
-              // Refine every cell that reaches into the refinement disc.
-              double distance = cell->center().distance(contact_point);
-              for (const unsigned int v : cell->vertex_indices())
-                distance =
-                  std::min(distance, cell->vertex(v).distance(contact_point));
-              if (distance < s.refinement_radius * s.radius)
-                cell->set_refine_flag();
-            }
-          tria.execute_coarsening_and_refinement();
+          // Refine every cell that reaches into the refinement disc.
+          double distance = cell->center().distance(contact_point);
+          for (const unsigned int v : cell->vertex_indices())
+            distance =
+              std::min(distance, cell->vertex(v).distance(contact_point));
+          if (distance < s.refinement_radius * s.radius)
+            cell->set_refine_flag();
         }
+        tria.execute_coarsening_and_refinement();
+      }
     }
 
 
@@ -265,41 +267,41 @@ namespace tribos
       const double       tolerance   = 1e-10 * s.radius;
 
       if constexpr (dim == 2)
-        {
-          GridGenerator::subdivided_hyper_rectangle(
-            tria,
-            {(1u << (s.radial_refinements + p.refinement)), axial_cells},
-            Point<2>(),
-            Point<2>(s.radius, 0.5 * s.height));
-        }
+      {
+        GridGenerator::subdivided_hyper_rectangle(
+          tria,
+          {(1u << (s.radial_refinements + p.refinement)), axial_cells},
+          Point<2>(),
+          Point<2>(s.radius, 0.5 * s.height));
+      }
       else
-        {
-          Triangulation<2> disc;
-          GridGenerator::quarter_hyper_ball(disc, Point<2>(), s.radius);
-          disc.refine_global(s.radial_refinements + p.refinement);
-          Triangulation<2> flat;
-          GridGenerator::flatten_triangulation(disc, flat);
-          GridGenerator::extrude_triangulation(flat,
-                                               axial_cells + 1,
-                                               0.5 * s.height,
-                                               tria);
-        }
+      {
+        Triangulation<2> disc;
+        GridGenerator::quarter_hyper_ball(disc, Point<2>(), s.radius);
+        disc.refine_global(s.radial_refinements + p.refinement);
+        Triangulation<2> flat;
+        GridGenerator::flatten_triangulation(disc, flat);
+        GridGenerator::extrude_triangulation(flat,
+                                             axial_cells + 1,
+                                             0.5 * s.height,
+                                             tria);
+      }
 
       for (const auto &face : tria.active_face_iterators())
         if (face->at_boundary())
-          {
-            const Point<dim> c = face->center();
-            if (std::abs(c[dim - 1] - 0.5 * s.height) < tolerance)
-              face->set_boundary_id(3);
-            else if (std::abs(c[dim - 1]) < tolerance)
-              face->set_boundary_id(2);
-            else if (std::abs(c[0]) < tolerance)
-              face->set_boundary_id(0);
-            else if (dim == 3 && std::abs(c[1]) < tolerance)
-              face->set_boundary_id(1);
-            else
-              face->set_boundary_id(4);
-          }
+        {
+          const Point<dim> c = face->center();
+          if (std::abs(c[dim - 1] - 0.5 * s.height) < tolerance)
+            face->set_boundary_id(3);
+          else if (std::abs(c[dim - 1]) < tolerance)
+            face->set_boundary_id(2);
+          else if (std::abs(c[0]) < tolerance)
+            face->set_boundary_id(0);
+          else if (dim == 3 && std::abs(c[1]) < tolerance)
+            face->set_boundary_id(1);
+          else
+            face->set_boundary_id(4);
+        }
       set_material_id(tria, 0);
     }
 
@@ -315,7 +317,7 @@ namespace tribos
     create_ring_on_foundation(const Parameters::Scene &p,
                               Triangulation<2>        &tria)
     {
-      const auto        &s = p.ring_on_foundation;
+      const auto        &s        = p.ring_on_foundation;
       const unsigned int n_radial = s.radial_cells_per_layer << p.refinement;
       const unsigned int n_circumferential = s.circumferential_cells
                                              << p.refinement;
@@ -340,7 +342,8 @@ namespace tribos
 
       const double centre_height = s.outer_radius + s.gap;
       GridTools::transform(
-        [centre_height](const Point<2> &q) {
+        [centre_height](const Point<2> &q)
+        {
           return Point<2>(q[0] * std::cos(q[1]),
                           centre_height + q[0] * std::sin(q[1]));
         },
@@ -386,33 +389,33 @@ namespace tribos
     SubCellData                boundary;
 
     for (const auto *body : bodies)
+    {
+      const unsigned int offset = vertices.size();
+      vertices.insert(vertices.end(),
+                      body->get_vertices().begin(),
+                      body->get_vertices().end());
+      for (const auto &cell : body->active_cell_iterators())
       {
-        const unsigned int offset = vertices.size();
-        vertices.insert(vertices.end(),
-                        body->get_vertices().begin(),
-                        body->get_vertices().end());
-        for (const auto &cell : body->active_cell_iterators())
-          {
-            CellData<dim> data(cell->n_vertices());
-            for (const unsigned int v : cell->vertex_indices())
-              data.vertices[v] = offset + cell->vertex_index(v);
-            data.material_id = cell->material_id();
-            cells.push_back(data);
+        CellData<dim> data(cell->n_vertices());
+        for (const unsigned int v : cell->vertex_indices())
+          data.vertices[v] = offset + cell->vertex_index(v);
+        data.material_id = cell->material_id();
+        cells.push_back(data);
 
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary() && face->boundary_id() != 0)
-                {
-                  CellData<dim - 1> face_data(face->n_vertices());
-                  for (const unsigned int v : face->vertex_indices())
-                    face_data.vertices[v] = offset + face->vertex_index(v);
-                  face_data.boundary_id = face->boundary_id();
-                  if constexpr (dim == 2)
-                    boundary.boundary_lines.push_back(face_data);
-                  else
-                    boundary.boundary_quads.push_back(face_data);
-                }
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() != 0)
+          {
+            CellData<dim - 1> face_data(face->n_vertices());
+            for (const unsigned int v : face->vertex_indices())
+              face_data.vertices[v] = offset + face->vertex_index(v);
+            face_data.boundary_id = face->boundary_id();
+            if constexpr (dim == 2)
+              boundary.boundary_lines.push_back(face_data);
+            else
+              boundary.boundary_quads.push_back(face_data);
           }
       }
+    }
     GridTools::delete_unused_vertices(vertices, cells, boundary);
     result.create_triangulation(vertices, cells, boundary);
   }
@@ -434,15 +437,15 @@ namespace tribos
     else if (name == "cylinder compression")
       create_cylinder_compression(parameters, triangulation);
     else if (name == "ring on foundation")
-      {
-        if constexpr (dim == 2)
-          create_ring_on_foundation(parameters, triangulation);
-        else
-          AssertThrow(false,
-                      ExcMessage("Parameter <Scene/Name> = <ring on "
-                                 "foundation> is a 2D scene: set "
-                                 "Dimension = 2."));
-      }
+    {
+      if constexpr (dim == 2)
+        create_ring_on_foundation(parameters, triangulation);
+      else
+        AssertThrow(false,
+                    ExcMessage("Parameter <Scene/Name> = <ring on "
+                               "foundation> is a 2D scene: set "
+                               "Dimension = 2."));
+    }
     else if (name == "gmsh")
       read_gmsh(parameters, triangulation);
     else

@@ -18,7 +18,8 @@ namespace tribos
   public:
     explicit NonConvergence(const std::string &what)
       : std::runtime_error(what)
-    {}
+    {
+    }
   };
 
   /** A number in scientific notation with 3 decimals, for messages. */
@@ -36,7 +37,8 @@ namespace tribos
   public:
     explicit InvertedElement(const std::string &what)
       : NonConvergence(what)
-    {}
+    {
+    }
   };
 } // namespace tribos
 

@@ -9,9 +9,7 @@
 #include <tribos/parameters/contact.h>
 
 #include <deal.II/base/index_set.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -34,10 +32,10 @@ namespace tribos
     /** Per pair: sum of A t_N, sum of A |T|, and the resultant force
      * on the slave body (x, y, z). */
     std::vector<std::array<double, 5>> pair_forces;
-    double       max_penetration = 0;
-    unsigned int n_active        = 0;
-    unsigned int n_stick         = 0;
-    unsigned int n_slip          = 0;
+    double                             max_penetration = 0;
+    unsigned int                       n_active        = 0;
+    unsigned int                       n_stick         = 0;
+    unsigned int                       n_slip          = 0;
   };
 
   /**
@@ -54,11 +52,11 @@ namespace tribos
   {
   public:
     ContactHandler(
-      const Parameters::Contact                         &parameters,
-      const DoFHandler<dim>                             &dof_handler,
+      const Parameters::Contact                       &parameters,
+      const DoFHandler<dim>                           &dof_handler,
       const std::function<double(types::material_id)> &youngs_modulus,
-      const IndexSet                                    &locally_owned_dofs,
-      const MPI_Comm                                     mpi_communicator);
+      const IndexSet                                  &locally_owned_dofs,
+      const MPI_Comm                                   mpi_communicator);
 
     /** The dofs of every contact node: they must be ghosted on all ranks. */
     const IndexSet &
@@ -165,13 +163,13 @@ namespace tribos
 
     struct Pair
     {
-      Parameters::ContactPair               description;
+      Parameters::ContactPair              description;
       std::shared_ptr<ContactSurface<dim>> slave;
       std::shared_ptr<ContactSurface<dim>> master;
       std::shared_ptr<RigidSurface<dim>>   rigid;
-      ContactLaw                            law;
-      double                                area_factor = 1;
-      ContactSearch<dim>                    search;
+      ContactLaw                           law;
+      double                               area_factor = 1;
+      ContactSearch<dim>                   search;
 
       std::vector<bool>               owned;
       std::vector<double>             multipliers, committed_multipliers;

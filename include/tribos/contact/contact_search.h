@@ -29,7 +29,7 @@ namespace tribos
     /** (Re)build the tree for the faces of @p surface at @p positions
      * (one per surface node). */
     void
-    build(const ContactSurface<dim> &surface,
+    build(const ContactSurface<dim>       &surface,
           const std::vector<Vec3<double>> &positions);
 
     /**

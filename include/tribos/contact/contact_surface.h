@@ -5,7 +5,6 @@
 #include <tribos/contact/vec3.h>
 
 #include <deal.II/base/types.h>
-
 #include <deal.II/dofs/dof_handler.h>
 
 #include <array>
@@ -31,14 +30,14 @@ namespace tribos
 
     struct Node
     {
-      unsigned int                                vertex;
-      std::array<types::global_dof_index, dim>    dofs;
-      Vec3<double>                                reference{{0, 0, 0}};
+      unsigned int                             vertex;
+      std::array<types::global_dof_index, dim> dofs;
+      Vec3<double>                             reference{{0, 0, 0}};
       /** Tributary area (24): integral of the face shape function of the
        * node over the surface, in the reference configuration. */
-      double                                      area = 0;
+      double area = 0;
       /** Faces this node belongs to. */
-      std::vector<unsigned int>                   faces;
+      std::vector<unsigned int> faces;
     };
 
     struct Face
@@ -50,11 +49,11 @@ namespace tribos
        * Per local coordinate and side (-1, +1): whether another face of the
        * surface continues across that edge (false: the surface ends).
        */
-      bool continues[2][2] = {{false, false}, {false, false}};
+      bool               continues[2][2] = {{false, false}, {false, false}};
       types::material_id body;
     };
 
-    ContactSurface(const DoFHandler<dim> &dof_handler,
+    ContactSurface(const DoFHandler<dim>   &dof_handler,
                    const types::boundary_id boundary_id);
 
     types::boundary_id
@@ -83,9 +82,9 @@ namespace tribos
     }
 
   private:
-    types::boundary_id id;
-    std::vector<Node>  node_list;
-    std::vector<Face>  face_list;
+    types::boundary_id           id;
+    std::vector<Node>            node_list;
+    std::vector<Face>            face_list;
     std::set<types::material_id> body_ids;
   };
 } // namespace tribos

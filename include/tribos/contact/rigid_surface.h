@@ -51,15 +51,16 @@ namespace tribos
     {
       const Vec3<Number> r = x - to<Number>(point + shift);
       if (description.type == "plane")
-        {
-          n    = to<Number>(direction);
-          gap  = dot(r, n);
-          xbar = x - scale(gap, n);
-          return;
-        }
+      {
+        n    = to<Number>(direction);
+        gap  = dot(r, n);
+        xbar = x - scale(gap, n);
+        return;
+      }
       Vec3<Number> radial = r;
       if (description.type == "cylinder" && dim == 3)
-        radial = r - scale(dot(r, to<Number>(direction)), to<Number>(direction));
+        radial =
+          r - scale(dot(r, to<Number>(direction)), to<Number>(direction));
       const Number distance = norm(radial);
       n                     = scale(1. / distance, radial);
       gap                   = distance - description.radius;
@@ -67,9 +68,9 @@ namespace tribos
     }
 
   private:
-    const Parameters::RigidSurface      description;
-    Vec3<double>                        point;
-    Vec3<double>                        direction;
+    const Parameters::RigidSurface     description;
+    Vec3<double>                       point;
+    Vec3<double>                       direction;
     std::unique_ptr<FunctionParser<1>> motion;
   };
 } // namespace tribos

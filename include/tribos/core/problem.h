@@ -11,13 +11,9 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/distributed/shared_tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -33,8 +29,8 @@ namespace tribos
   /** Counters of one converged increment, reported and written to CSV. */
   struct IncrementReport
   {
-    unsigned int n_iterations    = 0;
-    double       residual        = 0;
+    unsigned int n_iterations = 0;
+    double       residual     = 0;
     /** Uzawa multiplier updates (augmented Lagrangian). */
     unsigned int n_augmentations = 0;
   };
@@ -92,8 +88,8 @@ namespace tribos
     void
     make_sparsity();
     void
-    make_constraints(const double     time,
-                     const bool       homogeneous,
+    make_constraints(const double               time,
+                     const bool                 homogeneous,
                      AffineConstraints<double> &constraints) const;
     void
     commit_history();
@@ -181,15 +177,15 @@ namespace tribos
 
     std::vector<std::unique_ptr<FunctionParser<dim>>> dirichlet_functions;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>>
-                                        neumann_functions;
+                                         neumann_functions;
     std::unique_ptr<FunctionParser<dim>> body_force;
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
 
     /** Per Dirichlet condition: all dofs on its boundary, per component. */
     std::vector<std::vector<IndexSet>> reaction_dofs;
 
-    std::unique_ptr<CsvWriter>                 history_csv;
-    std::unique_ptr<CsvWriter>                 convergence_csv;
+    std::unique_ptr<CsvWriter>                  history_csv;
+    std::unique_ptr<CsvWriter>                  convergence_csv;
     std::vector<std::pair<double, std::string>> pvd_records;
 
     unsigned int n_total_newton_iterations = 0;

@@ -17,9 +17,9 @@ namespace tribos
      */
     struct PenaltyValue
     {
-      double value           = 0;
-      bool   relative_to_E   = false;
-      bool   given           = false;
+      double value         = 0;
+      bool   relative_to_E = false;
+      bool   given         = false;
 
       /** Parse @p text for the parameter @p entry (for messages). */
       static PenaltyValue
@@ -57,7 +57,7 @@ namespace tribos
       /** Master boundary id, or invalid if the master is rigid. */
       unsigned int master_boundary;
       /** Name of the rigid master surface (empty if deformable). */
-      std::string  rigid_surface;
+      std::string rigid_surface;
 
       std::string  method;
       PenaltyValue normal_penalty;

@@ -23,7 +23,8 @@ namespace tribos
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      /** Whether the nominal step @p step (1-based) of @p n_steps is written. */
+      /** Whether the nominal step @p step (1-based) of @p n_steps is written.
+       */
       bool
       is_output_step(const unsigned int step, const unsigned int n_steps) const;
     };

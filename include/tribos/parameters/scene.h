@@ -88,13 +88,13 @@ namespace tribos
      */
     struct RingOnFoundation
     {
-      double       inner_radius;
-      double       interface_radius;
-      double       outer_radius;
-      unsigned int circumferential_cells;
-      unsigned int radial_cells_per_layer;
-      double       foundation_width;
-      double       foundation_height;
+      double                    inner_radius;
+      double                    interface_radius;
+      double                    outer_radius;
+      unsigned int              circumferential_cells;
+      unsigned int              radial_cells_per_layer;
+      double                    foundation_width;
+      double                    foundation_height;
       std::vector<unsigned int> foundation_cells;
       double                    gap;
 
