@@ -17,7 +17,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests"))
-from tribos_test import run, read_csv, hertz_fit  # noqa: E402
+from tribos_test import run, read_csv, hertz_compare  # noqa: E402
 
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 tribos = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build",
@@ -70,17 +70,8 @@ with open(target, "w", newline="") as f:
                     print("%s level %d %s: no convergence" % (name, level, factor))
                     continue
                 history = read_csv(folder + "/history.csv")[-1]
-                P = history["pair0_normal_force"] * force_scale
-                if dim == 2:
-                    a = math.sqrt(4 * P * R / (math.pi * e_star))
-                    p0 = 2 * P / (math.pi * a)
-                else:
-                    a = (3 * P * R / (4 * e_star)) ** (1.0 / 3.0)
-                    p0 = 3 * P / (2 * math.pi * a * a)
-                p0_h, a_h, points = hertz_fit(read_csv(folder + "/contact-00002.csv"), dim)
-                profile = math.sqrt(sum(
-                    (p - p0 * math.sqrt(max(0.0, 1 - x * x / (a * a)))) ** 2
-                    for x, p in points) / sum(p * p for x, p in points))
+                a, p0, a_h, p0_h, profile, n, P = hertz_compare(
+                    folder, dim, e_star, R, force_scale)
                 sections, values = timings(folder)
                 wall = sum(sections.values())
                 writer.writerow([name, level, factor, values["dofs"],

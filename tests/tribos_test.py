@@ -63,6 +63,29 @@ def numdiff(result, reference, relative=1e-6, absolute=1e-10):
         raise SystemExit("numdiff: %s differs from %s" % (result, reference))
 
 
+def hertz_compare(folder, dim, e_star, radius, force_scale, step=2):
+    """Hertz values for the contact normal force of a run (times
+    force_scale for symmetry models) against the fit of its nodal pressures
+    at output step `step`: returns (a, p0, fitted a, fitted p0, relative L2
+    error of the pressure profile, number of nodes in contact). 2D: a =
+    sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a); 3D: a = (3 P R / (4 E*))^(1/3),
+    p0 = 3 P / (2 pi a^2)."""
+    history = read_csv(folder + "/history.csv")[-1]
+    P = history["pair0_normal_force"] * force_scale
+    if dim == 2:
+        a = math.sqrt(4 * P * radius / (math.pi * e_star))
+        p0 = 2 * P / (math.pi * a)
+    else:
+        a = (3 * P * radius / (4 * e_star)) ** (1.0 / 3.0)
+        p0 = 3 * P / (2 * math.pi * a * a)
+    p0_h, a_h, points = hertz_fit(
+        read_csv(folder + "/contact-%05d.csv" % step), dim)
+    profile = math.sqrt(
+        sum((p - p0 * math.sqrt(max(0.0, 1 - x * x / (a * a)))) ** 2
+            for x, p in points) / sum(p * p for x, p in points))
+    return a, p0, a_h, p0_h, profile, len(points), P
+
+
 def hertz_fit(rows, dim):
     """Hertz p0 and a fitted to contact-NNNNN.csv rows: least squares of
     p^2 = p0^2 (1 - r^2/a^2) over the nodes in contact (r = |x| in 2D,
