@@ -1,0 +1,54 @@
+"""Rigid-plate contact in 3D: parameters/cylinder_compression.prm (one
+eighth of the paper's cylinder, frictionless rigid plate moved 25 x 0.2 mm,
+neo-Hookean). Frictionless compression is homogeneous, so the plate force
+is P_zz(stretch) x A0 with the lateral stretch from P_rr = 0, A0 the area of
+the meshed quarter section (its arc is a polygon of 2^(refinements + 1)
+chords: 0.64 % less than pi r^2 / 4 with 2 refinements). At the
+stretch the penalty solution reaches (plate position plus the uniform
+penetration) the force must match to 1e-6 at every step; against the
+nominal plate stretch the penalty error is reported and bounded by 0.5 %."""
+
+import math
+import sys
+
+from tribos_test import setup, run, read_csv, check, finish
+
+tribos, tests, out = setup(sys.argv)
+E, nu, r, half = 206.9, 0.29, 6.35, 6.35
+lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+mu = E / (2 * (1 + nu))
+
+
+def force(stretch):
+    s = 1.0
+    for _ in range(100):
+        J = stretch * s * s
+        f = mu * (s - 1 / s) + lam * math.log(J) / s
+        df = mu * (1 + 1 / s ** 2) + lam * (2 - math.log(J)) / s ** 2
+        s -= f / df
+    J = stretch * s * s
+    chords = 2 ** (2 + 1)
+    area = chords / 2 * r * r * math.sin(math.pi / (2 * chords))
+    return (mu * (stretch - 1 / stretch) + lam * math.log(J) / stretch) * area
+
+
+run(tribos, tests + "/../parameters/cylinder_compression.prm", out,
+    ["Output/Write VTU=false"])
+rows = read_csv(out + "/history.csv")
+check(len(rows) == 25 and rows[-1]["time"] == 25, "all 25 steps")
+worst, worst_nominal = 0.0, 0.0
+for row in rows:
+    plate = 0.2 * row["time"]
+    reached = (half - plate + row["max_penetration"]) / half
+    exact = force(reached)
+    error = abs(row["pair0_Fz"] - exact) / abs(exact)
+    nominal = abs(row["pair0_Fz"] - force((half - plate) / half)) / abs(
+        force((half - plate) / half))
+    worst, worst_nominal = max(worst, error), max(worst_nominal, nominal)
+check(worst < 1e-6, "force at the reached stretch: max relative error %.2e"
+      % worst)
+check(worst_nominal < 5e-3, "force at the nominal plate stretch (penalty "
+      "error): max %.2e" % worst_nominal)
+check(all(r["n_active"] == rows[0]["n_active"] for r in rows),
+      "every top node stays in contact (%d)" % rows[0]["n_active"])
+finish()
