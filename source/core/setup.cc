@@ -117,7 +117,19 @@ namespace tribos
                                         "Young's modulus"),
         Parameters::Materials::for_body(m.poissons_ratios,
                                         body,
-                                        "Poisson's ratio")));
+                                        "Poisson's ratio"),
+        {{Parameters::Materials::for_body(m.yield_stresses,
+                                          body,
+                                          "Yield stress"),
+          Parameters::Materials::for_body(m.saturation_yield_stresses,
+                                          body,
+                                          "Saturation yield stress"),
+          Parameters::Materials::for_body(m.hardening_exponents,
+                                          body,
+                                          "Hardening exponent"),
+          Parameters::Materials::for_body(m.linear_hardening_moduli,
+                                          body,
+                                          "Linear hardening modulus")}}));
 
     // History only where a material has memory: elastic bodies pay nothing.
     const unsigned int n_q = quadrature.size();

@@ -12,10 +12,12 @@ namespace tribos
       prm.declare_entry("Model",
                         "neo-Hookean",
                         dealii::Patterns::List(dealii::Patterns::Selection(
-                          "linear elastic|neo-Hookean")),
+                          "linear elastic|neo-Hookean|J2 plasticity")),
                         "Constitutive model per body id (comma-separated) or "
                         "one for all bodies. 'linear elastic': small strain; "
-                        "'neo-Hookean': compressible, finite strain.");
+                        "'neo-Hookean': compressible, finite strain; 'J2 "
+                        "plasticity': finite strain, Hencky elasticity, von "
+                        "Mises with the hardening (36).");
       prm.declare_entry("Young's modulus",
                         "1",
                         dealii::Patterns::Anything(),
@@ -24,6 +26,23 @@ namespace tribos
                         "0.3",
                         dealii::Patterns::Anything(),
                         "Per body id or one value for all; in [0, 0.5).");
+      prm.declare_entry("Yield stress",
+                        "1e300",
+                        dealii::Patterns::Anything(),
+                        "J2 plasticity: initial yield stress s0 of (36), per "
+                        "body id or one for all; > 0.");
+      prm.declare_entry("Saturation yield stress",
+                        "1e300",
+                        dealii::Patterns::Anything(),
+                        "J2 plasticity: s_inf of (36), >= s0.");
+      prm.declare_entry("Hardening exponent",
+                        "0",
+                        dealii::Patterns::Anything(),
+                        "J2 plasticity: delta of (36), >= 0.");
+      prm.declare_entry("Linear hardening modulus",
+                        "0",
+                        dealii::Patterns::Anything(),
+                        "J2 plasticity: H of (36), >= 0.");
       prm.leave_subsection();
     }
 
@@ -38,6 +57,23 @@ namespace tribos
                                           "Materials/Young's modulus");
       poissons_ratios = Text::parse_doubles(prm.get("Poisson's ratio"),
                                             "Materials/Poisson's ratio");
+      const auto read = [&](const std::string &entry) {
+        const auto values =
+          Text::parse_doubles(prm.get(entry), "Materials/" + entry);
+        for (const double v : values)
+          AssertThrow(v >= 0,
+                      dealii::ExcMessage("Parameter <Materials/" + entry +
+                                         "> = <" + prm.get(entry) +
+                                         ">: every value must be >= 0."));
+        AssertThrow(!values.empty(),
+                    dealii::ExcMessage("Parameter <Materials/" + entry +
+                                       "> must not be empty."));
+        return values;
+      };
+      yield_stresses            = read("Yield stress");
+      saturation_yield_stresses = read("Saturation yield stress");
+      hardening_exponents       = read("Hardening exponent");
+      linear_hardening_moduli   = read("Linear hardening modulus");
       for (const double E : youngs_moduli)
         AssertThrow(E > 0,
                     dealii::ExcMessage(

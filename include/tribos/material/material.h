@@ -4,6 +4,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -79,12 +80,17 @@ namespace tribos
   };
 
   /**
-   * Create the material called @p model ("linear elastic" or
-   * "neo-Hookean") with Young's modulus @p E and Poisson's ratio @p nu.
+   * Create the material called @p model ("linear elastic", "neo-Hookean"
+   * or "J2 plasticity") with Young's modulus @p E and Poisson's ratio @p nu;
+   * @p hardening holds s0, s_inf, delta, H of the paper's (36) and is used
+   * by J2 plasticity only.
    */
   template <int dim>
   std::unique_ptr<Material<dim>>
-  create_material(const std::string &model, const double E, const double nu);
+  create_material(const std::string           &model,
+                  const double                 E,
+                  const double                 nu,
+                  const std::array<double, 4> &hardening = {{0, 0, 0, 0}});
 } // namespace tribos
 
 #endif

@@ -21,6 +21,10 @@ namespace tribos
       std::vector<std::string> models;
       std::vector<double>      youngs_moduli;
       std::vector<double>      poissons_ratios;
+      std::vector<double>      yield_stresses;
+      std::vector<double>      saturation_yield_stresses;
+      std::vector<double>      hardening_exponents;
+      std::vector<double>      linear_hardening_moduli;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
