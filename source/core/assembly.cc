@@ -1,3 +1,4 @@
+#include <tribos/core/f_bar.h>
 #include <tribos/core/problem.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -32,6 +33,14 @@ namespace tribos
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
+    // F-bar: the deformation gradient at the cell centre.
+    const bool    f_bar = parameters.finite_element.f_bar;
+    FEValues<dim> fe_values_centre(*fe, QGauss<dim>(1), update_gradients);
+    std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
+      1, std::vector<Tensor<1, dim>>(dim));
+    Tensor<2, dim> F0, P_eff;
+    Tensor<4, dim> dP_dF, dP_dF0;
+    double         J0 = 1;
     FEFaceValues<dim> fe_face_values(*fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |
@@ -69,6 +78,16 @@ namespace tribos
       cell_rhs    = 0;
 
       fe_values.get_function_gradients(ghosted_solution, gradients);
+      if (f_bar)
+      {
+        fe_values_centre.reinit(cell);
+        fe_values_centre.get_function_gradients(ghosted_solution,
+                                                centre_gradients);
+        F0 = unit_symmetric_tensor<dim>();
+        for (unsigned int c = 0; c < dim; ++c)
+          F0[c] += centre_gradients[0][c];
+        J0 = determinant(F0);
+      }
       const Material<dim> &material  = *materials[cell->material_id()];
       const unsigned int   n_history = material.n_history_variables();
       const unsigned int   offset = history_offset[cell->active_cell_index()];
@@ -83,11 +102,25 @@ namespace tribos
           n_history ? &history_old[offset + q * n_history] : nullptr;
         double *new_history =
           n_history ? &history_new[offset + q * n_history] : nullptr;
-        material.evaluate(F,
+        const double s = f_bar ? FBar<dim>::scale(F, J0) : 1.;
+        material.evaluate(s * F,
                           old_history,
                           new_history,
                           P,
                           with_matrix ? &A : nullptr);
+        if (f_bar)
+        {
+          FBar<dim>::effective(F,
+                               F0,
+                               s,
+                               P,
+                               with_matrix ? &A : nullptr,
+                               P_eff,
+                               dP_dF,
+                               dP_dF0);
+          P = P_eff;
+          A = dP_dF;
+        }
 
         const double JxW = fe_values.JxW(q);
         if (body_force)
@@ -111,6 +144,17 @@ namespace tribos
             for (unsigned int j = 0; j < dofs_per_cell; ++j)
               cell_matrix(i, j) +=
                 (row[component[j]] * fe_values.shape_grad(j, q)) * JxW;
+            if (f_bar)
+            {
+              // Coupling through the centre's volume change.
+              Tensor<2, dim> centre_row;
+              for (unsigned int l = 0; l < dim; ++l)
+                centre_row += grad_i[l] * dP_dF0[ci][l];
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                cell_matrix(i, j) += (centre_row[component[j]] *
+                                      fe_values_centre.shape_grad(j, 0)) *
+                                     JxW;
+            }
           }
         }
       }

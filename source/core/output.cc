@@ -1,3 +1,4 @@
+#include <tribos/core/f_bar.h>
 #include <tribos/core/problem.h>
 
 #include <deal.II/base/utilities.h>
@@ -226,12 +227,27 @@ namespace tribos
     std::vector<std::vector<Tensor<1, dim>>> gradients(
       quadrature.size(),
       std::vector<Tensor<1, dim>>(dim));
+    FEValues<dim> fe_values_centre(*fe, QGauss<dim>(1), update_gradients);
+    std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
+      1, std::vector<Tensor<1, dim>>(dim));
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
       {
         const unsigned int index = cell->active_cell_index();
         fe_values.reinit(cell);
         fe_values.get_function_gradients(ghosted_solution, gradients);
+        double J0 = 1;
+        if (parameters.finite_element.f_bar)
+        {
+          // The stress of the F-bar element is that of F_bar = s F.
+          fe_values_centre.reinit(cell);
+          fe_values_centre.get_function_gradients(ghosted_solution,
+                                                  centre_gradients);
+          Tensor<2, dim> F0 = unit_symmetric_tensor<dim>();
+          for (unsigned int c = 0; c < dim; ++c)
+            F0[c] += centre_gradients[0][c];
+          J0 = determinant(F0);
+        }
         const auto           &material  = *materials[cell->material_id()];
         const unsigned int    n_history = material.n_history_variables();
         SymmetricTensor<2, 3> average;
@@ -244,6 +260,8 @@ namespace tribos
           const double *history =
             n_history ? &history_old[history_offset[index] + q * n_history] :
                         nullptr;
+          if (parameters.finite_element.f_bar)
+            F *= FBar<dim>::scale(F, J0);
           average += fe_values.JxW(q) * material.cauchy_stress(F, history);
           peeq +=
             fe_values.JxW(q) * material.equivalent_plastic_strain(history);

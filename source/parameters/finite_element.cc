@@ -17,6 +17,13 @@ namespace tribos
                         "0",
                         dealii::Patterns::Integer(0, 6),
                         "Gauss points per direction; 0 chooses degree + 1.");
+      prm.declare_entry("F-bar",
+                        "false",
+                        dealii::Patterns::Bool(),
+                        "Q1 only: the F-bar element (the volume change of "
+                        "each quadrature point replaced by that of the cell "
+                        "centre) against locking in isochoric plastic "
+                        "flow.");
       prm.leave_subsection();
     }
 
@@ -30,6 +37,10 @@ namespace tribos
       n_quadrature_points = prm.get_integer("Quadrature points");
       if (n_quadrature_points == 0)
         n_quadrature_points = degree + 1;
+      f_bar = prm.get_bool("F-bar");
+      AssertThrow(!f_bar || degree == 1,
+                  dealii::ExcMessage("Parameter <Finite element/F-bar> = "
+                                     "true needs Polynomial degree = 1."));
       prm.leave_subsection();
     }
   } // namespace Parameters

@@ -17,6 +17,8 @@ namespace tribos
       unsigned int degree;
       /** Gauss points per direction; 0 means degree + 1. */
       unsigned int n_quadrature_points;
+      /** Q1 only: the F-bar element against volumetric locking. */
+      bool f_bar;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
