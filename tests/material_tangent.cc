@@ -26,7 +26,10 @@ tangent_error(const tribos::Material<dim> &material,
   material.evaluate(F, history, out, P, &A);
   // Plastic loading or not: a finite difference across the yield surface
   // has no derivative to compare with (reported as -1).
-  const auto plastic = [&]() { return history && out[6] > history[6]; };
+  const auto plastic = [&]()
+  {
+    return history && out[6] > history[6];
+  };
   const bool loading = plastic();
   bool       kink    = false;
 
@@ -88,40 +91,43 @@ template <int dim>
 bool
 check_plastic(std::mt19937 &random)
 {
-  const auto material = tribos::create_material<dim>(
-    "J2 plasticity", 206.9, 0.29, {{0.45, 0.715, 16.93, 0.12924}});
+  const auto material =
+    tribos::create_material<dim>("J2 plasticity",
+                                 206.9,
+                                 0.29,
+                                 {{0.45, 0.715, 16.93, 0.12924}});
   std::uniform_real_distribution<double> uniform(-1, 1);
-  bool                                   ok    = true;
-  double                                 worst = 0;
+  bool                                   ok        = true;
+  double                                 worst     = 0;
   unsigned int                           n_plastic = 0, n_elastic = 0;
   for (unsigned int sample = 0; sample < 40; ++sample)
-    {
-      // A history from a plastic pre-deformation.
-      std::vector<double> initial(7), history(7), probe(7);
-      material->initialize_history(initial.data());
-      Tensor<2, dim> F0 = unit_symmetric_tensor<dim>(), P;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          F0[i][j] += 0.05 * uniform(random);
-      material->evaluate(F0, initial.data(), history.data(), P, nullptr);
+  {
+    // A history from a plastic pre-deformation.
+    std::vector<double> initial(7), history(7), probe(7);
+    material->initialize_history(initial.data());
+    Tensor<2, dim> F0 = unit_symmetric_tensor<dim>(), P;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        F0[i][j] += 0.05 * uniform(random);
+    material->evaluate(F0, initial.data(), history.data(), P, nullptr);
 
-      // Probe near F0: small steps stay elastic or load plastically.
-      Tensor<2, dim> F = F0;
-      const double   amplitude = (sample % 2 == 0 ? 1e-5 : 2e-2);
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          F[i][j] += amplitude * uniform(random);
-      material->evaluate(F, history.data(), probe.data(), P, nullptr);
-      const double error = tangent_error(*material, F, history.data());
-      if (error < 0)
-        continue;
-      if (probe[6] > history[6])
-        ++n_plastic;
-      else
-        ++n_elastic;
-      worst              = std::max(worst, error);
-      ok                 = ok && error < 1e-6;
-    }
+    // Probe near F0: small steps stay elastic or load plastically.
+    Tensor<2, dim> F         = F0;
+    const double   amplitude = (sample % 2 == 0 ? 1e-5 : 2e-2);
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        F[i][j] += amplitude * uniform(random);
+    material->evaluate(F, history.data(), probe.data(), P, nullptr);
+    const double error = tangent_error(*material, F, history.data());
+    if (error < 0)
+      continue;
+    if (probe[6] > history[6])
+      ++n_plastic;
+    else
+      ++n_elastic;
+    worst = std::max(worst, error);
+    ok    = ok && error < 1e-6;
+  }
   ok = ok && n_plastic > 5 && n_elastic > 5;
   std::cout << dim << "D J2 plasticity: " << n_plastic << " plastic, "
             << n_elastic << " elastic states; max relative tangent error "

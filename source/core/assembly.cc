@@ -29,7 +29,7 @@ namespace tribos
     free_residual = 0;
     full_residual = 0;
 
-    FEValues<dim>     fe_values(*fe,
+    FEValues<dim> fe_values(*fe,
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
@@ -37,10 +37,11 @@ namespace tribos
     const bool    f_bar = parameters.finite_element.f_bar;
     FEValues<dim> fe_values_centre(*fe, QGauss<dim>(1), update_gradients);
     std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
-      1, std::vector<Tensor<1, dim>>(dim));
-    Tensor<2, dim> F0, P_eff;
-    Tensor<4, dim> dP_dF, dP_dF0;
-    double         J0 = 1;
+      1,
+      std::vector<Tensor<1, dim>>(dim));
+    Tensor<2, dim>    F0, P_eff;
+    Tensor<4, dim>    dP_dF, dP_dF0;
+    double            J0 = 1;
     FEFaceValues<dim> fe_face_values(*fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |

@@ -229,7 +229,8 @@ namespace tribos
       std::vector<Tensor<1, dim>>(dim));
     FEValues<dim> fe_values_centre(*fe, QGauss<dim>(1), update_gradients);
     std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
-      1, std::vector<Tensor<1, dim>>(dim));
+      1,
+      std::vector<Tensor<1, dim>>(dim));
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
       {

@@ -15,17 +15,17 @@ namespace tribos
                   const std::array<double, 4> &hardening)
   {
     if (model == "J2 plasticity")
-      {
-        AssertThrow(hardening[0] > 0 && hardening[0] < 1e299 &&
-                      hardening[1] >= hardening[0],
-                    ExcMessage("Materials: J2 plasticity needs a Yield "
-                               "stress s0 > 0 and a Saturation yield stress "
-                               ">= s0 for every plastic body."));
-        return std::make_unique<J2Plasticity<dim>>(
-          E,
-          nu,
-          HardeningLaw{hardening[0], hardening[1], hardening[2], hardening[3]});
-      }
+    {
+      AssertThrow(hardening[0] > 0 && hardening[0] < 1e299 &&
+                    hardening[1] >= hardening[0],
+                  ExcMessage("Materials: J2 plasticity needs a Yield "
+                             "stress s0 > 0 and a Saturation yield stress "
+                             ">= s0 for every plastic body."));
+      return std::make_unique<J2Plasticity<dim>>(
+        E,
+        nu,
+        HardeningLaw{hardening[0], hardening[1], hardening[2], hardening[3]});
+    }
     if (model == "linear elastic")
       return std::make_unique<LinearElastic<dim>>(E, nu);
     if (model == "neo-Hookean")

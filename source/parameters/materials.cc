@@ -57,7 +57,8 @@ namespace tribos
                                           "Materials/Young's modulus");
       poissons_ratios = Text::parse_doubles(prm.get("Poisson's ratio"),
                                             "Materials/Poisson's ratio");
-      const auto read = [&](const std::string &entry) {
+      const auto read = [&](const std::string &entry)
+      {
         const auto values =
           Text::parse_doubles(prm.get(entry), "Materials/" + entry);
         for (const double v : values)

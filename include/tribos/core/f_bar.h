@@ -66,11 +66,11 @@ namespace tribos
         for (unsigned int j = 0; j < dim; ++j)
           for (unsigned int k = 0; k < dim; ++k)
             for (unsigned int l = 0; l < dim; ++l)
-              {
-                dP_dF[i][j][k][l] =
-                  scale * (*A)[i][j][k][l] + G[i][j] * ds_dF[k][l];
-                dP_dF0[i][j][k][l] = G[i][j] * ds_dF0[k][l];
-              }
+            {
+              dP_dF[i][j][k][l] =
+                scale * (*A)[i][j][k][l] + G[i][j] * ds_dF[k][l];
+              dP_dF0[i][j][k][l] = G[i][j] * ds_dF0[k][l];
+            }
     }
   };
 } // namespace tribos
