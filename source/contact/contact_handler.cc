@@ -254,19 +254,19 @@ namespace tribos
 
 
   template <int dim>
-  std::vector<types::global_dof_index>
-  ContactHandler<dim>::element_dofs(const Pair        &pair,
-                                    const unsigned int node) const
+  void
+  ContactHandler<dim>::element_dofs(
+    const Pair                           &pair,
+    const unsigned int                    node,
+    const int                             face,
+    std::vector<types::global_dof_index> &dofs) const
   {
-    std::vector<types::global_dof_index> dofs(
-      pair.slave->nodes()[node].dofs.begin(),
-      pair.slave->nodes()[node].dofs.end());
+    const auto &slave_dofs = pair.slave->nodes()[node].dofs;
+    dofs.assign(slave_dofs.begin(), slave_dofs.end());
     if (pair.master)
-      for (const unsigned int m :
-           pair.master->faces()[pair.pairing[node].face].nodes)
+      for (const unsigned int m : pair.master->faces()[face].nodes)
         for (const auto dof : pair.master->nodes()[m].dofs)
           dofs.push_back(dof);
-    return dofs;
   }
 
 
@@ -279,16 +279,14 @@ namespace tribos
   {
     outdated = false;
     for (const auto &pair : pairs)
+    {
+      std::vector<types::global_dof_index> dofs;
       for (const auto &[k, f] : pair.couplings)
       {
-        std::vector<types::global_dof_index> dofs(
-          pair.slave->nodes()[k].dofs.begin(),
-          pair.slave->nodes()[k].dofs.end());
-        for (const unsigned int m : pair.master->faces()[f].nodes)
-          for (const auto dof : pair.master->nodes()[m].dofs)
-            dofs.push_back(dof);
+        element_dofs(pair, k, f, dofs);
         constraints.add_entries_local_to_global(dofs, dsp, false);
       }
+    }
   }
 
 
@@ -315,6 +313,10 @@ namespace tribos
         pair.rigid ? pair.rigid->translation(time) : zero;
       const Vec3<double> old_shift =
         pair.rigid ? pair.rigid->translation(committed_time) : zero;
+      // Element buffers, reused for every slave node of the pair.
+      std::vector<types::global_dof_index> dofs;
+      dealii::Vector<double> local_rhs(n_dofs), local_residual(n_dofs);
+      FullMatrix<double>     local_matrix(n_dofs, n_dofs);
 
       for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
@@ -375,8 +377,7 @@ namespace tribos
         if (pair.results[k].status == ContactStatus::open)
           continue;
 
-        const auto             dofs = element_dofs(pair, k);
-        dealii::Vector<double> local_rhs(n_dofs), local_residual(n_dofs);
+        element_dofs(pair, k, pair.pairing[k].face, dofs);
         for (unsigned int i = 0; i < n_dofs; ++i)
         {
           local_rhs(i)      = -R[i];
@@ -386,7 +387,6 @@ namespace tribos
         homogeneous.distribute_local_to_global(local_rhs, dofs, free_residual);
         if (with_matrix)
         {
-          FullMatrix<double> local_matrix(n_dofs, n_dofs);
           for (unsigned int i = 0; i < n_dofs; ++i)
             for (unsigned int j = 0; j < n_dofs; ++j)
               local_matrix(i, j) = K[i * n_dofs + j];

@@ -181,8 +181,13 @@ namespace tribos
       std::set<std::pair<unsigned int, unsigned int>> couplings;
     };
 
-    std::vector<types::global_dof_index>
-    element_dofs(const Pair &pair, const unsigned int node) const;
+    /** The dofs of the element of slave @p node against master @p face
+     * (slave first, then the face's nodes), into @p dofs. */
+    void
+    element_dofs(const Pair                           &pair,
+                 const unsigned int                    node,
+                 const int                             face,
+                 std::vector<types::global_dof_index> &dofs) const;
 
     const Parameters::Contact &parameters;
     MPI_Comm                   mpi_communicator;
