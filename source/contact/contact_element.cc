@@ -6,8 +6,11 @@ namespace tribos
 {
   namespace
   {
-    /** Forward AD number with at most 15 derivatives (3D: 5 nodes x 3). */
-    using AD = Sacado::Fad::SLFad<double, 15>;
+    /**
+     * Forward AD number with at most 18 derivatives (3D: 5 nodes x 3 plus
+     * the slave's 3 multipliers).
+     */
+    using AD = Sacado::Fad::SLFad<double, 18>;
 
     double
     value(const AD &x)
@@ -76,6 +79,139 @@ namespace tribos
 
 
 
+    /**
+     * An orthonormal tangent frame of the unit normal @p n: t_0 from the
+     * coordinate axis least aligned with n (fixed while n varies, so the
+     * frame is differentiable), t_1 = n x t_0. In 2D (n in the plane
+     * z = 0) t_0 lies in the plane and t_1 = +-e_z is unused.
+     */
+    template <typename Number>
+    void
+    tangent_frame(const Vec3<Number> &n, Vec3<Number> (&t)[2])
+    {
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(value(n[d])) < std::abs(value(n[axis])))
+          axis = d;
+      if (value(n[2]) == 0 && axis == 2)
+      {
+        // 2D: the in-plane tangent.
+        t[0] = {{Number(-n[1]), Number(n[0]), Number(0.)}};
+        t[1] = {{Number(0.), Number(0.), Number(1.)}};
+        return;
+      }
+      Vec3<Number> e = {{Number(0.), Number(0.), Number(0.)}};
+      e[axis]        = 1.;
+      t[0]           = e - scale(n[axis], n);
+      t[0]           = scale(1. / norm(t[0]), t[0]);
+      t[1]           = cross(n, t[0]);
+    }
+
+
+
+    /**
+     * The Lagrange multiplier form of the same interface law. The unknown
+     * @p multiplier is the slave's contact traction vector Lambda (force per
+     * unit area on the slave, so t_N = -Lambda . n and T = P_T Lambda), and
+     * @p constraint receives the node's equations: while open the
+     * multiplier itself, while closed the normal condition (component 0)
+     * and the tangential one in the frame t_1, t_2 (components 1, 2):
+     *
+     *   open  (t_N - c g_N < 0):    C = Lambda                 (no traction)
+     *   closed, normal:             C_0 = c g_N                (g_N = 0)
+     *   frictionless:               C_a = t_a . T              (T = 0)
+     *   stick (|T + c_T dg_T| <= mu t_N):  C_a = t_a . c_T dg_T  (no slip)
+     *   slip:   C_a = t_a . (T - mu t_N (T + c_T dg_T)/|T + c_T dg_T|)  (22)
+     *
+     * This is the primal-dual active set strategy written as a semismooth
+     * Newton method (Alart and Curnier's augmented form): the contact and
+     * stick/slip status follow from the current multipliers and gaps at
+     * every evaluation, so the active set is updated inside Newton, and the
+     * derivative of C is the generalized Jacobian on each branch. The slip
+     * branch couples T to the normal multiplier non-symmetrically, as in
+     * the paper's (22) and (35). c = eps_N and c_T = eps_T change the
+     * iterates (which branch a node takes) and the row scaling only, never
+     * the converged solution.
+     */
+    template <typename Number>
+    void
+    multiplier_law(const Number       &gap,
+                   const Vec3<Number> &normal,
+                   const Vec3<Number> &slip_increment,
+                   const Vec3<Number> &multiplier,
+                   const ContactLaw   &law,
+                   Vec3<Number>       &force,
+                   Vec3<Number>       &constraint,
+                   ContactPointResult &result)
+    {
+      result.gap = value(gap);
+      for (unsigned int d = 0; d < 3; ++d)
+        result.normal[d] = value(normal[d]);
+
+      force                       = multiplier;
+      const Number       pressure = -dot(multiplier, normal);
+      const Vec3<Number> tau      = multiplier + scale(pressure, normal);
+      if (value(pressure) - law.normal_penalty * value(gap) < 0)
+      {
+        constraint    = multiplier;
+        result.status = ContactStatus::open;
+        return;
+      }
+      result.pressure = value(pressure);
+      result.status   = ContactStatus::stick;
+
+      Vec3<Number> tangential = tau;
+      if (law.friction_coefficient > 0)
+      {
+        const Vec3<Number> trial =
+          tau + scale(law.tangential_penalty, slip_increment);
+        const Number magnitude = norm(trial);
+        const Number limit     = law.friction_coefficient * pressure;
+        if (value(magnitude) > value(limit))
+        {
+          tangential            = tau - scale(limit / magnitude, trial);
+          result.status         = ContactStatus::slip;
+          result.slip_increment = value(norm(slip_increment));
+        }
+        else
+        {
+          tangential = scale(law.tangential_penalty, slip_increment);
+          // Tangents in which the slave is fixed: T . t = 0 there.
+          Vec3<Number> done[2];
+          unsigned int n_done = 0;
+          for (unsigned int d = 0; d < 3; ++d)
+            if (law.fixed_components & (1u << d))
+            {
+              Vec3<Number> t = {{Number(0.), Number(0.), Number(0.)}};
+              t[d]           = 1.;
+              t              = t - scale(normal[d], normal);
+              for (unsigned int i = 0; i < n_done; ++i)
+                t = t - scale(dot(t, done[i]), done[i]);
+              const Number length = norm(t);
+              if (value(length) < 0.5 || n_done == 2)
+                continue;
+              t = scale(1. / length, t);
+              tangential =
+                tangential + scale(dot(tau, t) - dot(tangential, t), t);
+              done[n_done++] = t;
+            }
+        }
+      }
+      // Rows in the local frame (n, t_1, t_2): the normal row must not
+      // see the tangential rows' geometry. (As one global vector
+      // c g n + P_T C, the term c g dn/du of a penetrating node would put
+      // spurious tangential forces into every iterate.)
+      Vec3<Number> t[2];
+      tangent_frame(normal, t);
+      constraint[0] = law.normal_penalty * gap;
+      constraint[1] = dot(tangential, t[0]);
+      constraint[2] = dot(tangential, t[1]);
+      for (unsigned int d = 0; d < 3; ++d)
+        result.traction[d] = value(tau[d]);
+    }
+
+
+
     /** Seed @p n_values entries of @p x as independent AD variables. */
     template <int dim>
     Vec3<AD>
@@ -102,7 +238,8 @@ namespace tribos
                                const double        area,
                                const bool          consistent,
                                double             *R,
-                               double             *K)
+                               double             *K,
+                               const Vec3<double> *multiplier)
   {
     using Face = MasterFace<dim>;
     ContactPointResult result;
@@ -110,10 +247,11 @@ namespace tribos
     result.xi[0] = projection.xi[0];
     result.xi[1] = projection.xi[1];
 
-    Vec3<AD> xs = seed<dim>(slave, 0, n_dofs);
-    Vec3<AD> xm[n_nodes];
+    const unsigned int n_out = n_dofs + (multiplier ? dim : 0);
+    Vec3<AD>           xs    = seed<dim>(slave, 0, n_out);
+    Vec3<AD>           xm[n_nodes];
     for (unsigned int k = 0; k < n_nodes; ++k)
-      xm[k] = seed<dim>(master[k], dim * (1 + k), n_dofs);
+      xm[k] = seed<dim>(master[k], dim * (1 + k), n_out);
 
     // Geometry at the converged projection, in double, for the update.
     Vec3<double> xbar0, a0[2], n0;
@@ -181,22 +319,34 @@ namespace tribos
       relative = relative - scale(N[k], xm[k] - to<AD>(master_old[k]));
     const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
 
-    Vec3<AD> force;
-    interface_law(gap, normal, slip, previous_traction, law, force, result);
+    Vec3<AD> force, constraint;
+    if (multiplier)
+      multiplier_law(gap,
+                     normal,
+                     slip,
+                     seed<dim>(*multiplier, n_dofs, n_out),
+                     law,
+                     force,
+                     constraint,
+                     result);
+    else
+      interface_law(gap, normal, slip, previous_traction, law, force, result);
 
-    AD residual[n_dofs];
+    AD residual[n_dofs + dim];
     for (unsigned int d = 0; d < dim; ++d)
     {
       residual[d] = area * force[d];
       for (unsigned int k = 0; k < n_nodes; ++k)
         residual[dim * (1 + k) + d] = -area * N[k] * force[d];
+      if (multiplier)
+        residual[n_dofs + d] = area * constraint[d];
     }
-    for (unsigned int i = 0; i < n_dofs; ++i)
+    for (unsigned int i = 0; i < n_out; ++i)
     {
       R[i] = residual[i].val();
       if (K != nullptr)
-        for (unsigned int j = 0; j < n_dofs; ++j)
-          K[i * n_dofs + j] = residual[i].dx(j);
+        for (unsigned int j = 0; j < n_out; ++j)
+          K[i * n_out + j] = residual[i].dx(j);
     }
     result.xi[0] = value(xi[0]);
     result.xi[1] = value(xi[1]);
@@ -217,10 +367,12 @@ namespace tribos
                              const double             area,
                              const bool               consistent,
                              double                  *R,
-                             double                  *K)
+                             double                  *K,
+                             const Vec3<double>      *multiplier)
   {
     ContactPointResult result;
-    const Vec3<AD>     xs = seed<dim>(slave, 0, n_dofs);
+    const unsigned int n_out = n_dofs + (multiplier ? dim : 0);
+    const Vec3<AD>     xs    = seed<dim>(slave, 0, n_out);
 
     Vec3<AD> xbar, normal;
     AD       gap;
@@ -246,16 +398,26 @@ namespace tribos
       (xs - to<AD>(slave_old)) - to<AD>(shift - shift_old);
     const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
 
-    Vec3<AD> force;
-    interface_law(gap, normal, slip, previous_traction, law, force, result);
+    Vec3<AD> force, constraint;
+    if (multiplier)
+      multiplier_law(gap,
+                     normal,
+                     slip,
+                     seed<dim>(*multiplier, n_dofs, n_out),
+                     law,
+                     force,
+                     constraint,
+                     result);
+    else
+      interface_law(gap, normal, slip, previous_traction, law, force, result);
 
-    for (unsigned int i = 0; i < dim; ++i)
+    for (unsigned int i = 0; i < n_out; ++i)
     {
-      const AD residual = area * force[i];
+      const AD residual = area * (i < dim ? force[i] : constraint[i - dim]);
       R[i]              = residual.val();
       if (K != nullptr)
-        for (unsigned int j = 0; j < dim; ++j)
-          K[i * dim + j] = residual.dx(j);
+        for (unsigned int j = 0; j < n_out; ++j)
+          K[i * n_out + j] = residual.dx(j);
     }
     return result;
   }

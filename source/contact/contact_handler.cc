@@ -60,15 +60,16 @@ namespace tribos
 
     for (const auto &description : descriptions)
     {
-      AssertThrow(description.method != "lagrange multiplier",
-                  ExcMessage("Contact method <" + description.method +
-                             "> is not implemented yet; use "
-                             "Contact/Method = penalty or augmented "
-                             "lagrangian."));
       Pair pair;
       pair.description = description;
-      pair.slave       = surface(description.slave_boundary);
-      double E         = std::numeric_limits<double>::max();
+      pair.lagrange    = description.method == "lagrange multiplier";
+      AssertThrow(!pair.lagrange || parameters.passes != "two-pass",
+                  ExcMessage("Contact/Passes = two-pass with Contact/Method "
+                             "= lagrange multiplier: node-to-segment "
+                             "constraints of both passes over-constrain the "
+                             "interface (singular system). Use one-pass."));
+      pair.slave = surface(description.slave_boundary);
+      double E   = std::numeric_limits<double>::max();
       for (const auto body : pair.slave->bodies())
         E = std::min(E, youngs_modulus(body));
       if (description.rigid_surface.empty())
@@ -95,6 +96,13 @@ namespace tribos
           locally_owned_dofs.is_element(pair.slave->nodes()[k].dofs[0]);
       pair.history.resize(n_slaves);
       pair.multipliers.assign(n_slaves, 0.);
+      if (pair.lagrange)
+      {
+        pair.first_multiplier = dof_handler.n_dofs() + n_multiplier_dofs;
+        n_multiplier_dofs += dim * n_slaves;
+        pair.lagrange_values.assign(n_slaves, {{0, 0, 0}});
+        pair.committed_lagrange_values = pair.lagrange_values;
+      }
       pair.committed_multipliers.assign(n_slaves, 0.);
       pair.pairing.resize(n_slaves);
       pair.results.resize(n_slaves);
@@ -263,10 +271,13 @@ namespace tribos
   {
     const auto &slave_dofs = pair.slave->nodes()[node].dofs;
     dofs.assign(slave_dofs.begin(), slave_dofs.end());
-    if (pair.master)
+    if (pair.master && face >= 0)
       for (const unsigned int m : pair.master->faces()[face].nodes)
         for (const auto dof : pair.master->nodes()[m].dofs)
           dofs.push_back(dof);
+    if (pair.lagrange)
+      for (unsigned int d = 0; d < dim; ++d)
+        dofs.push_back(pair.first_multiplier + dim * node + d);
   }
 
 
@@ -286,6 +297,14 @@ namespace tribos
         element_dofs(pair, k, f, dofs);
         constraints.add_entries_local_to_global(dofs, dsp, false);
       }
+      // A multiplier row exists for every slave node, paired or not.
+      if (pair.lagrange)
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          if (pair.owned[k])
+          {
+            element_dofs(pair, k, -1, dofs);
+            constraints.add_entries_local_to_global(dofs, dsp, false);
+          }
     }
   }
 
@@ -301,14 +320,15 @@ namespace tribos
                                 TrilinosWrappers::MPI::Vector   &free_residual,
                                 TrilinosWrappers::MPI::Vector   &full_residual)
   {
-    constexpr unsigned int n_max = NodeToSegment<dim>::n_dofs;
+    constexpr unsigned int n_max = NodeToSegment<dim>::n_dofs + dim;
     double                 R[n_max], K[n_max * n_max];
     const Vec3<double>     zero{{0, 0, 0}};
 
     for (auto &pair : pairs)
     {
-      const unsigned int n_dofs =
+      const unsigned int n_displacements =
         pair.master ? NodeToSegment<dim>::n_dofs : NodeToRigid<dim>::n_dofs;
+      const unsigned int n_dofs = n_displacements + (pair.lagrange ? dim : 0);
       const Vec3<double> shift =
         pair.rigid ? pair.rigid->translation(time) : zero;
       const Vec3<double> old_shift =
@@ -318,20 +338,68 @@ namespace tribos
       dealii::Vector<double> local_rhs(n_dofs), local_residual(n_dofs);
       FullMatrix<double>     local_matrix(n_dofs, n_dofs);
 
+      const auto add = [&](const unsigned int n)
+      {
+        local_rhs.reinit(n);
+        local_residual.reinit(n);
+        for (unsigned int i = 0; i < n; ++i)
+        {
+          local_rhs(i)      = -R[i];
+          local_residual(i) = R[i];
+        }
+        full_residual.add(dofs, local_residual);
+        homogeneous.distribute_local_to_global(local_rhs, dofs, free_residual);
+        if (with_matrix)
+        {
+          local_matrix.reinit(n, n);
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              local_matrix(i, j) = K[i * n + j];
+          constraints.distribute_local_to_global(local_matrix,
+                                                 local_rhs,
+                                                 dofs,
+                                                 matrix,
+                                                 rhs);
+        }
+      };
+
       for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
-        pair.results[k] = ContactPointResult();
+        pair.results[k]   = ContactPointResult();
+        const double area = pair.slave->nodes()[k].area * pair.area_factor;
         if (!pair.pairing[k].valid)
         {
           pair.results[k].gap = std::numeric_limits<double>::quiet_NaN();
+          // An unpaired node of a Lagrange pair: Lambda = 0.
+          if (pair.lagrange && pair.owned[k])
+          {
+            element_dofs(pair, k, -1, dofs);
+            dofs.erase(dofs.begin(), dofs.begin() + dim);
+            for (unsigned int i = 0; i < dim; ++i)
+            {
+              R[i] = area * pair.lagrange_values[k][i];
+              for (unsigned int j = 0; j < dim; ++j)
+                K[i * dim + j] = (i == j ? area : 0.);
+            }
+            add(dim);
+          }
           continue;
         }
-        const SlaveHistory &history = pair.history[k];
-        ContactLaw          law     = pair.law;
-        law.multiplier              = pair.multipliers[k];
-        const double area = pair.slave->nodes()[k].area * pair.area_factor;
+        const SlaveHistory &history  = pair.history[k];
+        ContactLaw          law      = pair.law;
+        law.multiplier               = pair.multipliers[k];
         const Vec3<double> &previous = history.active ? history.traction : zero;
         const Vec3<double> &x        = pair.slave_positions[k];
+        const Vec3<double> *lambda =
+          pair.lagrange ? &pair.lagrange_values[k] : nullptr;
+        if (pair.lagrange)
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            const auto dof = pair.slave->nodes()[k].dofs[d];
+            if (homogeneous.is_constrained(dof) &&
+                homogeneous.get_constraint_entries(dof)->empty())
+              law.fixed_components |= (1u << d);
+          }
 
         if (pair.master)
         {
@@ -355,7 +423,8 @@ namespace tribos
                                          area,
                                          consistent,
                                          R,
-                                         with_matrix ? K : nullptr);
+                                         K,
+                                         lambda);
           pair.results[k].face = face;
         }
         else
@@ -371,32 +440,65 @@ namespace tribos
                                        area,
                                        consistent,
                                        R,
-                                       with_matrix ? K : nullptr);
+                                       K,
+                                       lambda);
         }
 
-        if (pair.results[k].status == ContactStatus::open)
+        if (!pair.lagrange && pair.results[k].status == ContactStatus::open)
           continue;
 
         element_dofs(pair, k, pair.pairing[k].face, dofs);
-        for (unsigned int i = 0; i < n_dofs; ++i)
-        {
-          local_rhs(i)      = -R[i];
-          local_residual(i) = R[i];
-        }
-        full_residual.add(dofs, local_residual);
-        homogeneous.distribute_local_to_global(local_rhs, dofs, free_residual);
-        if (with_matrix)
-        {
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            for (unsigned int j = 0; j < n_dofs; ++j)
-              local_matrix(i, j) = K[i * n_dofs + j];
-          constraints.distribute_local_to_global(local_matrix,
-                                                 local_rhs,
-                                                 dofs,
-                                                 matrix,
-                                                 rhs);
-        }
+        if (pair.lagrange)
+          guard_constraint_rows(dofs,
+                                n_displacements,
+                                homogeneous,
+                                area,
+                                pair.lagrange_values[k],
+                                R,
+                                K);
+        add(n_dofs);
       }
+    }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::guard_constraint_rows(
+    const std::vector<types::global_dof_index> &dofs,
+    const unsigned int                          n_displacements,
+    const AffineConstraints<double>            &homogeneous,
+    const double                                area,
+    const Vec3<double>                         &lambda,
+    double                                     *R,
+    double                                     *K) const
+  {
+    // A constraint row that depends on no free unknown (e.g. a slave node
+    // fixed by Dirichlet conditions pressed onto a rigid surface) would
+    // make the system singular: its multiplier does no work on any free
+    // dof, so it is set to zero (the reaction goes to the Dirichlet
+    // boundary instead).
+    const unsigned int n = n_displacements + dim;
+    for (unsigned int i = n_displacements; i < n; ++i)
+    {
+      double free = 0, scale = 0;
+      for (unsigned int j = 0; j < n; ++j)
+      {
+        const double entry = std::abs(K[i * n + j]);
+        scale              = std::max(scale, entry);
+        if (j >= n_displacements || !homogeneous.is_constrained(dofs[j]))
+          free = std::max(free, entry);
+        else
+          for (const auto &e : *homogeneous.get_constraint_entries(dofs[j]))
+            free = std::max(free, entry * std::abs(e.second));
+      }
+      if (free > 1e-14 * scale)
+        continue;
+      const unsigned int d = i - n_displacements;
+      R[i]                 = area * lambda[d];
+      for (unsigned int j = 0; j < n; ++j)
+        K[i * n + j] = (j == i ? area : 0.);
     }
   }
 
@@ -423,9 +525,10 @@ namespace tribos
         else
           history.traction = {{0, 0, 0}};
       }
-      pair.old_slave_positions   = pair.slave_positions;
-      pair.old_master_positions  = pair.master_positions;
-      pair.committed_multipliers = pair.multipliers;
+      pair.old_slave_positions       = pair.slave_positions;
+      pair.old_master_positions      = pair.master_positions;
+      pair.committed_multipliers     = pair.multipliers;
+      pair.committed_lagrange_values = pair.lagrange_values;
     }
     committed_time = time;
   }
@@ -437,7 +540,38 @@ namespace tribos
   ContactHandler<dim>::restore()
   {
     for (auto &pair : pairs)
-      pair.multipliers = pair.committed_multipliers;
+    {
+      pair.multipliers     = pair.committed_multipliers;
+      pair.lagrange_values = pair.committed_lagrange_values;
+    }
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContactHandler<dim>::get_multipliers() const
+  {
+    std::vector<double> values;
+    values.reserve(n_multiplier_dofs);
+    for (const auto &pair : pairs)
+      for (const auto &lambda : pair.lagrange_values)
+        values.insert(values.end(), lambda.begin(), lambda.begin() + dim);
+    return values;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::set_multipliers(const std::vector<double> &values)
+  {
+    AssertDimension(values.size(), n_multiplier_dofs);
+    auto it = values.begin();
+    for (auto &pair : pairs)
+      for (auto &lambda : pair.lagrange_values)
+        for (unsigned int d = 0; d < dim; ++d)
+          lambda[d] = *it++;
   }
 
 

@@ -62,6 +62,42 @@ namespace tribos
 
 
   template <int dim>
+  void
+  Problem<dim>::apply_update(const Vector &update, const double step)
+  {
+    if (n_multipliers == 0)
+    {
+      solution.add(step, update);
+      return;
+    }
+    // Multipliers only in serial runs: every entry is owned here.
+    const types::global_dof_index n_dofs = dof_handler.n_dofs();
+    for (const auto i : locally_owned_dofs)
+      solution[i] += step * update[i];
+    solution.compress(VectorOperation::insert);
+    std::vector<double> lambda = contact->get_multipliers();
+    for (types::global_dof_index i = 0; i < n_multipliers; ++i)
+      lambda[i] += step * update[n_dofs + i];
+    contact->set_multipliers(lambda);
+  }
+
+
+
+  template <int dim>
+  double
+  Problem<dim>::displacement_norm(const Vector &v) const
+  {
+    if (n_multipliers == 0)
+      return v.l2_norm();
+    double sum = 0;
+    for (const auto i : locally_owned_dofs)
+      sum += v[i] * v[i];
+    return std::sqrt(Utilities::MPI::sum(sum, mpi_communicator));
+  }
+
+
+
+  template <int dim>
   double
   Problem<dim>::tangent_error(const double time)
   {
@@ -69,20 +105,32 @@ namespace tribos
                 ExcMessage("Nonlinear solver/Check tangent works in serial "
                            "runs only."));
     assemble(true, homogeneous_constraints, time);
-    const Vector start = solution;
+    const Vector              start = solution;
+    const std::vector<double> start_lambda =
+      contact ? contact->get_multipliers() : std::vector<double>();
+    const auto reset = [&]()
+    {
+      solution = start;
+      if (n_multipliers > 0)
+        contact->set_multipliers(start_lambda);
+    };
+    const types::global_dof_index n_system = system_owned.size();
 
-    // Columns: every free contact dof and every 7th free dof.
+    // Columns: every free contact dof, every multiplier and every 7th free
+    // dof.
     std::vector<types::global_dof_index> columns;
-    for (types::global_dof_index j = 0; j < dof_handler.n_dofs(); ++j)
+    for (types::global_dof_index j = 0; j < n_system; ++j)
       if (!homogeneous_constraints.is_constrained(j) &&
-          ((contact && contact->contact_dofs().is_element(j)) || j % 7 == 0))
+          ((contact && j < dof_handler.n_dofs() &&
+            contact->contact_dofs().is_element(j)) ||
+           j >= dof_handler.n_dofs() || j % 7 == 0))
         columns.push_back(j);
 
     double       error = 0, size = 0;
     const double h = 1e-7 * std::max(1., solution.linfty_norm());
-    Vector       unit(locally_owned_dofs, mpi_communicator);
-    Vector       plus(locally_owned_dofs, mpi_communicator);
-    Vector       column(locally_owned_dofs, mpi_communicator);
+    Vector       unit(system_owned, mpi_communicator);
+    Vector       plus(system_owned, mpi_communicator);
+    Vector       column(system_owned, mpi_communicator);
     for (const auto j : columns)
     {
       unit    = 0;
@@ -90,17 +138,17 @@ namespace tribos
       system_matrix.vmult(column, unit);
       homogeneous_constraints.distribute(unit);
 
-      solution = start;
-      solution.add(h, unit);
+      reset();
+      apply_update(unit, h);
       ghosted_solution = solution;
       assemble(false, homogeneous_constraints, time);
-      plus     = free_residual;
-      solution = start;
-      solution.add(-h, unit);
+      plus = free_residual;
+      reset();
+      apply_update(unit, -h);
       ghosted_solution = solution;
       assemble(false, homogeneous_constraints, time);
       // free_residual holds -R: dR/du_j = -(r+ - r-)/(2h) = K e_j.
-      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+      for (types::global_dof_index i = 0; i < n_system; ++i)
         if (!homogeneous_constraints.is_constrained(i))
         {
           const double fd = -(plus[i] - free_residual[i]) / (2 * h);
@@ -108,7 +156,7 @@ namespace tribos
           size += column[i] * column[i];
         }
     }
-    solution         = start;
+    reset();
     ghosted_solution = solution;
     return size > 0 ? std::sqrt(error / size) : 0.;
   }
@@ -127,9 +175,10 @@ namespace tribos
     AffineConstraints<double> increment_constraints;
     make_constraints(time, false, increment_constraints);
 
-    Vector newton_update(locally_owned_dofs, mpi_communicator);
-    Vector difference(locally_owned_dofs, mpi_communicator);
-    Vector line_search_base(locally_owned_dofs, mpi_communicator);
+    Vector              newton_update(system_owned, mpi_communicator);
+    Vector              difference(locally_owned_dofs, mpi_communicator);
+    Vector              line_search_base(locally_owned_dofs, mpi_communicator);
+    std::vector<double> multiplier_base;
 
     double       reference   = 0;
     double       step_length = std::numeric_limits<double>::quiet_NaN();
@@ -216,10 +265,14 @@ namespace tribos
         // Backtracking (Armijo) on the free residual norm. The first
         // iteration carries the Dirichlet increment and is taken whole.
         line_search_base = solution;
+        if (n_multipliers > 0)
+          multiplier_base = contact->get_multipliers();
         for (unsigned int k = 0;; ++k)
         {
           solution = line_search_base;
-          solution.add(step_length, newton_update);
+          if (n_multipliers > 0)
+            contact->set_multipliers(multiplier_base);
+          apply_update(newton_update, step_length);
           ghosted_solution = solution;
           double trial     = std::numeric_limits<double>::infinity();
           try
@@ -237,10 +290,10 @@ namespace tribos
       }
       else
       {
-        solution.add(1., newton_update);
+        apply_update(newton_update, 1.);
         ghosted_solution = solution;
       }
-      update_norm = step_length * newton_update.l2_norm();
+      update_norm = step_length * displacement_norm(newton_update);
     }
   }
 

@@ -228,12 +228,38 @@ namespace tribos
       locally_relevant_dofs.add_indices(contact->contact_dofs());
     }
 
+    // The system's unknowns: dofs, then the contact multipliers.
+    n_multipliers = contact ? contact->n_multipliers() : 0;
+    const types::global_dof_index n_system =
+      dof_handler.n_dofs() + n_multipliers;
+    system_owned = IndexSet(n_system);
+    system_owned.add_indices(locally_owned_dofs);
+    system_relevant = IndexSet(n_system);
+    system_relevant.add_indices(locally_relevant_dofs);
+    if (n_multipliers > 0)
+    {
+      AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
+                  ExcMessage("Contact/Method = lagrange multiplier runs on "
+                             "one MPI process; use penalty or augmented "
+                             "lagrangian with MPI."));
+      AssertThrow(parameters.linear_solver.type == "direct",
+                  ExcMessage("Contact/Method = lagrange multiplier gives an "
+                             "indefinite saddle-point system: it needs "
+                             "Linear solver/Type = direct (a pivoting sparse "
+                             "direct solver), not <" +
+                             parameters.linear_solver.type + ">."));
+      system_owned.add_range(dof_handler.n_dofs(), n_system);
+      system_relevant.add_range(dof_handler.n_dofs(), n_system);
+    }
+    system_owned.compress();
+    system_relevant.compress();
+
     make_constraints(0, true, homogeneous_constraints);
     make_sparsity();
 
-    system_rhs.reinit(locally_owned_dofs, mpi_communicator);
-    free_residual.reinit(locally_owned_dofs, mpi_communicator);
-    full_residual.reinit(locally_owned_dofs, mpi_communicator);
+    system_rhs.reinit(system_owned, mpi_communicator);
+    free_residual.reinit(system_owned, mpi_communicator);
+    full_residual.reinit(system_owned, mpi_communicator);
     solution.reinit(locally_owned_dofs, mpi_communicator);
     ghosted_solution.reinit(locally_owned_dofs,
                             locally_relevant_dofs,
@@ -249,21 +275,31 @@ namespace tribos
     // Contact couples slave nodes with master faces of other cells, often of
     // other bodies: those couplings join the bulk pattern, and the pattern
     // is rebuilt when the search meets a new slave-face pair.
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    homogeneous_constraints,
-                                    false);
+    DynamicSparsityPattern dsp(system_relevant);
+    if (n_multipliers == 0)
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      dsp,
+                                      homogeneous_constraints,
+                                      false);
+    else
+    {
+      // The bulk pattern on the dofs alone, copied into the system's.
+      DynamicSparsityPattern bulk(locally_relevant_dofs);
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      bulk,
+                                      homogeneous_constraints,
+                                      false);
+      for (const auto row : locally_relevant_dofs)
+        for (auto entry = bulk.begin(row); entry != bulk.end(row); ++entry)
+          dsp.add(row, entry->column());
+    }
     if (contact)
       contact->add_couplings(dsp, homogeneous_constraints);
     SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned_dofs,
+                                               system_owned,
                                                mpi_communicator,
-                                               locally_relevant_dofs);
-    system_matrix.reinit(locally_owned_dofs,
-                         locally_owned_dofs,
-                         dsp,
-                         mpi_communicator);
+                                               system_relevant);
+    system_matrix.reinit(system_owned, system_owned, dsp, mpi_communicator);
   }
 
 
@@ -275,7 +311,7 @@ namespace tribos
                                  AffineConstraints<double> &constraints) const
   {
     constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
+    constraints.reinit(system_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
 
     // Dirichlet: du = g(t) - u on the constrained dofs, or du = 0.
@@ -316,7 +352,7 @@ namespace tribos
 
     if (!bc.symmetry.empty())
     {
-      AffineConstraints<double>          symmetry(locally_relevant_dofs);
+      AffineConstraints<double>          symmetry(system_relevant);
       const std::set<types::boundary_id> ids(bc.symmetry.begin(),
                                              bc.symmetry.end());
       VectorTools::compute_no_normal_flux_constraints(dof_handler,

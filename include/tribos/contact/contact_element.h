@@ -51,6 +51,12 @@ namespace tribos
      * @p previous_traction the committed T_n. R gets n_dofs entries (slave
      * dofs first, then master node by node); K, if not null, n_dofs^2
      * (row-major, K_ij = dR_i/du_j).
+     *
+     * With @p multiplier (the slave's Lagrange multiplier, a traction
+     * vector) the element is the Lagrange multiplier element instead: the
+     * force on the nodes is the multiplier, R and K get dim more entries
+     * (rows: the node's constraint equations; columns: the multiplier
+     * components), see multiplier_law() in the source.
      */
     static ContactPointResult
     evaluate(const Vec3<double> &slave,
@@ -63,7 +69,8 @@ namespace tribos
              const double        area,
              const bool          consistent,
              double             *R,
-             double             *K);
+             double             *K,
+             const Vec3<double> *multiplier = nullptr);
   };
 
   /** The same element against a rigid surface: only the slave's dofs. */
@@ -75,6 +82,7 @@ namespace tribos
     /**
      * @p shift and @p shift_old are the surface's translation now and at
      * the last converged step, @p slave_old the slave's position then.
+     * @p multiplier as for NodeToSegment.
      */
     static ContactPointResult
     evaluate(const Vec3<double>      &slave,
@@ -87,7 +95,8 @@ namespace tribos
              const double             area,
              const bool               consistent,
              double                  *R,
-             double                  *K);
+             double                  *K,
+             const Vec3<double>      *multiplier = nullptr);
   };
 } // namespace tribos
 

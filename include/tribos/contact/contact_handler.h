@@ -42,7 +42,8 @@ namespace tribos
    * All contact pairs of a scene: surfaces, search, history and the
    * assembly of the penalty contact terms. The search (update()) pairs each
    * slave node with a master face or rigid surface and is independent of
-   * the enforcement; assemble() consumes those pairs.
+   * the enforcement; assemble() consumes those pairs with penalty,
+   * augmented Lagrangian (Uzawa) or Lagrange multiplier enforcement.
    *
    * Each process evaluates the slave nodes whose dofs it owns, so every
    * contact element is assembled exactly once under MPI.
@@ -104,6 +105,26 @@ namespace tribos
              TrilinosWrappers::MPI::Vector   &rhs,
              TrilinosWrappers::MPI::Vector   &free_residual,
              TrilinosWrappers::MPI::Vector   &full_residual);
+
+    /**
+     * Number of Lagrange multiplier unknowns: dim per slave node of every
+     * pair enforced by Lagrange multipliers (zero otherwise). They are
+     * numbered after the n displacement dofs, n + offset + dim k + d, and
+     * every one of them has a row in the system: the node's constraint
+     * while it is closed, the multiplier itself (Lambda = 0) while open.
+     */
+    types::global_dof_index
+    n_multipliers() const
+    {
+      return n_multiplier_dofs;
+    }
+
+    /** The multipliers in the order of their global numbers. */
+    std::vector<double>
+    get_multipliers() const;
+
+    void
+    set_multipliers(const std::vector<double> &values);
 
     /** Make the last evaluated state the converged history. */
     void
@@ -171,10 +192,15 @@ namespace tribos
       double                               area_factor = 1;
       ContactSearch<dim>                   search;
 
-      std::vector<bool>               owned;
-      std::vector<double>             multipliers, committed_multipliers;
-      std::vector<SlaveHistory>       history;
-      std::vector<Pairing>            pairing;
+      std::vector<bool>   owned;
+      std::vector<double> multipliers, committed_multipliers;
+      /** Lagrange multiplier method: first multiplier number, and per
+       * slave node the traction vector Lambda (current and committed). */
+      bool                      lagrange         = false;
+      types::global_dof_index   first_multiplier = 0;
+      std::vector<Vec3<double>> lagrange_values, committed_lagrange_values;
+      std::vector<SlaveHistory> history;
+      std::vector<Pairing>      pairing;
       std::vector<ContactPointResult> results;
       std::vector<Vec3<double>>       slave_positions, old_slave_positions;
       std::vector<Vec3<double>>       master_positions, old_master_positions;
@@ -182,21 +208,37 @@ namespace tribos
     };
 
     /** The dofs of the element of slave @p node against master @p face
-     * (slave first, then the face's nodes), into @p dofs. */
+     * (slave first, then the face's nodes, then the node's multipliers
+     * for a Lagrange pair), into @p dofs. */
     void
     element_dofs(const Pair                           &pair,
                  const unsigned int                    node,
                  const int                             face,
                  std::vector<types::global_dof_index> &dofs) const;
 
+    /**
+     * Lagrange pairs: replace every constraint row of an element (@p R,
+     * @p K with n_displacements + dim rows) that depends on no free
+     * unknown by Lambda_d = 0.
+     */
+    void
+    guard_constraint_rows(const std::vector<types::global_dof_index> &dofs,
+                          const unsigned int               n_displacements,
+                          const AffineConstraints<double> &homogeneous,
+                          const double                     area,
+                          const Vec3<double>              &lambda,
+                          double                          *R,
+                          double                          *K) const;
+
     const Parameters::Contact &parameters;
     MPI_Comm                   mpi_communicator;
     bool                       consistent;
     std::vector<Pair>          pairs;
     IndexSet                   all_contact_dofs;
-    bool                       outdated       = true;
-    double                     time           = 0;
-    double                     committed_time = 0;
+    types::global_dof_index    n_multiplier_dofs = 0;
+    bool                       outdated          = true;
+    double                     time              = 0;
+    double                     committed_time    = 0;
   };
 } // namespace tribos
 

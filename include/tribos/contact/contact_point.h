@@ -19,6 +19,15 @@ namespace tribos
      * t_N = <lambda - eps_N g_N>. Zero for pure penalty.
      */
     double multiplier = 0;
+    /**
+     * Lagrange multiplier method only: bit d set if the slave node's
+     * displacement component d is fixed (Dirichlet or a symmetry plane).
+     * A stick condition along a tangent in which the slave cannot move
+     * would make the saddle-point system singular (e.g. on a symmetry
+     * plane); there the tangential multiplier is set to zero instead,
+     * which is what symmetry implies.
+     */
+    unsigned int fixed_components = 0;
   };
 
   /** Contact status of a slave node, as written to CSTATUS. */

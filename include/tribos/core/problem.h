@@ -114,6 +114,13 @@ namespace tribos
                     const unsigned int increment);
     void
     solve_linear_system(Vector &newton_update);
+    /** Add @p step times the system vector @p update to the displacement
+     * and to the multipliers. */
+    void
+    apply_update(const Vector &update, const double step);
+    /** l2 norm of the displacement part of a system vector. */
+    double
+    displacement_norm(const Vector &v) const;
     double
     tangent_error(const double time);
 
@@ -150,6 +157,16 @@ namespace tribos
 
     IndexSet locally_owned_dofs;
     IndexSet locally_relevant_dofs;
+    /**
+     * The unknowns of the linear system: the displacement dofs followed by
+     * the contact Lagrange multipliers (none unless a pair uses them). The
+     * matrix, right-hand side, residuals and Newton update live on these;
+     * the displacement (solution) lives on the dofs alone, the multipliers
+     * in the contact handler.
+     */
+    IndexSet                system_owned;
+    IndexSet                system_relevant;
+    types::global_dof_index n_multipliers = 0;
 
     AffineConstraints<double> homogeneous_constraints;
 
