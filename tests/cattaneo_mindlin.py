@@ -11,11 +11,13 @@ import sys
 from tribos_test import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
+# Optional 4th argument: the enforcement (default penalty).
+method = sys.argv[4] if len(sys.argv) > 4 else "penalty"
 E, nu, R, mu = 1.0, 0.3, 1.0, 0.3
 e_star = E / (2 * (1 - nu * nu))
 steps = 6
 run(tribos, tests + "/cattaneo_mindlin.prm", out,
-    ["Time stepping/Number of steps=%d" % steps])
+    ["Time stepping/Number of steps=%d" % steps, "Contact/Method=" + method])
 history = read_csv(out + "/history.csv")
 
 

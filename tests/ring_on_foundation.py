@@ -1,10 +1,12 @@
 """The paper's ring on a foundation (parameters/ring_on_foundation.prm, the
-full 81 steps): penalty (eps_N = 1e5) and augmented Lagrangian both
-complete; at the last step the ring has lifted off in the middle (slave
-nodes with |x| < 30 open) while nodes on both sides are in contact; the
-augmented Lagrangian keeps every closed node's penetration below its
-tolerance (1e-4 of the element size) and reduces the penalty's maximum
-penetration; both give the same foundation reaction within 0.1 %."""
+full 81 steps): penalty (eps_N = 1e5), augmented Lagrangian and Lagrange
+multipliers all complete; at the last step the ring has lifted off in the
+middle (slave nodes with |x| < 30 open) while nodes on both sides are in
+contact; the Lagrange multipliers close every contact node exactly
+(penetration < 1e-10 of the element size), the augmented Lagrangian below
+its tolerance (1e-4 of the element size), both below the penalty's
+penetration; penalty and augmented Lagrangian give the Lagrange foundation
+reaction within 0.1 %, the augmented Lagrangian closer than the penalty."""
 
 import math
 import sys
@@ -14,7 +16,7 @@ from tribos_test import setup, run, read_csv, check, finish
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/../parameters/ring_on_foundation.prm"
 final = {}
-for method in ("penalty", "augmented lagrangian"):
+for method in ("penalty", "augmented lagrangian", "lagrange multiplier"):
     folder = out + "/" + method.replace(" ", "_")
     run(tribos, prm, folder, ["Contact/Method=" + method])
     history = read_csv(folder + "/history.csv")
@@ -45,9 +47,20 @@ check(penetration <= 1e-4 * size * 1.01,
 check(penetration < max(h["max_penetration"] for h in penalty),
       "penalty max penetration %.3e is larger"
       % max(h["max_penetration"] for h in penalty))
-difference = abs(penalty[-1]["RF12_y"] - augmented[-1]["RF12_y"]) / abs(
-    augmented[-1]["RF12_y"])
-check(difference < 1e-3, "final foundation reaction: penalty %.2f, augmented "
-      "%.2f (%.2e relative)" % (penalty[-1]["RF12_y"], augmented[-1]["RF12_y"],
-                                difference))
+exact = final["lagrange multiplier"]
+penetration = max(h["max_penetration"] for h in exact)
+check(penetration < 1e-10 * size,
+      "lagrange multiplier: max penetration %.1e < 1e-10 x element size"
+      % penetration)
+reference = exact[-1]["RF12_y"]
+differences = {}
+for method in ("penalty", "augmented lagrangian"):
+    value = final[method][-1]["RF12_y"]
+    differences[method] = abs(value - reference) / abs(reference)
+    check(differences[method] < 1e-3,
+          "final foundation reaction: %s %.2f, Lagrange %.2f (%.2e relative)"
+          % (method, value, reference, differences[method]))
+check(differences["augmented lagrangian"] < differences["penalty"],
+      "the augmented Lagrangian is closer to the Lagrange reaction than the "
+      "penalty")
 finish()

@@ -11,9 +11,12 @@ import sys
 from tribos_test import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
+# Optional 4th argument: the enforcement (default penalty).
+method = sys.argv[4] if len(sys.argv) > 4 else "penalty"
 mu = 0.3
 run(tribos, tests + "/sliding_block.prm", out,
-    ["Time stepping/Number of steps=24", "Output/Frequency=4"])
+    ["Time stepping/Number of steps=24", "Output/Frequency=4",
+     "Contact/Method=" + method])
 rows = read_csv(out + "/history.csv")
 
 press = [r for r in rows if r["time"] <= 1 + 1e-12]

@@ -160,43 +160,52 @@ namespace tribos
       result.pressure = value(pressure);
       result.status   = ContactStatus::stick;
 
-      Vec3<Number> tangential = tau;
+      // Tangents in which the slave cannot move (symmetry planes,
+      // Dirichlet): there the condition is T . t = 0 (what symmetry
+      // implies); a stick condition would be singular. The friction law
+      // acts in the remaining tangent directions.
+      Vec3<Number> fixed[2];
+      unsigned int n_fixed = 0;
+      for (unsigned int d = 0; d < 3 && n_fixed < 2; ++d)
+        if (law.fixed_components & (1u << d))
+        {
+          Vec3<Number> t = {{Number(0.), Number(0.), Number(0.)}};
+          t[d]           = 1.;
+          t              = t - scale(normal[d], normal);
+          for (unsigned int i = 0; i < n_fixed; ++i)
+            t = t - scale(dot(t, fixed[i]), fixed[i]);
+          const Number length = norm(t);
+          if (value(length) >= 0.5)
+            fixed[n_fixed++] = scale(1. / length, t);
+        }
+      const auto free_part = [&](const Vec3<Number> &v)
+      {
+        Vec3<Number> result = v;
+        for (unsigned int i = 0; i < n_fixed; ++i)
+          result = result - scale(dot(v, fixed[i]), fixed[i]);
+        return result;
+      };
+      const Vec3<Number> tau_free = free_part(tau);
+
+      Vec3<Number> tangential = tau_free;
       if (law.friction_coefficient > 0)
       {
+        const Vec3<Number> slip = free_part(slip_increment);
         const Vec3<Number> trial =
-          tau + scale(law.tangential_penalty, slip_increment);
+          tau_free + scale(law.tangential_penalty, slip);
         const Number magnitude = norm(trial);
         const Number limit     = law.friction_coefficient * pressure;
         if (value(magnitude) > value(limit))
         {
-          tangential            = tau - scale(limit / magnitude, trial);
+          tangential            = tau_free - scale(limit / magnitude, trial);
           result.status         = ContactStatus::slip;
-          result.slip_increment = value(norm(slip_increment));
+          result.slip_increment = value(norm(slip));
         }
         else
-        {
-          tangential = scale(law.tangential_penalty, slip_increment);
-          // Tangents in which the slave is fixed: T . t = 0 there.
-          Vec3<Number> done[2];
-          unsigned int n_done = 0;
-          for (unsigned int d = 0; d < 3; ++d)
-            if (law.fixed_components & (1u << d))
-            {
-              Vec3<Number> t = {{Number(0.), Number(0.), Number(0.)}};
-              t[d]           = 1.;
-              t              = t - scale(normal[d], normal);
-              for (unsigned int i = 0; i < n_done; ++i)
-                t = t - scale(dot(t, done[i]), done[i]);
-              const Number length = norm(t);
-              if (value(length) < 0.5 || n_done == 2)
-                continue;
-              t = scale(1. / length, t);
-              tangential =
-                tangential + scale(dot(tau, t) - dot(tangential, t), t);
-              done[n_done++] = t;
-            }
-        }
+          tangential = scale(law.tangential_penalty, slip);
       }
+      tangential = tangential + (tau - tau_free);
+
       // Rows in the local frame (n, t_1, t_2): the normal row must not
       // see the tangential rows' geometry. (As one global vector
       // c g n + P_T C, the term c g dn/du of a penetrating node would put

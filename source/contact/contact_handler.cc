@@ -600,7 +600,11 @@ namespace tribos
           {
             const double area = pair.slave->nodes()[k].area;
             const double size = (dim == 2 ? area : std::sqrt(area));
-            violation = std::max(violation, -pair.results[k].gap / size);
+            // Closed nodes must touch: a gap of either sign is a
+            // violation (a positive one means the warm-started multiplier
+            // of an unloading node is too large).
+            violation =
+              std::max(violation, std::abs(pair.results[k].gap) / size);
           }
     violation = Utilities::MPI::max(violation, mpi_communicator);
     if (violation > tolerance)

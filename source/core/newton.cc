@@ -24,7 +24,17 @@ namespace tribos
       TrilinosWrappers::SolverDirect solver(
         control,
         TrilinosWrappers::SolverDirect::AdditionalData(false, p.direct_solver));
-      solver.solve(system_matrix, newton_update, system_rhs);
+      try
+      {
+        solver.solve(system_matrix, newton_update, system_rhs);
+      }
+      catch (const std::exception &e)
+      {
+        // A singular matrix (e.g. an unsupported body, or a degenerate
+        // active set) fails this increment; the load stepping cuts back.
+        throw NonConvergence("the direct solver " + p.direct_solver +
+                             " failed (singular system?)");
+      }
     }
     else
     {

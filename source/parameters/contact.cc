@@ -65,7 +65,11 @@ namespace tribos
                         "eps_N g_N> with the multiplier lambda of each slave "
                         "node updated (Uzawa) until the penetration is "
                         "below Augmentation tolerance; lagrange multiplier: "
-                        "not implemented yet.");
+                        "exact contact, the traction of every slave node is "
+                        "an unknown of the system (saddle point, direct "
+                        "solver, one MPI process); the active set and "
+                        "stick/slip follow from lambda - eps_N g_N inside "
+                        "Newton, so eps_N then only affects the iterates.");
       prm.declare_entry("Penalty factor",
                         "100*E",
                         dealii::Patterns::Anything(),

@@ -140,8 +140,10 @@ namespace tribos
 
     /**
      * Uzawa step of the augmented Lagrangian pairs at the last evaluated
-     * (converged) state: returns the largest penetration of a closed slave
-     * node relative to its element size; if that exceeds @p tolerance the
+     * (converged) state: returns the largest |g_N| of a closed slave node
+     * (penetration, or separation under a too large warm-started
+     * multiplier) relative to its element size; if that exceeds
+     * @p tolerance the
      * multipliers are updated to lambda <- t_N (the increment must then be
      * solved again), otherwise they are left as they are.
      */
