@@ -4,7 +4,11 @@ iteration of two sliding runs where slave nodes cross master faces: the
 2D ironing scene (deformable curved slave on a deformable master) and
 3D frictional block-on-block sliding (bilinear master faces). Asserts a
 relative error below 1e-6 everywhere (columns of all contact dofs and
-every 7th dof)."""
+every 7th dof; with Lagrange multipliers also every multiplier column and
+row). One state is excluded: the first check of a Lagrange run, at first
+touch, has Lambda = 0 and dg_T = 0 at the node that just closed, which is
+the kink |T_trial| = mu t_N = 0 of the semismooth stick/slip switch, where
+central differences straddle two branches (its error is printed)."""
 
 import re
 import sys
@@ -12,14 +16,22 @@ import sys
 from tribos_test import setup, run, check, finish
 
 tribos, tests, out = setup(sys.argv)
-for name, sets in (("ironing_2d", ["Time stepping/End time=1.5",
-                                   "Time stepping/Number of steps=6"]),
-                   ("sliding_blocks_3d", [])):
-    result = run(tribos, "%s/%s.prm" % (tests, name), out + "/" + name,
+ironing = ["Time stepping/End time=1.5", "Time stepping/Number of steps=6"]
+lagrange = ["Contact/Method=lagrange multiplier"]
+for name, prm, sets in (
+        ("ironing_2d", "ironing_2d", ironing),
+        ("sliding_blocks_3d", "sliding_blocks_3d", []),
+        ("ironing_2d lagrange", "ironing_2d", ironing + lagrange),
+        ("sliding_blocks_3d lagrange", "sliding_blocks_3d", lagrange)):
+    result = run(tribos, "%s/%s.prm" % (tests, prm),
+                 out + "/" + name.replace(" ", "_"),
                  sets + ["Nonlinear solver/Check tangent=true"])
     errors = [float(e) for e in
               re.findall(r"tangent check, iteration \d+: relative error (\S+)",
                          result.stdout)]
+    if "lagrange" in name:
+        print("%s: first check, at the kink, %.2e" % (name, errors[0]))
+        errors = errors[1:]
     check(len(errors) > 10 and max(errors) < 1e-6,
           "%s: %d checks, max relative tangent error %.2e < 1e-6"
           % (name, len(errors), max(errors)))
