@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The ring on a foundation (paper section 4.2) with penalty and augmented
-# Lagrangian, on the paper's mesh (64 x 2 ring) and refined once (128 x 4):
+# The ring on a foundation (paper section 4.2) with penalty, augmented
+# Lagrangian and Lagrange multipliers, on the paper's mesh (64 x 2 ring)
+# and refined once (128 x 4), Lagrange also twice (256 x 8):
 # copies each history.csv to doc/data/ring_<variant>.csv, writes
 # doc/data/ring_study.csv (dofs, Newton iterations, wall time, max
 # penetration, final reaction) and plots doc/ring_force.png.
-#   bash benchmarks/ring_study.sh [build/tribos]        (~1 minute)
+#   bash benchmarks/ring_study.sh [build/tribos]        (~3 minutes)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 tribos=${1:-$root/build/tribos}
@@ -12,8 +13,9 @@ out=$(mktemp -d)
 mkdir -p "$root/doc/data"
 echo "variant,dofs,newton_iterations,cutbacks,wall_time,max_penetration,final_reaction" \
   > "$root/doc/data/ring_study.csv"
-for refinement in 0 1; do
-  for method in penalty "augmented lagrangian"; do
+for refinement in 0 1 2; do
+  for method in penalty "augmented lagrangian" "lagrange multiplier"; do
+    [ $refinement = 2 ] && [ "$method" != "lagrange multiplier" ] && continue
     variant="${method// /_}_r$refinement"
     "$tribos" "$root/parameters/ring_on_foundation.prm" \
       --set "Contact/Method=$method" --set "Scene/Refinement=$refinement" \
@@ -48,6 +50,9 @@ d(t) = 20*(t < 1 ? t : 1) + 0.5*(t > 1 ? t - 1 : 0)
 plot "doc/data/ring_penalty_r0.csv" using (d($3)):"RF12_y" with lines lw 2 title "penalty 1e5, 64 x 2 (paper mesh)", \
      "doc/data/ring_augmented_lagrangian_r0.csv" using (d($3)):"RF12_y" with lines dt 2 lw 2 title "augmented Lagrangian, 64 x 2", \
      "doc/data/ring_penalty_r1.csv" using (d($3)):"RF12_y" with lines lw 2 title "penalty 1e5, 128 x 4", \
-     "doc/data/ring_augmented_lagrangian_r1.csv" using (d($3)):"RF12_y" with lines dt 2 lw 2 title "augmented Lagrangian, 128 x 4"
+     "doc/data/ring_augmented_lagrangian_r1.csv" using (d($3)):"RF12_y" with lines dt 2 lw 2 title "augmented Lagrangian, 128 x 4", \
+     "doc/data/ring_lagrange_multiplier_r0.csv" using (d($3)):"RF12_y" with lines dt 3 lw 2 title "Lagrange multipliers, 64 x 2", \
+     "doc/data/ring_lagrange_multiplier_r1.csv" using (d($3)):"RF12_y" with lines dt 3 lw 2 title "Lagrange multipliers, 128 x 4", \
+     "doc/data/ring_lagrange_multiplier_r2.csv" using (d($3)):"RF12_y" with lines lw 2 title "Lagrange multipliers, 256 x 8"
 GP
 echo "wrote doc/data/ring_study.csv, doc/ring_force.png"
