@@ -17,7 +17,8 @@ namespace tribos
     const DoFHandler<dim>                           &dof_handler,
     const std::function<double(types::material_id)> &youngs_modulus,
     const IndexSet                                  &locally_owned_dofs,
-    const MPI_Comm                                   mpi_communicator)
+    const MPI_Comm                                   mpi_communicator,
+    const bool                                       axisymmetric)
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
     , consistent(parameters.tangent == "consistent")
@@ -39,7 +40,8 @@ namespace tribos
                              "ids are listed in the README."));
       auto &s = surfaces[id];
       if (!s)
-        s = std::make_shared<ContactSurface<dim>>(dof_handler, id);
+        s =
+          std::make_shared<ContactSurface<dim>>(dof_handler, id, axisymmetric);
       return s;
     };
     std::map<std::string, std::shared_ptr<RigidSurface<dim>>> rigid_surfaces;
@@ -96,6 +98,22 @@ namespace tribos
           locally_owned_dofs.is_element(pair.slave->nodes()[k].dofs[0]);
       pair.history.resize(n_slaves);
       pair.multipliers.assign(n_slaves, 0.);
+      // Lagrange pairs: a slave node that an earlier Lagrange pair already
+      // constrains against the same master (an edge shared by two slave
+      // surfaces, e.g. the top and the side of an upset cylinder) would
+      // get a second, identical constraint: the system would be singular.
+      // It is left to the earlier pair (its multipliers are held at 0).
+      pair.duplicate.assign(n_slaves, false);
+      if (pair.lagrange)
+        for (unsigned int k = 0; k < n_slaves; ++k)
+          for (const auto &other : pairs)
+            if (other.lagrange &&
+                other.description.rigid_surface == description.rigid_surface &&
+                other.description.master_boundary ==
+                  description.master_boundary)
+              for (const auto &node : other.slave->nodes())
+                if (node.vertex == pair.slave->nodes()[k].vertex)
+                  pair.duplicate[k] = true;
       if (pair.lagrange)
       {
         pair.first_multiplier = dof_handler.n_dofs() + n_multiplier_dofs;
@@ -158,7 +176,7 @@ namespace tribos
       if (pair.rigid)
       {
         for (unsigned int k = 0; k < pair.owned.size(); ++k)
-          pair.pairing[k].valid = pair.owned[k];
+          pair.pairing[k].valid = pair.owned[k] && !pair.duplicate[k];
         continue;
       }
       positions(*pair.master, pair.master_positions);
@@ -168,7 +186,7 @@ namespace tribos
       for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
         Pairing &pairing = pair.pairing[k];
-        if (!pair.owned[k])
+        if (!pair.owned[k] || pair.duplicate[k])
           continue;
         const Vec3<double> &x = pair.slave_positions[k];
 

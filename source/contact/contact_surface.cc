@@ -8,7 +8,8 @@ namespace tribos
 {
   template <int dim>
   ContactSurface<dim>::ContactSurface(const DoFHandler<dim>   &dof_handler,
-                                      const types::boundary_id boundary_id)
+                                      const types::boundary_id boundary_id,
+                                      const bool               axisymmetric)
     : id(boundary_id)
   {
     std::map<unsigned int, unsigned int> node_of_vertex;
@@ -93,8 +94,9 @@ namespace tribos
           (dim == 2 ? norm(a[0]) : norm(cross(a[0], a[1])));
         // Weights of [0,1]^(dim-1) times 2^(dim-1) for [-1,1].
         const double weight = quadrature.weight(q) * (dim == 2 ? 2. : 4.);
+        const double ring   = axisymmetric ? 2 * numbers::PI * xbar[0] : 1.;
         for (unsigned int v = 0; v < n_face_nodes; ++v)
-          node_list[face.nodes[v]].area += N[v] * jacobian * weight;
+          node_list[face.nodes[v]].area += N[v] * jacobian * weight * ring;
       }
     }
 

@@ -69,6 +69,14 @@ namespace tribos
     Tensor<2, dim> P;
     Tensor<4, dim> A;
 
+    // Axisymmetric: the radial displacement at the quadrature points (the
+    // hoop stretch 1 + u_r / r) and the 3D stress and tangent.
+    const bool axisymmetric = parameters.finite_element.axisymmetric;
+    std::vector<dealii::Vector<double>> values(n_q,
+                                               dealii::Vector<double>(dim));
+    Tensor<2, 3>                        F3, P3, row3;
+    Tensor<4, 3>                        A3;
+
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
       if (!cell->is_locally_owned())
@@ -79,6 +87,8 @@ namespace tribos
       cell_rhs    = 0;
 
       fe_values.get_function_gradients(ghosted_solution, gradients);
+      if (axisymmetric)
+        fe_values.get_function_values(ghosted_solution, values);
       if (f_bar)
       {
         fe_values_centre.reinit(cell);
@@ -90,7 +100,7 @@ namespace tribos
         J0 = determinant(F0);
       }
       const Material<dim> &material  = *materials[cell->material_id()];
-      const unsigned int   n_history = material.n_history_variables();
+      const unsigned int   n_history = n_history_variables(cell->material_id());
       const unsigned int   offset = history_offset[cell->active_cell_index()];
 
       for (unsigned int q = 0; q < n_q; ++q)
@@ -103,6 +113,57 @@ namespace tribos
           n_history ? &history_old[offset + q * n_history] : nullptr;
         double *new_history =
           n_history ? &history_new[offset + q * n_history] : nullptr;
+
+        if (axisymmetric)
+        {
+          // F = [[F_rr, F_rz, 0], [F_zr, F_zz, 0], [0, 0, 1 + u_r / r]];
+          // the virtual deformation gradient of dof i has, besides its
+          // in-plane row, phi_i / r in the hoop entry when it is radial.
+          const double radius = fe_values.quadrature_point(q)[0];
+          F3                  = 0;
+          for (unsigned int a = 0; a < 2; ++a)
+            for (unsigned int b = 0; b < 2; ++b)
+              F3[a][b] = F[a][b];
+          F3[2][2] = 1. + values[q](0) / radius;
+          axisymmetric_materials[cell->material_id()]->evaluate(F3,
+                                                                old_history,
+                                                                new_history,
+                                                                P3,
+                                                                with_matrix ?
+                                                                  &A3 :
+                                                                  nullptr);
+          const double JxW = fe_values.JxW(q) * 2. * numbers::PI * radius;
+          if (body_force)
+            body_force->vector_value(fe_values.quadrature_point(q), force);
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const unsigned int    ci     = component[i];
+            const Tensor<1, dim> &grad_i = fe_values.shape_grad(i, q);
+            const double          hoop_i =
+              (ci == 0 ? fe_values.shape_value(i, q) / radius : 0.);
+            double r =
+              P3[ci][0] * grad_i[0] + P3[ci][1] * grad_i[1] + P3[2][2] * hoop_i;
+            if (body_force)
+              r -= force[ci] * fe_values.shape_value(i, q);
+            cell_rhs(i) -= r * JxW;
+            if (with_matrix)
+            {
+              row3 = grad_i[0] * A3[ci][0] + grad_i[1] * A3[ci][1] +
+                     hoop_i * A3[2][2];
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+              {
+                const unsigned int    cj     = component[j];
+                const Tensor<1, dim> &grad_j = fe_values.shape_grad(j, q);
+                double                value =
+                  row3[cj][0] * grad_j[0] + row3[cj][1] * grad_j[1];
+                if (cj == 0)
+                  value += row3[2][2] * fe_values.shape_value(j, q) / radius;
+                cell_matrix(i, j) += value * JxW;
+              }
+            }
+          }
+          continue;
+        }
         const double s = f_bar ? FBar<dim>::scale(F, J0) : 1.;
         material.evaluate(s * F,
                           old_history,
@@ -172,10 +233,14 @@ namespace tribos
             {
               it->second->vector_value(fe_face_values.quadrature_point(q),
                                        force);
+              const double ring =
+                axisymmetric ?
+                  2. * numbers::PI * fe_face_values.quadrature_point(q)[0] :
+                  1.;
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 cell_rhs(i) += force[component[i]] *
                                fe_face_values.shape_value(i, q) *
-                               fe_face_values.JxW(q);
+                               fe_face_values.JxW(q) * ring;
             }
           }
 

@@ -220,10 +220,16 @@ namespace tribos
     bool                   any_history = false;
     for (const auto &m : materials)
       any_history = any_history || m->n_history_variables() > 0;
+    for (const auto &m : axisymmetric_materials)
+      any_history = any_history || m->n_history_variables() > 0;
 
-    FEValues<dim>                            fe_values(*fe,
+    const bool    axisymmetric = parameters.finite_element.axisymmetric;
+    FEValues<dim> fe_values(*fe,
                             quadrature,
-                            update_gradients | update_JxW_values);
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    std::vector<dealii::Vector<double>>      values(quadrature.size(),
+                                               dealii::Vector<double>(dim));
     std::vector<std::vector<Tensor<1, dim>>> gradients(
       quadrature.size(),
       std::vector<Tensor<1, dim>>(dim));
@@ -237,6 +243,8 @@ namespace tribos
         const unsigned int index = cell->active_cell_index();
         fe_values.reinit(cell);
         fe_values.get_function_gradients(ghosted_solution, gradients);
+        if (axisymmetric)
+          fe_values.get_function_values(ghosted_solution, values);
         double J0 = 1;
         if (parameters.finite_element.f_bar)
         {
@@ -249,8 +257,8 @@ namespace tribos
             F0[c] += centre_gradients[0][c];
           J0 = determinant(F0);
         }
-        const auto           &material  = *materials[cell->material_id()];
-        const unsigned int    n_history = material.n_history_variables();
+        const auto        &material  = *materials[cell->material_id()];
+        const unsigned int n_history = n_history_variables(cell->material_id());
         SymmetricTensor<2, 3> average;
         double                volume = 0, peeq = 0;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
@@ -263,9 +271,26 @@ namespace tribos
                         nullptr;
           if (parameters.finite_element.f_bar)
             F *= FBar<dim>::scale(F, J0);
-          average += fe_values.JxW(q) * material.cauchy_stress(F, history);
-          peeq +=
-            fe_values.JxW(q) * material.equivalent_plastic_strain(history);
+          if (axisymmetric)
+          {
+            // stress_zz is the hoop stress.
+            Tensor<2, 3> F3;
+            for (unsigned int a = 0; a < 2; ++a)
+              for (unsigned int b = 0; b < 2; ++b)
+                F3[a][b] = F[a][b];
+            F3[2][2] = 1. + values[q](0) / fe_values.quadrature_point(q)[0];
+            const auto &material3 =
+              *axisymmetric_materials[cell->material_id()];
+            average += fe_values.JxW(q) * material3.cauchy_stress(F3, history);
+            peeq +=
+              fe_values.JxW(q) * material3.equivalent_plastic_strain(history);
+          }
+          else
+          {
+            average += fe_values.JxW(q) * material.cauchy_stress(F, history);
+            peeq +=
+              fe_values.JxW(q) * material.equivalent_plastic_strain(history);
+          }
           volume += fe_values.JxW(q);
         }
         average /= volume;

@@ -109,6 +109,7 @@ namespace tribos
     for (const auto &cell : triangulation.active_cell_iterators())
       max_body = std::max(max_body, cell->material_id());
     materials.clear();
+    axisymmetric_materials.clear();
     for (unsigned int body = 0; body <= max_body; ++body)
       materials.push_back(create_material<dim>(
         Parameters::Materials::for_body(m.models, body, "Model"),
@@ -130,6 +131,36 @@ namespace tribos
           Parameters::Materials::for_body(m.linear_hardening_moduli,
                                           body,
                                           "Linear hardening modulus")}}));
+    if (parameters.finite_element.axisymmetric)
+    {
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto v : cell->vertex_indices())
+          AssertThrow(cell->vertex(v)[0] >= -1e-10 * cell->diameter(),
+                      ExcMessage("Finite element/Axisymmetric = true needs "
+                                 "the mesh in x = r >= 0; vertex at x = " +
+                                 std::to_string(cell->vertex(v)[0]) + "."));
+      for (unsigned int body = 0; body <= max_body; ++body)
+        axisymmetric_materials.push_back(create_material<3>(
+          Parameters::Materials::for_body(m.models, body, "Model"),
+          Parameters::Materials::for_body(m.youngs_moduli,
+                                          body,
+                                          "Young's modulus"),
+          Parameters::Materials::for_body(m.poissons_ratios,
+                                          body,
+                                          "Poisson's ratio"),
+          {{Parameters::Materials::for_body(m.yield_stresses,
+                                            body,
+                                            "Yield stress"),
+            Parameters::Materials::for_body(m.saturation_yield_stresses,
+                                            body,
+                                            "Saturation yield stress"),
+            Parameters::Materials::for_body(m.hardening_exponents,
+                                            body,
+                                            "Hardening exponent"),
+            Parameters::Materials::for_body(m.linear_hardening_moduli,
+                                            body,
+                                            "Linear hardening modulus")}}));
+    }
 
     // History only where a material has memory: elastic bodies pay nothing.
     const unsigned int n_q = quadrature.size();
@@ -139,8 +170,7 @@ namespace tribos
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
       {
-        const unsigned int n =
-          materials[cell->material_id()]->n_history_variables();
+        const unsigned int n = n_history_variables(cell->material_id());
         if (n > 0)
         {
           history_offset[cell->active_cell_index()] = n_values;
@@ -153,11 +183,17 @@ namespace tribos
           history_offset[cell->active_cell_index()] !=
             numbers::invalid_unsigned_int)
       {
-        const auto        &material = *materials[cell->material_id()];
-        const unsigned int n        = material.n_history_variables();
+        const unsigned int n = n_history_variables(cell->material_id());
         for (unsigned int q = 0; q < n_q; ++q)
-          material.initialize_history(
-            &history_old[history_offset[cell->active_cell_index()] + q * n]);
+        {
+          double *history =
+            &history_old[history_offset[cell->active_cell_index()] + q * n];
+          if (axisymmetric_materials.empty())
+            materials[cell->material_id()]->initialize_history(history);
+          else
+            axisymmetric_materials[cell->material_id()]->initialize_history(
+              history);
+        }
       }
     history_new = history_old;
   }
@@ -222,7 +258,8 @@ namespace tribos
         [this](const types::material_id body)
         { return materials[body]->youngs_modulus(); },
         locally_owned_dofs,
-        mpi_communicator);
+        mpi_communicator,
+        parameters.finite_element.axisymmetric);
       // Contact couples this process's slave nodes to master nodes
       // anywhere: their dofs count as relevant (ghosted, constrained).
       locally_relevant_dofs.add_indices(contact->contact_dofs());

@@ -36,6 +36,10 @@ namespace tribos
       dimension = prm.get_integer("Dimension");
       scene.parse_parameters(prm);
       finite_element.parse_parameters(prm);
+      AssertThrow(!finite_element.axisymmetric || dimension == 2,
+                  dealii::ExcMessage("Parameter <Finite element/Axisymmetric> "
+                                     "= true needs Dimension = 2, not " +
+                                     std::to_string(dimension) + "."));
       materials.parse_parameters(prm);
       boundary_conditions.parse_parameters(prm);
       boundary_conditions.check(dimension);

@@ -24,6 +24,16 @@ namespace tribos
                         "each quadrature point replaced by that of the cell "
                         "centre) against locking in isochoric plastic "
                         "flow.");
+      prm.declare_entry("Axisymmetric",
+                        "false",
+                        dealii::Patterns::Bool(),
+                        "Dimension = 2 only: an axisymmetric model, x = "
+                        "radius r >= 0, y = axial coordinate z, about the y "
+                        "axis; the hoop stretch 1 + u_r / r enters a 3D "
+                        "material, every integral carries 2 pi r (forces "
+                        "and reactions are those of the full 360 degrees), "
+                        "and stress_zz is the hoop stress. The axis needs "
+                        "u_r = 0 (Symmetry or Dirichlet).");
       prm.leave_subsection();
     }
 
@@ -37,7 +47,13 @@ namespace tribos
       n_quadrature_points = prm.get_integer("Quadrature points");
       if (n_quadrature_points == 0)
         n_quadrature_points = degree + 1;
-      f_bar = prm.get_bool("F-bar");
+      f_bar        = prm.get_bool("F-bar");
+      axisymmetric = prm.get_bool("Axisymmetric");
+      AssertThrow(!(f_bar && axisymmetric),
+                  dealii::ExcMessage("Parameter <Finite element/F-bar> = "
+                                     "true is not available with "
+                                     "Axisymmetric = true; use Polynomial "
+                                     "degree = 2 against locking."));
       AssertThrow(!f_bar || degree == 1,
                   dealii::ExcMessage("Parameter <Finite element/F-bar> = "
                                      "true needs Polynomial degree = 1."));

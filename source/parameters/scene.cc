@@ -222,6 +222,12 @@ namespace tribos
                         "4",
                         Patterns::Integer(1),
                         "Cells over the half height before refinement.");
+      prm.declare_entry("Imperfection",
+                        "0",
+                        Patterns::Double(0, 0.5),
+                        "Relative reduction of the radius at the mid plane "
+                        "z = 0, decreasing linearly to 0 at z = h/2 (the "
+                        "necking bar's trigger: 0.018).");
       prm.leave_subsection();
     }
 
@@ -235,6 +241,7 @@ namespace tribos
       height             = positive(prm, "Height");
       radial_refinements = prm.get_integer("Radial refinements");
       axial_cells        = prm.get_integer("Axial cells");
+      imperfection       = prm.get_double("Imperfection");
       prm.leave_subsection();
     }
 

@@ -287,6 +287,19 @@ namespace tribos
                                              tria);
       }
 
+      if (s.imperfection > 0)
+        GridTools::transform(
+          [&s](const Point<dim> &x)
+          {
+            const double factor =
+              1. - s.imperfection * (1. - 2. * x[dim - 1] / s.height);
+            Point<dim> y = x;
+            for (unsigned int d = 0; d < dim - 1; ++d)
+              y[d] *= factor;
+            return y;
+          },
+          tria);
+
       for (const auto &face : tria.active_face_iterators())
         if (face->at_boundary())
         {

@@ -57,7 +57,8 @@ namespace tribos
       const DoFHandler<dim>                           &dof_handler,
       const std::function<double(types::material_id)> &youngs_modulus,
       const IndexSet                                  &locally_owned_dofs,
-      const MPI_Comm                                   mpi_communicator);
+      const MPI_Comm                                   mpi_communicator,
+      const bool                                       axisymmetric = false);
 
     /** The dofs of every contact node: they must be ghosted on all ranks. */
     const IndexSet &
@@ -194,7 +195,9 @@ namespace tribos
       double                               area_factor = 1;
       ContactSearch<dim>                   search;
 
-      std::vector<bool>   owned;
+      std::vector<bool> owned;
+      /** Slave nodes left to an earlier pair (see the constructor). */
+      std::vector<bool>   duplicate;
       std::vector<double> multipliers, committed_multipliers;
       /** Lagrange multiplier method: first multiplier number, and per
        * slave node the traction vector Lambda (current and committed). */

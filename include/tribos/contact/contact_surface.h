@@ -53,8 +53,13 @@ namespace tribos
       types::material_id body;
     };
 
+    /**
+     * With @p axisymmetric (2D, x = r) the tributary areas are those of the
+     * surface of revolution, the integral of N_k 2 pi r.
+     */
     ContactSurface(const DoFHandler<dim>   &dof_handler,
-                   const types::boundary_id boundary_id);
+                   const types::boundary_id boundary_id,
+                   const bool               axisymmetric = false);
 
     types::boundary_id
     boundary_id() const

@@ -182,6 +182,20 @@ namespace tribos
 
     /** One material per body id (index = material_id). */
     std::vector<std::unique_ptr<Material<dim>>> materials;
+    /**
+     * Axisymmetric models: the same materials in 3D, evaluated at the
+     * deformation gradient with the hoop stretch (empty otherwise).
+     */
+    std::vector<std::unique_ptr<Material<3>>> axisymmetric_materials;
+
+    /** Number of history values per quadrature point of body @p body. */
+    unsigned int
+    n_history_variables(const types::material_id body) const
+    {
+      return axisymmetric_materials.empty() ?
+               materials[body]->n_history_variables() :
+               axisymmetric_materials[body]->n_history_variables();
+    }
 
     /**
      * History storage, only for cells of bodies whose material has memory:

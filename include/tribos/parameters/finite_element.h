@@ -19,6 +19,8 @@ namespace tribos
       unsigned int n_quadrature_points;
       /** Q1 only: the F-bar element against volumetric locking. */
       bool f_bar;
+      /** Axisymmetric 2D model (x = r, y = z). */
+      bool axisymmetric;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

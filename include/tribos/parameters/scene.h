@@ -75,6 +75,8 @@ namespace tribos
       double       height;
       unsigned int radial_refinements;
       unsigned int axial_cells;
+      /** Relative radius reduction at the mid plane (linear taper). */
+      double imperfection;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
