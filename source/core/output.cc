@@ -75,6 +75,33 @@ namespace tribos
       columns.push_back("error_L2");
       columns.push_back("error_H1");
     }
+    // Probes: the vertex nearest to each point (every process sees the
+    // whole mesh of the shared triangulation, so all find the same one).
+    probe_dofs.clear();
+    for (unsigned int k = 0; k < parameters.output.probes.size(); ++k)
+    {
+      const auto &p = parameters.output.probes[k];
+      AssertThrow(p.size() == dim,
+                  ExcMessage("Parameter <Output/Probes>: point " +
+                             std::to_string(k) + " needs " +
+                             std::to_string(dim) + " coordinates."));
+      Point<dim> point;
+      for (unsigned int d = 0; d < dim; ++d)
+        point[d] = p[d];
+      double                                   best = 1e300;
+      std::array<types::global_dof_index, dim> dofs{};
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const auto v : cell->vertex_indices())
+          if (cell->vertex(v).distance(point) < best)
+          {
+            best = cell->vertex(v).distance(point);
+            for (unsigned int d = 0; d < dim; ++d)
+              dofs[d] = cell->vertex_dof_index(v, d);
+          }
+      probe_dofs.push_back(dofs);
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back("probe" + std::to_string(k) + "_u" + axis[d]);
+    }
     if (contact)
     {
       for (const auto &name : contact->column_names())
@@ -176,6 +203,11 @@ namespace tribos
       row.push_back(l2);
       row.push_back(h1);
     }
+    for (const auto &dofs : probe_dofs)
+      for (const auto dof : dofs)
+        row.push_back(Utilities::MPI::sum(
+          locally_owned_dofs.is_element(dof) ? double(solution[dof]) : 0.,
+          mpi_communicator));
     if (contact)
     {
       for (const double value : contact->columns())

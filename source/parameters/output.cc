@@ -29,6 +29,13 @@ namespace tribos
                         "true",
                         dealii::Patterns::Bool(),
                         "Write solution-NNNNN.vtu and solution.pvd.");
+      prm.declare_entry("Probes",
+                        "",
+                        dealii::Patterns::Anything(),
+                        "Points 'x, y(, z) ; ...': the displacement of the "
+                        "mesh vertex nearest to each (in the reference "
+                        "configuration) is written to history.csv as "
+                        "probeK_ux, probeK_uy(, probeK_uz).");
       prm.leave_subsection();
     }
 
@@ -42,6 +49,10 @@ namespace tribos
       frequency = prm.get_integer("Frequency");
       steps     = Text::parse_unsigned(prm.get("Steps"), "Output/Steps");
       write_vtu = prm.get_bool("Write VTU");
+      probes.clear();
+      for (const auto &item : Text::split_top_level(prm.get("Probes"), ';'))
+        if (!Text::trim(item).empty())
+          probes.push_back(Text::parse_doubles(item, "Output/Probes"));
       AssertThrow(!directory.empty(),
                   dealii::ExcMessage(
                     "Parameter <Output/Directory> must not be empty."));

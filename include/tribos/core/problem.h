@@ -212,6 +212,9 @@ namespace tribos
     std::unique_ptr<FunctionParser<dim>> body_force;
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
 
+    /** Per probe point: the dofs of the nearest vertex. */
+    std::vector<std::array<types::global_dof_index, dim>> probe_dofs;
+
     /** Per Dirichlet condition: all dofs on its boundary, per component. */
     std::vector<std::vector<IndexSet>> reaction_dofs;
 

@@ -17,6 +17,8 @@ namespace tribos
       unsigned int              frequency;
       std::vector<unsigned int> steps;
       bool                      write_vtu;
+      /** Probe points (coordinates as given; checked against Dimension). */
+      std::vector<std::vector<double>> probes;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
