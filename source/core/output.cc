@@ -465,6 +465,9 @@ namespace tribos
             << "scene             " << parameters.scene.name << '\n'
             << "cells             " << triangulation.n_active_cells() << '\n'
             << "dofs              " << dof_handler.n_dofs() << '\n'
+            << "contact dofs      "
+            << (contact ? contact->contact_dofs().n_elements() : 0) << '\n'
+            << "multipliers       " << n_multipliers << '\n'
             << "bodies            " << materials.size() << '\n'
             << "MPI processes     "
             << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'

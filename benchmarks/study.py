@@ -1,0 +1,420 @@
+#!/usr/bin/env python3
+"""Speed against error: runs families of variants of the verification
+scenes through `tribos --set ...` and writes one CSV row per run.
+
+    python3 benchmarks/study.py                 # default study (~12 min)
+    python3 benchmarks/study.py --full          # adds finer meshes (~40 min)
+    python3 benchmarks/study.py --smoke --out /tmp/smoke   # CI: seconds
+
+Default output: doc/data/study.csv and the plots doc/study_*.png (gnuplot),
+which doc/benchmarks.md shows. Every number in doc/benchmarks.md comes from
+this command. Columns:
+
+  scene, variant, method, penalty_factor, tangent, level, dofs,
+  contact_dofs, multipliers, load_steps, increments, newton_iterations,
+  iterations_per_step, cutbacks, wall_time, t_assembly, t_search,
+  t_contact_assembly, t_linear_solve, peak_memory_mb, error, error_a,
+  error_p0, error_profile, error_force, max_penetration, status
+
+`error` is the scene's headline error: Hertz max(|a error|, |p0 error|)
+against the analytic values for the run's load; cylinder |force error| at
+the last step against the analytic homogeneous compression; ring |final
+foundation reaction - reference| / reference with the finest Lagrange run
+of the study as reference; modelling choices: the quantity each pair
+compares (see doc/benchmarks.md). Wall time is that of the process (start
+to exit), peak memory its maximum resident set size.
+"""
+
+import argparse
+import csv
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tests"))
+from tribos_test import hertz_fit  # noqa: E402
+
+COLUMNS = ["scene", "variant", "method", "penalty_factor", "tangent", "level",
+           "dofs", "contact_dofs", "multipliers", "load_steps", "increments",
+           "newton_iterations", "iterations_per_step", "cutbacks",
+           "wall_time", "t_assembly", "t_search", "t_contact_assembly",
+           "t_linear_solve", "peak_memory_mb", "error", "error_a",
+           "error_p0", "error_profile", "error_force", "max_penetration",
+           "status"]
+
+METHODS = {"10E": ("penalty", "10"), "100E": ("penalty", "100"),
+           "1000E": ("penalty", "1000"), "1e4E": ("penalty", "10000"),
+           "lagrange": ("lagrange multiplier", ""),
+           "augmented": ("augmented lagrangian", "")}
+
+
+def method_sets(key):
+    method, factor = METHODS[key]
+    sets = ["Contact/Method=" + method]
+    if factor:
+        sets.append("Contact/Penalty factor=%s*E" % factor)
+    return sets
+
+
+def run(tribos, prm, folder, sets):
+    """Run tribos; return (wall time, peak RSS in MB, exit status)."""
+    shutil.rmtree(folder, ignore_errors=True)
+    command = [tribos, os.path.join(ROOT, prm), "--set",
+               "Output/Directory=" + folder, "--set", "Output/Write VTU=false"]
+    for s in sets:
+        command += ["--set", s]
+    start = time.time()
+    with open(os.devnull, "w") as null:
+        process = subprocess.Popen(command, stdout=null, stderr=null)
+        _, status, usage = os.wait4(process.pid, 0)
+    wall = time.time() - start
+    return wall, usage.ru_maxrss / 1024.0, os.waitstatus_to_exitcode(status)
+
+
+def summary(folder):
+    """Sizes and timer sections from summary.txt."""
+    text = open(os.path.join(folder, "summary.txt")).read()
+    value = lambda key: int(re.search(r"^%s\s+(\d+)" % key, text, re.M)
+                            .group(1))
+    section = lambda name: float(m.group(1)) if (m := re.search(
+        r"^%s\s+\d+\s+([\d.]+)" % name, text, re.M)) else 0.0
+    return {"dofs": value("dofs"), "contact_dofs": value("contact dofs"),
+            "multipliers": value("multipliers"),
+            "t_assembly": section("assembly"),
+            "t_search": section("contact search"),
+            "t_contact_assembly": section("contact assembly"),
+            "t_linear_solve": section("linear solve")}
+
+
+def history(folder):
+    with open(os.path.join(folder, "history.csv")) as f:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+def record(rows, scene, variant, prm, folder, sets, error_of, level="",
+           method="", factor="", tangent="consistent", tribos=None):
+    """Run one variant and append its row (error_of(folder) -> dict)."""
+    wall, memory, status = run(tribos, prm, folder, sets)
+    row = {c: "" for c in COLUMNS}
+    row.update(scene=scene, variant=variant, method=method,
+               penalty_factor=factor, tangent=tangent, level=level,
+               wall_time="%.3f" % wall, peak_memory_mb="%.1f" % memory,
+               status="completed" if status == 0 else "failed(%d)" % status)
+    if os.path.exists(os.path.join(folder, "summary.txt")):
+        row.update(summary(folder))
+    if status == 0:
+        h = history(folder)
+        steps = int(h[-1]["step"])
+        iterations = sum(r["newton_iterations"] for r in h)
+        row.update(load_steps=steps, increments=len(h),
+                   newton_iterations=int(iterations),
+                   iterations_per_step="%.2f" % (iterations / steps),
+                   cutbacks=sum(1 for r in h if r["cutbacks"] > 0),
+                   max_penetration="%.3e" % max(
+                       (r.get("max_penetration", 0.0) for r in h),
+                       default=0.0))
+        for key, value in error_of(folder, h).items():
+            row[key] = "%.4e" % value
+    rows.append(row)
+    print("%-14s %-28s %8s dofs %7.2f s  error %s  %s"
+          % (scene, variant, row["dofs"], wall, row["error"], row["status"]),
+          flush=True)
+
+
+def hertz_errors(dim, e_star, force_scale, radius=1.0):
+    def errors(folder, h):
+        P = h[-1]["pair0_normal_force"] * force_scale
+        if dim == 2:
+            a = math.sqrt(4 * P * radius / (math.pi * e_star))
+            p0 = 2 * P / (math.pi * a)
+        else:
+            a = (3 * P * radius / (4 * e_star)) ** (1.0 / 3.0)
+            p0 = 3 * P / (2 * math.pi * a * a)
+        step = int(h[-1]["step"])
+        with open(os.path.join(folder, "contact-%05d.csv" % step)) as f:
+            nodes = [{k: float(v) if v not in ("", "nan") else math.nan
+                      for k, v in r.items()} for r in csv.DictReader(f)]
+        p0_h, a_h, points = hertz_fit(nodes, dim)
+        profile = math.sqrt(sum(
+            (p - p0 * math.sqrt(max(0.0, 1 - x * x / (a * a)))) ** 2
+            for x, p in points) / sum(p * p for x, p in points))
+        ea, ep = abs(a_h - a) / a, abs(p0_h - p0) / p0
+        return {"error": max(ea, ep), "error_a": ea, "error_p0": ep,
+                "error_profile": profile}
+    return errors
+
+
+def cylinder_analytic(k):
+    """Force on the 1/8 model (8-chord section) after k steps of 0.2 mm."""
+    E, s0, sinf, delta, H, r = 206.9, 0.45, 0.715, 16.93, 0.12924, 6.35
+    area = 4 * r * r * math.sin(math.pi / 16)
+    eps_p = alpha = 0.0
+    for step in range(1, k + 1):
+        stretch = (r - 0.2 * step) / r
+        trial = E * (math.log(stretch) - eps_p)
+        y = lambda a: s0 + (sinf - s0) * (1 - math.exp(-delta * a)) + H * a
+        if abs(trial) > y(alpha):
+            da = 0.0
+            for _ in range(60):
+                da += (abs(trial) - E * da - y(alpha + da)) / (
+                    E + (sinf - s0) * delta * math.exp(-delta * (alpha + da))
+                    + H)
+            eps_p += math.copysign(da, trial)
+            alpha += da
+    return abs(E * (math.log(stretch) - eps_p) / stretch * area)
+
+
+def cylinder_errors(axisymmetric=False):
+    def errors(folder, h):
+        k = int(h[-1]["step"])
+        if axisymmetric:  # full section -> the 1/8 model's polygon
+            r = 6.35
+            F = abs(h[-1]["pair0_Fy"]) * 4 * math.sin(math.pi / 16) / math.pi
+        else:
+            F = abs(h[-1]["pair0_Fz"])
+        e = abs(F / cylinder_analytic(k) - 1)
+        return {"error": e, "error_force": e}
+    return errors
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--tribos", default=os.path.join(ROOT, "build",
+                                                         "tribos"))
+    parser.add_argument("--out", default=None,
+                        help="folder for study.csv and the runs (default: "
+                        "doc/data, runs in /tmp)")
+    level = parser.add_mutually_exclusive_group()
+    level.add_argument("--full", action="store_true")
+    level.add_argument("--smoke", action="store_true")
+    args = parser.parse_args()
+    work = os.path.join(args.out or "/tmp", "tribos_study_runs")
+    data = args.out or os.path.join(ROOT, "doc", "data")
+    os.makedirs(work, exist_ok=True)
+    os.makedirs(data, exist_ok=True)
+    rows = []
+    go = lambda *a, **k: record(rows, *a, tribos=args.tribos, **k)
+
+    E, nu = 1.0, 0.3
+    hertz2 = "parameters/hertz_2d.prm"
+    rigid2 = hertz_errors(2, E / (1 - nu * nu), 1)
+    levels = [2] if args.smoke else ([3, 4, 5, 6] if args.full else
+                                     [3, 4, 5])
+    methods = ["1000E", "lagrange"] if args.smoke else list(METHODS)
+    # Hertz 2D: method x mesh level (Contact refinements).
+    for lv in levels:
+        for m in methods:
+            go("hertz_2d", "%s L%d" % (m, lv), hertz2,
+               os.path.join(work, "hertz2d_%s_%d" % (m, lv)),
+               method_sets(m) + ["Scene/Cylinder over block/Contact "
+                                 "refinements=%d" % lv], rigid2, level=lv,
+               method=METHODS[m][0], factor=METHODS[m][1])
+        if not args.smoke:
+            go("hertz_2d", "1000E paper tangent L%d" % lv, hertz2,
+               os.path.join(work, "hertz2d_paper_%d" % lv),
+               method_sets("1000E") + [
+                   "Contact/Tangent=paper",
+                   "Scene/Cylinder over block/Contact refinements=%d" % lv],
+               rigid2, level=lv, method="penalty", factor="1000",
+               tangent="paper")
+    if args.smoke:
+        write(rows, data)
+        return
+
+    # Hertz 3D (quarter sphere): two mesh levels, penalty (AMG) and
+    # Lagrange (direct).
+    hertz3 = "parameters/hertz_3d.prm"
+    rigid3 = hertz_errors(3, E / (1 - nu * nu), 4)
+    for lv in ([2, 3, 4] if args.full else [2, 3]):
+        for m in ("1000E", "lagrange"):
+            extra = ["Linear solver/Type=direct"] if m == "lagrange" else []
+            go("hertz_3d", "%s L%d" % (m, lv), hertz3,
+               os.path.join(work, "hertz3d_%s_%d" % (m, lv)),
+               method_sets(m) + extra + [
+                   "Scene/Cylinder over block/Contact refinements=%d" % lv],
+               rigid3, level=lv, method=METHODS[m][0], factor=METHODS[m][1])
+
+    # Cylinder compression: every method on the paper's mesh.
+    cylinder = "parameters/cylinder_compression.prm"
+    for m in METHODS:
+        go("cylinder", m, cylinder, os.path.join(work, "cylinder_" + m),
+           method_sets(m), cylinder_errors(), method=METHODS[m][0],
+           factor=METHODS[m][1])
+
+    # Ring: penalty 1e5 (the paper's), Lagrange, augmented on two (full:
+    # three) meshes; reference = the finest Lagrange run.
+    ring = "parameters/ring_on_foundation.prm"
+    ring_levels = [0, 1, 2] if args.full else [0, 1]
+    ring_runs = []
+    for lv in ring_levels:
+        for m, sets in (("penalty 1e5", ["Contact/Method=penalty"]),
+                        ("lagrange", method_sets("lagrange")),
+                        ("augmented", method_sets("augmented"))):
+            folder = os.path.join(work, "ring_%s_%d" % (m.split()[0], lv))
+            ring_runs.append((len(rows), folder))
+            go("ring", "%s L%d" % (m, lv), ring, folder,
+               sets + ["Scene/Refinement=%d" % lv], lambda f, h: {},
+               level=lv, method=sets[0].split("=")[1],
+               factor="1e5" if m.startswith("penalty") else "")
+    reference = history(os.path.join(
+        work, "ring_lagrange_%d" % ring_levels[-1]))[-1]["RF12_y"]
+    for index, folder in ring_runs:
+        if rows[index]["status"] == "completed":
+            e = abs(history(folder)[-1]["RF12_y"] / reference - 1)
+            rows[index]["error"] = rows[index]["error_force"] = "%.4e" % e
+
+    # Modelling choices: each pair is valid for its scene; the error
+    # columns say what each buys.
+    block2 = ["Scene/Cylinder over block/With block=true",
+              "Contact/Pairs=10 : 3",
+              "Boundary conditions/Dirichlet=11 : xy : 0, -0.01*t ; "
+              "2 : xy : 0, 0"]
+    stiff = E / (1 - nu * nu) / (1 + E / 1e4)  # E* with a 1e4 E block
+    go("choice_plate", "rigid analytic plane", hertz2,
+       os.path.join(work, "choice_rigid"), method_sets("1000E"), rigid2)
+    go("choice_plate", "meshed plate, E_plate = 1e4 E", hertz2,
+       os.path.join(work, "choice_meshed"), method_sets("1000E") + block2 +
+       ["Materials/Young's modulus=1, 1e4"],
+       hertz_errors(2, 1 / ((1 - nu * nu) / E + (1 - nu * nu) / 1e4), 1))
+    go("choice_axisymmetry", "3D 1/8 model", cylinder,
+       os.path.join(work, "choice_3d"), method_sets("1000E"),
+       cylinder_errors())
+    go("choice_axisymmetry", "2D axisymmetric",
+       "parameters/cylinder_compression_axisymmetric.prm",
+       os.path.join(work, "choice_axisymmetric"), method_sets("1000E"),
+       cylinder_errors(axisymmetric=True))
+    for model in ("linear elastic", "neo-Hookean"):
+        go("choice_strain", model, hertz2,
+           os.path.join(work, "choice_" + model.split()[0]),
+           method_sets("1000E") + ["Materials/Model=" + model], rigid2)
+    go("choice_plasticity", "neo-Hookean (no history)", hertz2,
+       os.path.join(work, "choice_elastic"),
+       method_sets("1000E") + block2 + ["Materials/Model=neo-Hookean"],
+       hertz_errors(2, E / (2 * (1 - nu * nu)), 1))
+    go("choice_plasticity", "J2 plasticity, yield never reached", hertz2,
+       os.path.join(work, "choice_j2"),
+       method_sets("1000E") + block2 + ["Materials/Model=J2 plasticity",
+                                        "Materials/Yield stress=1e6",
+                                        "Materials/Saturation yield "
+                                        "stress=1e6"],
+       hertz_errors(2, E / (2 * (1 - nu * nu)), 1))
+    for mu in ("0", "0.3"):
+        go("choice_friction", "mu = " + mu, hertz2,
+           os.path.join(work, "choice_mu" + mu), method_sets("1000E") +
+           block2 + ["Contact/Friction coefficient=" + mu],
+           hertz_errors(2, E / (2 * (1 - nu * nu)), 1))
+    write(rows, data)
+    plots(data)
+
+
+def write(rows, data):
+    path = os.path.join(data, "study.csv")
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=COLUMNS)
+        writer.writeheader()
+        writer.writerows(rows)
+    print("wrote " + path)
+
+
+def plots(data):
+    """Pareto (error vs wall time), penalty convergence and cost growth."""
+    rows = list(csv.DictReader(open(os.path.join(data, "study.csv"))))
+    ok = [r for r in rows if r["status"] == "completed" and r["error"]]
+    by = lambda scene: [r for r in ok if r["scene"] == scene]
+    tables = {}
+    for scene in ("hertz_2d", "hertz_3d", "cylinder", "ring"):
+        tables[scene] = os.path.join(data, "study_%s.dat" % scene)
+        with open(tables[scene], "w") as f:
+            for m in ("penalty", "lagrange multiplier",
+                      "augmented lagrangian"):
+                for r in by(scene):
+                    if r["method"] == m and r["tangent"] == "consistent":
+                        f.write("%s %s %s\n" % (r["wall_time"],
+                                                max(float(r["error"]), 1e-16),
+                                                r["variant"].replace(" ", "_")))
+                f.write("\n\n")
+    # Penalty error and iterations vs eps_N (finest default Hertz level,
+    # cylinder).
+    finest = max(int(r["level"]) for r in by("hertz_2d"))
+    with open(os.path.join(data, "study_penalty.dat"), "w") as f:
+        for scene, level in (("hertz_2d", str(finest)), ("cylinder", "")):
+            for r in by(scene):
+                if r["method"] == "penalty" and r["level"] == level and \
+                        r["tangent"] == "consistent":
+                    f.write("%s %s %s\n" % (r["penalty_factor"], r["error"],
+                                            r["newton_iterations"]))
+            f.write("\n\n")
+    # Cost growth: fit wall ~ dofs^k over the Hertz 2D levels.
+    fits = {}
+    with open(os.path.join(data, "study_cost.dat"), "w") as f:
+        for m in ("penalty", "lagrange multiplier"):
+            points = [(float(r["dofs"]), float(r["wall_time"]))
+                      for r in by("hertz_2d") if r["method"] == m and
+                      r["penalty_factor"] in ("1000", "")
+                      and r["tangent"] == "consistent"]
+            for x, y in sorted(points):
+                f.write("%g %g\n" % (x, y))
+            f.write("\n\n")
+            n = len(points)
+            lx = [math.log(x) for x, _ in points]
+            ly = [math.log(y) for _, y in points]
+            mx, my = sum(lx) / n, sum(ly) / n
+            fits[m] = sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum(
+                (a - mx) ** 2 for a in lx)
+    with open(os.path.join(data, "study_fits.csv"), "w") as f:
+        f.write("method,wall_time_exponent\n")
+        for m, k in fits.items():
+            f.write("%s,%.3f\n" % (m, k))
+    print("cost exponents (wall ~ dofs^k, Hertz 2D):", fits)
+    script = """
+set terminal pngcairo size 1200,900 font ",10" noenhanced
+set output "doc/study_pareto.png"
+set multiplot layout 2,2 title "Error against wall time (one point per run; lower left is better)"
+set logscale xy
+set grid
+set xlabel "wall time [s]"
+set ylabel "error"
+do for [s in "hertz_2d hertz_3d cylinder ring"] {
+  set title s
+  plot "DATA/study_".s.".dat" index 0 using 1:2 with points pt 7 title "penalty", \\
+       "" index 1 using 1:2 with points pt 5 title "Lagrange", \\
+       "" index 2 using 1:2 with points pt 9 title "augmented"
+}
+unset multiplot
+set output "doc/study_penalty.png"
+set multiplot layout 1,2 title "Penalty: error and Newton iterations against eps_N / E"
+set xlabel "eps_N / E"
+set title "error"
+plot "DATA/study_penalty.dat" index 0 using 1:2 with linespoints title "Hertz 2D (a, p0)", \\
+     "" index 1 using 1:2 with linespoints title "cylinder (force)", \\
+     x > 0 ? 20/x : 1/0 with lines dt 2 title "20 / eps_N"
+unset logscale y
+set title "Newton iterations"
+set ylabel "iterations (all steps)"
+plot "DATA/study_penalty.dat" index 0 using 1:3 with linespoints title "Hertz 2D", \\
+     "" index 1 using 1:3 with linespoints title "cylinder"
+unset multiplot
+set output "doc/study_cost.png"
+set size 1,1
+set logscale xy
+set title "Hertz 2D: wall time against dofs (KPEN, KLAG)"
+set xlabel "dofs"
+set ylabel "wall time [s]"
+plot "DATA/study_cost.dat" index 0 using 1:2 with linespoints title "penalty 1000E", \\
+     "" index 1 using 1:2 with linespoints title "Lagrange"
+""".replace("DATA", os.path.relpath(data, ROOT)).replace(
+        "KPEN", "penalty exponent %.2f" % fits["penalty"]).replace(
+        "KLAG", "Lagrange exponent %.2f" % fits["lagrange multiplier"])
+    subprocess.run(["gnuplot"], input=script, text=True, cwd=ROOT,
+                   check=True)
+    print("wrote doc/study_pareto.png, doc/study_penalty.png, "
+          "doc/study_cost.png")
+
+
+if __name__ == "__main__":
+    main()
