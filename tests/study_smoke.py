@@ -26,7 +26,7 @@ with open(path) as f:
 expected = ["scene", "variant", "method", "penalty_factor", "tangent",
             "level", "dofs", "contact_dofs", "multipliers", "load_steps",
             "increments", "newton_iterations", "iterations_per_step",
-            "cutbacks", "wall_time", "t_assembly", "t_search",
+            "cutbacks", "wall_time", "t_compute", "t_assembly", "t_search",
             "t_contact_assembly", "t_linear_solve", "peak_memory_mb",
             "error", "error_a", "error_p0", "error_profile", "error_force",
             "max_penetration", "status"]
