@@ -42,7 +42,8 @@ namespace tribos
       // node that just touches carries no pressure but gives the Newton
       // matrix its contact stiffness, so that the first iteration of a step
       // does not push it deep into the master.
-      if (law.multiplier - law.normal_penalty * value(gap) < 0)
+      if (!law.frozen_closed &&
+          law.multiplier - law.normal_penalty * value(gap) < 0)
         return;
 
       const Number pressure = law.multiplier - law.normal_penalty * gap;
@@ -151,7 +152,8 @@ namespace tribos
       force                       = multiplier;
       const Number       pressure = -dot(multiplier, normal);
       const Vec3<Number> tau      = multiplier + scale(pressure, normal);
-      if (value(pressure) - law.normal_penalty * value(gap) < 0)
+      if (!law.frozen_closed &&
+          value(pressure) - law.normal_penalty * value(gap) < 0)
       {
         constraint    = multiplier;
         result.status = ContactStatus::open;

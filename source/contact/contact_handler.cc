@@ -406,6 +406,7 @@ namespace tribos
         const SlaveHistory &history  = pair.history[k];
         ContactLaw          law      = pair.law;
         law.multiplier               = pair.multipliers[k];
+        law.frozen_closed            = k < pair.frozen.size() && pair.frozen[k];
         const Vec3<double> &previous = history.active ? history.traction : zero;
         const Vec3<double> &x        = pair.slave_positions[k];
         const Vec3<double> *lambda =
@@ -562,6 +563,83 @@ namespace tribos
       pair.multipliers     = pair.committed_multipliers;
       pair.lagrange_values = pair.committed_lagrange_values;
     }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::begin_increment()
+  {
+    for (auto &pair : pairs)
+    {
+      pair.tracked_status.assign(pair.owned.size(), -1);
+      pair.status_changes.assign(pair.owned.size(), 0);
+      pair.frozen.assign(pair.owned.size(), false);
+    }
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactHandler<dim>::freeze_chattering(const unsigned int limit)
+  {
+    unsigned int n = 0;
+    for (auto &pair : pairs)
+      for (unsigned int k = 0; k < pair.owned.size(); ++k)
+        if (pair.owned[k] && pair.status_changes[k] > limit)
+        {
+          pair.frozen[k] = true;
+          ++n;
+        }
+    return Utilities::MPI::sum(n, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactHandler<dim>::n_frozen_in_tension() const
+  {
+    unsigned int n = 0;
+    for (const auto &pair : pairs)
+      for (unsigned int k = 0; k < pair.frozen.size(); ++k)
+        if (pair.frozen[k] && pair.owned[k] &&
+            (pair.results[k].pressure < 0 || !pair.pairing[k].valid))
+          ++n;
+    return Utilities::MPI::sum(n, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactHandler<dim>::track_status_changes(const unsigned int limit)
+  {
+    unsigned int n_chattering = 0;
+    for (auto &pair : pairs)
+    {
+      if (pair.tracked_status.size() != pair.owned.size())
+      {
+        pair.tracked_status.assign(pair.owned.size(), -1);
+        pair.status_changes.assign(pair.owned.size(), 0);
+      }
+      for (unsigned int k = 0; k < pair.owned.size(); ++k)
+        if (pair.owned[k])
+        {
+          // Contact status only (open or closed): stick/slip changes
+          // are the return map's business and converge.
+          const int status =
+            pair.results[k].status == ContactStatus::open ? 0 : 1;
+          if (pair.tracked_status[k] >= 0 && status != pair.tracked_status[k])
+            ++pair.status_changes[k];
+          pair.tracked_status[k] = status;
+          if (pair.status_changes[k] > limit)
+            ++n_chattering;
+        }
+    }
+    return Utilities::MPI::sum(n_chattering, mpi_communicator);
   }
 
 

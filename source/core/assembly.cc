@@ -26,8 +26,13 @@ namespace tribos
       system_matrix = 0;
       system_rhs    = 0;
     }
-    free_residual = 0;
-    full_residual = 0;
+    free_residual              = 0;
+    full_residual              = 0;
+    const double stabilization = parameters.nonlinear_solver.stabilization;
+    if (stabilization > 0)
+      stabilization_forces = 0;
+    dealii::Vector<double> cell_stabilization(
+      stabilization > 0 ? fe->n_dofs_per_cell() : 0);
 
     FEValues<dim> fe_values(*fe,
                             quadrature,
@@ -244,6 +249,29 @@ namespace tribos
             }
           }
 
+      if (stabilization > 0)
+      {
+        // Springs to the start of the increment, lumped: stiffness
+        // factor * E / h^2 * integral of the shape function.
+        const double k = stabilization *
+                         materials[cell->material_id()]->youngs_modulus() /
+                         (cell->diameter() * cell->diameter());
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          double weight = 0;
+          for (unsigned int q = 0; q < n_q; ++q)
+            weight += fe_values.shape_value(i, q) * fe_values.JxW(q);
+          const types::global_dof_index dof = dof_indices[i];
+          const double                  f =
+            k * weight * (ghosted_solution[dof] - ghosted_increment_start[dof]);
+          cell_rhs(i) -= f;
+          cell_stabilization(i) = f;
+          if (with_matrix)
+            cell_matrix(i, i) += k * weight;
+        }
+        stabilization_forces.add(dof_indices, cell_stabilization);
+      }
+
       // The unconstrained residual carries the reactions.
       cell_residual = cell_rhs;
       cell_residual *= -1.;
@@ -279,6 +307,8 @@ namespace tribos
     }
     free_residual.compress(VectorOperation::add);
     full_residual.compress(VectorOperation::add);
+    if (stabilization > 0)
+      stabilization_forces.compress(VectorOperation::add);
     return free_residual.l2_norm();
   }
 

@@ -72,6 +72,9 @@ namespace tribos
                 solve_increment(next, step, n_increments_total + 1);
               report.n_iterations += again.n_iterations;
               report.residual = again.residual;
+              report.n_chattering =
+                std::max(report.n_chattering, again.n_chattering);
+              report.stabilization_force = again.stabilization_force;
               ++report.n_augmentations;
             }
           commit_history();

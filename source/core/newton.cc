@@ -181,7 +181,12 @@ namespace tribos
   {
     const auto &p = parameters.nonlinear_solver;
 
-    const Vector              start = solution;
+    const Vector start      = solution;
+    ghosted_increment_start = solution;
+    if (contact)
+      contact->begin_increment();
+    unsigned int              n_chattering = 0;
+    unsigned int              n_frozen     = 0;
     AffineConstraints<double> increment_constraints;
     make_constraints(time, false, increment_constraints);
 
@@ -204,6 +209,30 @@ namespace tribos
       if (!std::isfinite(residual))
         throw NonConvergence("the residual is not finite");
       const double force_scale = full_residual.l2_norm();
+
+      // Chattering detector: status changes of each slave node between the
+      // iterations of this increment.
+      if (contact)
+      {
+        const auto &cp = parameters.contact;
+        const auto  n  = contact->track_status_changes(cp.chattering_flips);
+        n_chattering   = std::max(n_chattering, n);
+        const std::string what =
+          "chattering: " + std::to_string(n) +
+          " slave node(s) changed contact status more than " +
+          std::to_string(cp.chattering_flips) +
+          " times in this increment (Contact/Chattering flips)";
+        if (n > 0 && cp.chattering_remedy == "cutback")
+          throw NonConvergence(what + "; remedy: cut the increment "
+                                      "(Contact/Chattering remedy = cutback)");
+        if (n > 0 && cp.chattering_remedy == "freeze" && n > n_frozen)
+        {
+          n_frozen = contact->freeze_chattering(cp.chattering_flips);
+          pcout << "  " << what << ": held closed for the rest of the "
+                << "increment (Contact/Chattering remedy = freeze)"
+                << std::endl;
+        }
+      }
 
       // Observed order of convergence from three successive residuals
       // after the first solve (iteration 0 precedes the Dirichlet
@@ -245,8 +274,24 @@ namespace tribos
         const bool stagnated = update_norm <= 1e-12 * change;
         if ((residual_converged && update_converged) || stagnated)
         {
+          if (n_frozen > 0)
+          {
+            const unsigned int n_tension = contact->n_frozen_in_tension();
+            if (n_tension > 0)
+              throw NonConvergence(
+                std::to_string(n_tension) +
+                " chattering node(s) held closed ended in tension or off "
+                "the master (Contact/Chattering remedy = freeze): cutting "
+                "the increment");
+          }
           n_total_newton_iterations += iteration;
-          return {iteration, residual, 0};
+          IncrementReport report;
+          report.n_iterations = iteration;
+          report.residual     = residual;
+          report.n_chattering = n_chattering;
+          if (parameters.nonlinear_solver.stabilization > 0)
+            report.stabilization_force = stabilization_forces.l2_norm();
+          return report;
         }
         if (iteration >= p.max_iterations)
           throw NonConvergence("Newton did not converge in " +

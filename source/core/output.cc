@@ -107,7 +107,10 @@ namespace tribos
       for (const auto &name : contact->column_names())
         columns.push_back(name);
       columns.push_back("augmentations");
+      columns.push_back("chattering_nodes");
     }
+    if (parameters.nonlinear_solver.stabilization > 0)
+      columns.push_back("stabilization_force");
     history_csv =
       std::make_unique<CsvWriter>(dir + "/history.csv", columns, root);
     convergence_csv =
@@ -205,15 +208,19 @@ namespace tribos
     }
     for (const auto &dofs : probe_dofs)
       for (const auto dof : dofs)
-        row.push_back(Utilities::MPI::sum(
-          locally_owned_dofs.is_element(dof) ? double(solution[dof]) : 0.,
-          mpi_communicator));
+        row.push_back(Utilities::MPI::sum(locally_owned_dofs.is_element(dof) ?
+                                            double(solution[dof]) :
+                                            0.,
+                                          mpi_communicator));
     if (contact)
     {
       for (const double value : contact->columns())
         row.push_back(value);
       row.push_back(report.n_augmentations);
+      row.push_back(report.n_chattering);
     }
+    if (parameters.nonlinear_solver.stabilization > 0)
+      row.push_back(report.stabilization_force);
     history_csv->add_row(row);
   }
 

@@ -301,6 +301,10 @@ namespace tribos
     ghosted_solution.reinit(locally_owned_dofs,
                             locally_relevant_dofs,
                             mpi_communicator);
+    ghosted_increment_start.reinit(locally_owned_dofs,
+                                   locally_relevant_dofs,
+                                   mpi_communicator);
+    stabilization_forces.reinit(system_owned, mpi_communicator);
   }
 
 

@@ -118,6 +118,24 @@ namespace tribos
                         "augmented lagrangian: multiplier updates per "
                         "increment at most; more are a non-convergence "
                         "(cutback).");
+      prm.declare_entry("Chattering flips",
+                        "2",
+                        dealii::Patterns::Integer(1),
+                        "A slave node whose contact status (open or "
+                        "closed) changes more than this many times between "
+                        "the Newton iterations of one increment is "
+                        "chattering; "
+                        "history.csv counts such nodes per increment "
+                        "(chattering_nodes).");
+      prm.declare_entry("Chattering remedy",
+                        "freeze",
+                        dealii::Patterns::Selection("freeze|cutback|none"),
+                        "What happens when a node chatters (the log says "
+                        "so): freeze (the node is held closed for the rest "
+                        "of the increment; the converged state is accepted "
+                        "only if its pressure is not tensile, else the "
+                        "increment is cut back), cutback (the increment is "
+                        "abandoned and halved) or none (only counted).");
       prm.declare_entry(
         "Rigid surfaces",
         "",
@@ -142,6 +160,8 @@ namespace tribos
       search_distance        = prm.get_double("Search distance");
       augmentation_tolerance = prm.get_double("Augmentation tolerance");
       max_augmentations      = prm.get_integer("Maximum augmentations");
+      chattering_flips       = prm.get_integer("Chattering flips");
+      chattering_remedy      = prm.get("Chattering remedy");
       if (search_distance == 0)
         search_distance = std::numeric_limits<double>::infinity();
 

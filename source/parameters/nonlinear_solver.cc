@@ -45,6 +45,18 @@ namespace tribos
                         "(columns of the contact dofs and a sample of the "
                         "others) and print the relative error. Slow; for "
                         "verification and debugging (serial runs).");
+      prm.declare_entry("Stabilization factor",
+                        "0",
+                        dealii::Patterns::Double(0),
+                        "0: off. Otherwise every dof gets a spring to its "
+                        "position at the start of the increment, of "
+                        "stiffness factor * E / h^2 * (integral of its shape "
+                        "function) (E of the body, h the cell diameter): it "
+                        "holds bodies that are free until contact closes "
+                        "(force control, initially apart) and vanishes as "
+                        "the motion stops. Its force is written to "
+                        "history.csv (stabilization_force) and must end "
+                        "small against the loads.");
       prm.leave_subsection();
     }
 
@@ -62,6 +74,7 @@ namespace tribos
       line_search           = prm.get_bool("Line search");
       max_line_search_steps = prm.get_integer("Maximum line search steps");
       check_tangent         = prm.get_bool("Check tangent");
+      stabilization         = prm.get_double("Stabilization factor");
       prm.leave_subsection();
     }
   } // namespace Parameters

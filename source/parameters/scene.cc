@@ -114,6 +114,15 @@ namespace tribos
                         "0",
                         Patterns::Double(),
                         "Shift of the upper block in x.");
+      prm.declare_entry("Upper bottom radius",
+                        "0",
+                        Patterns::Double(0),
+                        "0: flat. Otherwise the bottom of the upper block "
+                        "is a circular arc (a cylinder in 3D, axis along "
+                        "y) of this radius through the bottom corners, "
+                        "lowest in the middle (the ironing punch); the "
+                        "block keeps its height at the corners and the gap "
+                        "is measured at the lowest point.");
       prm.leave_subsection();
     }
 
@@ -123,12 +132,19 @@ namespace tribos
     TwoBlocks::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Two blocks");
-      lower_size         = positive_list(prm, "Lower block size");
-      upper_size         = positive_list(prm, "Upper block size");
-      lower_subdivisions = cell_counts(prm, "Lower subdivisions");
-      upper_subdivisions = cell_counts(prm, "Upper subdivisions");
-      gap                = prm.get_double("Gap");
-      upper_offset       = prm.get_double("Upper block offset");
+      lower_size          = positive_list(prm, "Lower block size");
+      upper_size          = positive_list(prm, "Upper block size");
+      lower_subdivisions  = cell_counts(prm, "Lower subdivisions");
+      upper_subdivisions  = cell_counts(prm, "Upper subdivisions");
+      gap                 = prm.get_double("Gap");
+      upper_offset        = prm.get_double("Upper block offset");
+      upper_bottom_radius = prm.get_double("Upper bottom radius");
+      AssertThrow(upper_bottom_radius == 0 ||
+                    upper_bottom_radius > 0.5 * upper_size[0],
+                  dealii::ExcMessage(
+                    "Parameter <Scene/Two blocks/Upper bottom radius> = " +
+                    std::to_string(upper_bottom_radius) +
+                    " must be 0 or larger than half the upper block width."));
       prm.leave_subsection();
     }
 

@@ -123,6 +123,25 @@ namespace tribos
                origin + upper_size,
                1,
                10);
+      if (s.upper_bottom_radius > 0)
+      {
+        // Arc bottom: the lowest point stays at the gap, the corners rise
+        // by the sagitta, the top stays flat.
+        const double R      = s.upper_bottom_radius;
+        const double centre = origin[0] + 0.5 * upper_size[0];
+        const double height = upper_size[dim - 1];
+        GridTools::transform(
+          [&](const Point<dim> &x)
+          {
+            const double dx     = x[0] - centre;
+            const double bottom = R - std::sqrt(R * R - dx * dx);
+            Point<dim>   y      = x;
+            const double eta    = (x[dim - 1] - origin[dim - 1]) / height;
+            y[dim - 1] = origin[dim - 1] + bottom + eta * (height - bottom);
+            return y;
+          },
+          upper);
+      }
       merge_bodies<dim>({&lower, &upper}, tria);
     }
 

@@ -127,6 +127,31 @@ namespace tribos
     void
     set_multipliers(const std::vector<double> &values);
 
+    /** Start counting status changes for a new increment. */
+    void
+    begin_increment();
+
+    /**
+     * Compare every slave node's contact status (open or closed) at the
+     * last evaluation with the previous one and count the changes of this
+     * increment; returns the
+     * number of nodes (all processes) with more than @p limit changes.
+     */
+    unsigned int
+    track_status_changes(const unsigned int limit);
+
+    /**
+     * Hold every node that changed its contact status more than @p limit
+     * times in this increment closed until the increment ends; returns
+     * how many are held (all processes).
+     */
+    unsigned int
+    freeze_chattering(const unsigned int limit);
+
+    /** Number of held nodes whose pressure is tensile (all processes). */
+    unsigned int
+    n_frozen_in_tension() const;
+
     /** Make the last evaluated state the converged history. */
     void
     commit();
@@ -196,6 +221,11 @@ namespace tribos
       ContactSearch<dim>                   search;
 
       std::vector<bool> owned;
+      /** Status at the last tracked evaluation and changes in the
+       * increment (chattering detector). */
+      std::vector<int>          tracked_status;
+      std::vector<unsigned int> status_changes;
+      std::vector<bool>         frozen;
       /** Slave nodes left to an earlier pair (see the constructor). */
       std::vector<bool>   duplicate;
       std::vector<double> multipliers, committed_multipliers;

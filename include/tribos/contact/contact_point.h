@@ -28,6 +28,12 @@ namespace tribos
      * which is what symmetry implies.
      */
     unsigned int fixed_components = 0;
+    /**
+     * Chattering remedy: the node is held closed for the rest of the
+     * increment whatever its gap or pressure (the converged state is
+     * accepted only if its pressure is not tensile).
+     */
+    bool frozen_closed = false;
   };
 
   /** Contact status of a slave node, as written to CSTATUS. */

@@ -33,6 +33,10 @@ namespace tribos
     double       residual     = 0;
     /** Uzawa multiplier updates (augmented Lagrangian). */
     unsigned int n_augmentations = 0;
+    /** Most chattering slave nodes seen in an iteration. */
+    unsigned int n_chattering = 0;
+    /** l2 norm of the stabilization forces at convergence. */
+    double stabilization_force = 0;
   };
 
   /**
@@ -176,6 +180,10 @@ namespace tribos
     Vector                         full_residual;
     Vector                         solution;
     Vector                         ghosted_solution;
+    /** Solution at the start of the increment (stabilization springs). */
+    Vector ghosted_increment_start;
+    /** The stabilization forces of the last assembly. */
+    Vector stabilization_forces;
 
     /** The contact pairs; null when the scene has none. */
     std::unique_ptr<ContactHandler<dim>> contact;

@@ -79,6 +79,10 @@ namespace tribos
       double                    search_distance;
       double                    augmentation_tolerance;
       unsigned int              max_augmentations;
+      /** Status changes per increment beyond which a node chatters. */
+      unsigned int chattering_flips;
+      /** freeze, cutback or none. */
+      std::string chattering_remedy;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

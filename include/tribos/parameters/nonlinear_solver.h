@@ -20,6 +20,8 @@ namespace tribos
       bool         line_search;
       unsigned int max_line_search_steps;
       bool         check_tangent;
+      /** Stabilization spring factor (0: off). */
+      double stabilization;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -35,6 +35,8 @@ namespace tribos
       std::vector<unsigned int> upper_subdivisions;
       double                    gap;
       double                    upper_offset;
+      /** Radius of the upper block's arc-shaped bottom; 0: flat. */
+      double upper_bottom_radius;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
