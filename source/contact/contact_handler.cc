@@ -214,8 +214,10 @@ namespace tribos
 
         unsigned int closest;
         double       squared_distance;
-        if (!pair.search.closest_face(x, closest, squared_distance) ||
-            std::sqrt(squared_distance) > parameters.search_distance)
+        if (!pair.search.closest_face(x, closest, squared_distance))
+          continue;
+        pairing.distance = std::sqrt(squared_distance);
+        if (pairing.distance > parameters.search_distance)
           continue;
 
         // Exact projection on the candidate and its neighbours: prefer
@@ -387,7 +389,9 @@ namespace tribos
         const double area = pair.slave->nodes()[k].area * pair.area_factor;
         if (!pair.pairing[k].valid)
         {
-          pair.results[k].gap = std::numeric_limits<double>::quiet_NaN();
+          // Off the master (beyond its end or the search distance): the
+          // distance to the master surface, a positive, open gap.
+          pair.results[k].gap = pair.pairing[k].distance;
           // An unpaired node of a Lagrange pair: Lambda = 0.
           if (pair.lagrange && pair.owned[k])
           {

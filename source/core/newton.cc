@@ -290,7 +290,14 @@ namespace tribos
           report.residual     = residual;
           report.n_chattering = n_chattering;
           if (parameters.nonlinear_solver.stabilization > 0)
-            report.stabilization_force = stabilization_forces.l2_norm();
+          {
+            // Magnitude of the resultant of the stabilization forces.
+            Tensor<1, dim> resultant;
+            for (const auto i : locally_owned_dofs)
+              resultant[dof_component[i]] += stabilization_forces[i];
+            resultant = Utilities::MPI::sum(resultant, mpi_communicator);
+            report.stabilization_force = resultant.norm();
+          }
           return report;
         }
         if (iteration >= p.max_iterations)

@@ -305,6 +305,14 @@ namespace tribos
                                    locally_relevant_dofs,
                                    mpi_communicator);
     stabilization_forces.reinit(system_owned, mpi_communicator);
+    dof_component.assign(dof_handler.n_dofs(), 0);
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      ComponentMask mask(dim, false);
+      mask.set(d, true);
+      for (const auto i : DoFTools::extract_dofs(dof_handler, mask))
+        dof_component[i] = d;
+    }
   }
 
 

@@ -54,9 +54,10 @@ namespace tribos
                         "function) (E of the body, h the cell diameter): it "
                         "holds bodies that are free until contact closes "
                         "(force control, initially apart) and vanishes as "
-                        "the motion stops. Its force is written to "
-                        "history.csv (stabilization_force) and must end "
-                        "small against the loads.");
+                        "the motion stops. The magnitude of the resultant "
+                        "of these forces is written to history.csv "
+                        "(stabilization_force) and must end small against "
+                        "the loads.");
       prm.leave_subsection();
     }
 

@@ -17,6 +17,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <set>
 #include <string>
@@ -208,6 +209,9 @@ namespace tribos
       bool       valid = false;
       int        face  = -1;
       Projection projection;
+      /** Distance to the closest point of the master surface (also for a
+       * node that slid off its end: its gap then); NaN if unknown. */
+      double distance = std::numeric_limits<double>::quiet_NaN();
     };
 
     struct Pair

@@ -184,6 +184,8 @@ namespace tribos
     Vector ghosted_increment_start;
     /** The stabilization forces of the last assembly. */
     Vector stabilization_forces;
+    /** Vector component of every dof (indexed by global dof number). */
+    std::vector<unsigned char> dof_component;
 
     /** The contact pairs; null when the scene has none. */
     std::unique_ptr<ContactHandler<dim>> contact;

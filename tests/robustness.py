@@ -1,0 +1,158 @@
+"""Robustness suite, shortened (doc/robustness.md has the full runs). Every
+case runs with penalty and with Lagrange multipliers and must complete with
+sane physics:
+
+* stick-slip cycles: no slip and no dissipation in the cycles below mu P,
+  a closed hysteresis loop above it whose area (the work of the drag force
+  over the last cycle) equals mu N x the slip of that cycle within 1 %;
+* release and re-contact: every node open and zero force while lifted;
+  after re-contact the force at the same displacement equals the force
+  before the release (elastic, frictionless) to 1e-8;
+* sliding off the end of the master over a convex corner: completes, the
+  contact force falls to zero as the nodes leave, every gap is finite and
+  the nodes that left have positive gaps;
+* force control with bodies initially apart: with the stabilization the
+  run completes, the contact force balances the load up to the reported
+  stabilization force, which ends below 1 % of the load, with bounded
+  Newton updates; without it the first update is the singular rigid-body
+  mode (> 1e6 x the size of the block) and increments are cut;
+* very high penalty (1e4 E, 1e6 E) on Hertz 2D: converges, a and p0
+  within 3 %;
+* frictional upsetting (mu = 0.5, 8 of the 25 steps): completes;
+* ironing: the press and the first 0.3 mm of sliding complete with an
+  apparent friction ratio Fx/Fy of the punch near mu.
+"""
+
+import math
+import sys
+
+from tribos_test import setup, run, read_csv, check, finish, hertz_compare
+
+tribos, tests, out = setup(sys.argv)
+prm = lambda name: tests + "/../parameters/" + name + ".prm"
+LM = ["Contact/Method=lagrange multiplier"]
+
+for method, sets in (("penalty", []), ("lagrange", LM)):
+    # Stick-slip cycles.
+    folder = out + "/stick_slip_" + method
+    run(tribos, prm("stick_slip_cycles"), folder, sets)
+    h = read_csv(folder + "/history.csv")
+    steps = {int(r["step"]): r for r in h}
+    rows = [steps[k] for k in sorted(steps)]
+
+    def ux(t):
+        return 0 if t <= 1 else (0.002 if t <= 3 else 0.01) * math.sin(
+            2 * math.pi * (t - 1))
+
+    def work(first, last):
+        return sum(0.5 * (a["RF3_x"] + b["RF3_x"]) * (ux(b["time"]) -
+                                                       ux(a["time"]))
+                   for a, b in zip(rows[first - 1:last - 1], rows[first:last]))
+    small = max(r["n_slip"] for r in rows[32:96])
+    check(small == 0 and abs(work(32, 96)) < 1e-12,
+          "%s stick-slip: no slip below mu P (work of two cycles %.1e)"
+          % (method, work(32, 96)))
+    check(abs(steps[128]["RF3_x"] - steps[160]["RF3_x"]) <
+          1e-6 * abs(steps[160]["RF3_x"]),
+          "%s stick-slip: the loop closes (drag %.6f at t = 4 and 5)"
+          % (method, steps[160]["RF3_x"]))
+    before = read_csv(folder + "/contact-00128.csv")
+    after = read_csv(folder + "/contact-00160.csv")
+    slip = sum(b["CSLIP"] - a["CSLIP"] for a, b in zip(before, after)) / len(
+        after)
+    dissipation = 0.3 * steps[160]["pair0_normal_force"] * slip
+    loop = work(128, 160)
+    check(abs(loop - dissipation) < 0.01 * dissipation,
+          "%s stick-slip: loop area %.6e = mu N slip %.6e"
+          % (method, loop, dissipation))
+
+    # Release and re-contact.
+    folder = out + "/bouncing_" + method
+    run(tribos, prm("bouncing_block"), folder, sets)
+    b = {int(r["step"]): r for r in read_csv(folder + "/history.csv")}
+    lifted = [b[k] for k in range(27, 31)]
+    check(all(r["n_active"] == 0 and r["pair0_normal_force"] == 0
+              for r in lifted), "%s bouncing: all open while lifted" % method)
+    for first, again in ((7, 37), (14, 42)):
+        f0, f1 = b[first]["pair0_normal_force"], b[again]["pair0_normal_force"]
+        check(abs(f1 - f0) < 1e-8 * f0, "%s bouncing: force after re-contact "
+              "%.10f = before %.10f" % (method, f1, f0))
+
+    # Sliding off the end over a convex corner.
+    folder = out + "/slide_off_" + method
+    run(tribos, prm("slide_off_edge"), folder, sets)
+    h = read_csv(folder + "/history.csv")
+    final = read_csv(folder + "/contact-00060.csv")
+    check(h[-1]["time"] == 3 and all(math.isfinite(r["pair0_normal_force"])
+                                     for r in h),
+          "%s slide-off: completes (%d cutbacks), finite forces"
+          % (method, sum(1 for r in h if r["cutbacks"] > 0)))
+    check(h[-1]["pair0_normal_force"] == 0 and
+          all(math.isfinite(r["COPEN"]) and r["COPEN"] > 0 for r in final),
+          "%s slide-off: no contact left, every gap finite and positive "
+          "(min %.3f)" % (method, min(r["COPEN"] for r in final)))
+
+    # Force control, initially apart.
+    folder = out + "/apart_" + method
+    run(tribos, prm("force_control_apart"), folder, sets)
+    last = read_csv(folder + "/history.csv")[-1]
+    residual = abs(last["pair0_normal_force"] - 0.5)
+    check(residual <= last["stabilization_force"] + 1e-8 and
+          last["stabilization_force"] < 0.005,
+          "%s force control: contact force %.6f balances the load 0.5 up to "
+          "the stabilization force %.2e (< 1 %%)"
+          % (method, last["pair0_normal_force"], last["stabilization_force"]))
+    stabilized = read_csv(folder + "/convergence.csv")
+    run(tribos, prm("force_control_apart"), folder + "_off",
+        sets + ["Nonlinear solver/Stabilization factor=0"])
+    free = read_csv(folder + "_off/convergence.csv")
+    first = lambda rows: max(r["update_norm"] for r in rows
+                             if r["increment"] == 1 and
+                             math.isfinite(r["update_norm"]))
+    cutbacks = lambda f: sum(1 for r in read_csv(f + "/history.csv")
+                             if r["cutbacks"] > 0)
+    check(first(stabilized) < 1 and cutbacks(folder) == 0 and
+          first(free) > 1e6,
+          "%s force control: stabilized updates bounded (%.1e, no "
+          "cutbacks); without stabilization the singular rigid mode gives an "
+          "update of %.1e and %d cut increments" % (
+              method, first(stabilized), first(free),
+              cutbacks(folder + "_off")))
+
+# Very high penalty on Hertz 2D.
+E, nu = 1.0, 0.3
+for factor in ("1e4", "1e6"):
+    folder = out + "/hertz_" + factor
+    run(tribos, prm("hertz_2d"), folder, [
+        "Contact/Penalty factor=%s*E" % factor,
+        "Scene/Cylinder over block/Contact refinements=4"])
+    a, p0, a_h, p0_h, profile, n, P = hertz_compare(folder, 2,
+                                                    E / (1 - nu * nu), 1, 1)
+    iterations = sum(r["newton_iterations"]
+                     for r in read_csv(folder + "/history.csv"))
+    check(abs(a_h - a) / a < 0.03 and abs(p0_h - p0) / p0 < 0.03,
+          "penalty %s E: converged in %d iterations, a %.2f %%, p0 %.2f %%"
+          % (factor, iterations, 100 * abs(a_h - a) / a,
+             100 * abs(p0_h - p0) / p0))
+
+# Frictional upsetting, first 8 steps.
+folder = out + "/upsetting"
+run(tribos, prm("upsetting"), folder, ["Time stepping/End time=8",
+                                       "Time stepping/Number of steps=8",
+                                       "Output/Write VTU=false"])
+h = read_csv(folder + "/history.csv")
+check(h[-1]["step"] == 8, "upsetting mu = 0.5: 8 steps (%d Newton iterations, "
+      "%d cutbacks)" % (sum(r["newton_iterations"] for r in h),
+                        sum(1 for r in h if r["cutbacks"] > 0)))
+
+# Ironing: press and the first 0.3 mm of sliding.
+folder = out + "/ironing"
+run(tribos, prm("ironing"), folder, ["Time stepping/End time=1.15",
+                                     "Time stepping/Number of steps=115",
+                                     "Output/Write VTU=false"])
+h = read_csv(folder + "/history.csv")
+ratio = abs(h[-1]["RF13_x"] / h[-1]["RF13_y"])
+check(h[-1]["time"] > 1.149 and 0.2 < ratio < 0.5,
+      "ironing: press and 0.3 mm sliding complete, apparent friction ratio "
+      "Fx/Fy = %.3f (mu = 0.3)" % ratio)
+finish()
