@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""Full runs of the robustness suite (doc/robustness.md) with penalty and
+Lagrange multipliers: one CSV row per run with the steps completed,
+increments, cutbacks, Newton iterations per step, the median observed
+convergence order near convergence, the increments with chattering nodes
+and the wall time.
+
+    python3 benchmarks/robustness_study.py [--tribos build/tribos]   (~6 min)
+
+Writes doc/data/robustness.csv.
+"""
+
+import argparse
+import csv
+import math
+import os
+import statistics
+import subprocess
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+CASES = [
+    ("stick-slip cycles", "stick_slip_cycles", []),
+    ("release and re-contact", "bouncing_block", []),
+    ("slide off a convex corner", "slide_off_edge", []),
+    ("force control, initially apart", "force_control_apart", []),
+    ("upsetting mu = 0.5", "upsetting", []),
+    ("upsetting mu = 0.2", "upsetting", ["Contact/Friction coefficient=0.2"]),
+    ("Hertz 2D, penalty 1e4 E", "hertz_2d", ["Contact/Penalty factor=1e4*E"]),
+    ("Hertz 2D, penalty 1e6 E", "hertz_2d", ["Contact/Penalty factor=1e6*E"]),
+    ("cylinder, penalty 1e4 E", "cylinder_compression",
+     ["Contact/Penalty factor=1e4*E"]),
+    ("cylinder, penalty 1e6 E", "cylinder_compression",
+     ["Contact/Penalty factor=1e6*E"]),
+    ("ring lift-off (paper)", "ring_on_foundation", []),
+    ("ironing (full: 100 + 500 increments)", "ironing", []),
+]
+
+
+def read(path):
+    with open(path) as f:
+        return [{k: float(v) if v not in ("", "nan") else math.nan
+                 for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--tribos", default=os.path.join(ROOT, "build",
+                                                         "tribos"))
+    parser.add_argument("--out", default="/tmp/tribos_robustness")
+    args = parser.parse_args()
+    rows = []
+    for name, prm, sets in CASES:
+        for method in ("penalty", "lagrange multiplier"):
+            if "penalty 1e" in name and method != "penalty":
+                continue
+            folder = os.path.join(args.out, prm + "_" + str(len(rows)))
+            command = [args.tribos, os.path.join(ROOT, "parameters",
+                                                 prm + ".prm"),
+                       "--set", "Output/Directory=" + folder,
+                       "--set", "Output/Write VTU=false",
+                       "--set", "Contact/Method=" + method]
+            for s in sets:
+                command += ["--set", s]
+            start = time.time()
+            result = subprocess.run(command, capture_output=True, text=True)
+            wall = time.time() - start
+            h = read(os.path.join(folder, "history.csv"))
+            c = read(os.path.join(folder, "convergence.csv"))
+            n_steps = int(open(os.path.join(ROOT, "parameters", prm + ".prm"))
+                          .read().split("Number of steps")[1].split("=")[1]
+                          .split()[0])
+            steps = int(h[-1]["step"]) if h else 0
+            done = result.returncode == 0
+            orders = []
+            for inc in sorted(set(r["increment"] for r in c)):
+                o = [r["order"] for r in c if r["increment"] == inc and
+                     math.isfinite(r["order"]) and r["relative_residual"] >
+                     1e-13]
+                if o:
+                    orders.append(max(o[-2:]))
+            iterations = sum(r["newton_iterations"] for r in h)
+            rows.append({
+                "case": name, "method": method,
+                "status": "completed" if done else "failed",
+                "steps": "%d/%d" % (steps if done else steps - 1
+                                    if steps else 0, n_steps),
+                "increments": len(h),
+                "cutbacks": int(sum(1 for r in h if r["cutbacks"] > 0)),
+                "newton_per_step": "%.2f" % (iterations / max(1, len(h))),
+                "median_order": "%.2f" % statistics.median(orders)
+                if orders else "",
+                "chattering_increments": int(sum(
+                    1 for r in h if r.get("chattering_nodes", 0) > 0)),
+                "wall_time": "%.2f" % wall})
+            print(rows[-1], flush=True)
+    path = os.path.join(ROOT, "doc", "data", "robustness.csv")
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    print("wrote " + path)
+
+
+if __name__ == "__main__":
+    main()
