@@ -49,6 +49,8 @@ def main():
     parser.add_argument("--tribos", default=os.path.join(ROOT, "build",
                                                          "tribos"))
     parser.add_argument("--out", default="/tmp/tribos_robustness")
+    parser.add_argument("--timeout", type=int, default=240,
+                        help="seconds after which a run is stopped")
     args = parser.parse_args()
     rows = []
     for name, prm, sets in CASES:
@@ -64,7 +66,12 @@ def main():
             for s in sets:
                 command += ["--set", s]
             start = time.time()
-            result = subprocess.run(command, capture_output=True, text=True)
+            try:
+                result = subprocess.run(command, capture_output=True,
+                                        text=True, timeout=args.timeout)
+                status = "completed" if result.returncode == 0 else "failed"
+            except subprocess.TimeoutExpired:
+                status = "stopped after %d s" % args.timeout
             wall = time.time() - start
             h = read(os.path.join(folder, "history.csv"))
             c = read(os.path.join(folder, "convergence.csv"))
@@ -72,7 +79,7 @@ def main():
                           .read().split("Number of steps")[1].split("=")[1]
                           .split()[0])
             steps = int(h[-1]["step"]) if h else 0
-            done = result.returncode == 0
+            done = status == "completed"
             orders = []
             for inc in sorted(set(r["increment"] for r in c)):
                 o = [r["order"] for r in c if r["increment"] == inc and
@@ -83,7 +90,7 @@ def main():
             iterations = sum(r["newton_iterations"] for r in h)
             rows.append({
                 "case": name, "method": method,
-                "status": "completed" if done else "failed",
+                "status": status,
                 "steps": "%d/%d" % (steps if done else steps - 1
                                     if steps else 0, n_steps),
                 "increments": len(h),
