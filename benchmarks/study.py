@@ -5,6 +5,7 @@ scenes through `tribos --set ...` and writes one CSV row per run.
     python3 benchmarks/study.py                 # default study (~12 min)
     python3 benchmarks/study.py --full          # adds finer meshes (~40 min)
     python3 benchmarks/study.py --smoke --out /tmp/smoke   # CI: seconds
+    python3 benchmarks/study.py --plots-only    # redraw from doc/data/study.csv
 
 Default output: doc/data/study.csv and the plots doc/study_*.png (gnuplot),
 which doc/benchmarks.md shows. Every number in doc/benchmarks.md comes from
@@ -198,7 +199,12 @@ def main():
     level = parser.add_mutually_exclusive_group()
     level.add_argument("--full", action="store_true")
     level.add_argument("--smoke", action="store_true")
+    level.add_argument("--plots-only", action="store_true",
+                       help="redraw the plots from an existing study.csv")
     args = parser.parse_args()
+    if args.plots_only:
+        plots(args.out or os.path.join(ROOT, "doc", "data"))
+        return
     work = os.path.join(args.out or "/tmp", "tribos_study_runs")
     data = args.out or os.path.join(ROOT, "doc", "data")
     os.makedirs(work, exist_ok=True)
@@ -338,12 +344,25 @@ def plots(data):
         with open(tables[scene], "w") as f:
             for m in ("penalty", "lagrange multiplier",
                       "augmented lagrangian"):
+                # (a NaN line keeps an empty block an index of its own)
+                f.write("NaN NaN none\n")
                 for r in by(scene):
                     if r["method"] == m and r["tangent"] == "consistent":
                         f.write("%s %s %s\n" % (r["wall_time"],
                                                 max(float(r["error"]), 1e-16),
                                                 r["variant"].replace(" ", "_")))
                 f.write("\n\n")
+            # The Pareto front: runs no other run beats in both time and
+            # error.
+            points = sorted((float(r["wall_time"]), max(float(r["error"]),
+                                                        1e-16))
+                            for r in by(scene))
+            best = math.inf
+            for t, e in points:
+                if e < best:
+                    f.write("%g %g front\n" % (t, e))
+                    best = e
+            f.write("\n\n")
     # Penalty error and iterations vs eps_N (finest default Hertz level,
     # cylinder).
     finest = max(int(r["level"]) for r in by("hertz_2d"))
@@ -389,7 +408,8 @@ do for [s in "hertz_2d hertz_3d cylinder ring"] {
   set title s
   plot "DATA/study_".s.".dat" index 0 using 1:2 with points pt 7 title "penalty", \\
        "" index 1 using 1:2 with points pt 5 title "Lagrange", \\
-       "" index 2 using 1:2 with points pt 9 title "augmented"
+       "" index 2 using 1:2 with points pt 9 title "augmented", \
+       "" index 3 using 1:2 with steps lc rgb "gray" title "Pareto front"
 }
 unset multiplot
 set output "doc/study_penalty.png"
