@@ -1,8 +1,9 @@
 """Verification of Contact/Method = lagrange multiplier.
 
-* Hertz 2D (cylinder on a rigid plane and on an elastic block): a and p0
-  within 3 % of Hertz, as for the penalty; every closed slave node has
-  |g_N| < 1e-10 of the element size (the constraint is exact).
+* Hertz 2D (cylinder on a rigid plane and on an elastic block) and 3D
+  (quarter sphere on a rigid plane): a and p0 within 3 % (2D) / 5 % (3D) of
+  Hertz, as for the penalty; every closed slave node has |g_N| < 1e-10 of
+  the element size (the constraint is exact).
 * Patch test (two blocks, non-matching meshes, uniform pressure):
   equilibrium to 1e-8 and |g_N| < 1e-10 h at every slave node.
 * Penalty -> Lagrange: on the rigid Hertz scene the penalty solutions
@@ -54,6 +55,26 @@ for name, sets, e_star in (("rigid", [], E / (1 - nu * nu)),
     gap, n_closed = max_gap(folder, 2, spacing(folder, 2))
     check(gap < 1e-10, "hertz %s: max |g_N| / h = %.1e < 1e-10 over %d "
           "closed nodes" % (name, gap, n_closed))
+
+# Hertz 3D (quarter sphere, one level coarser than parameters/hertz_3d.prm;
+# the saddle point needs the direct solver).
+folder = out + "/hertz_3d"
+run(tribos, tests + "/../parameters/hertz_3d.prm", folder, [
+    LM, "Linear solver/Type=direct",
+    "Scene/Cylinder over block/Contact refinements=3"])
+a, p0, a_h, p0_h, profile, n, P = hertz_compare(folder, 3, E / (1 - nu * nu),
+                                                R, 4)
+print("hertz 3d: a error %.2f %%, p0 error %.2f %%, %d nodes"
+      % (100 * abs(a_h - a) / a, 100 * abs(p0_h - p0) / p0, n))
+check(abs(a_h - a) / a < 0.05 and abs(p0_h - p0) / p0 < 0.05,
+      "hertz 3d: a and p0 within 5 %")
+nodes = [r for r in read_csv(folder + "/contact-00002.csv")
+         if r["CSTATUS"] > 0]
+size = min(((u["x"] - v["x"]) ** 2 + (u["y"] - v["y"]) ** 2) ** 0.5
+           for u in nodes for v in nodes if u is not v)
+gap = max(abs(r["COPEN"]) for r in nodes) / size
+check(gap < 1e-10, "hertz 3d: max |g_N| / h = %.1e < 1e-10 over %d closed "
+      "nodes" % (gap, len(nodes)))
 
 # Patch test.
 folder = out + "/patch"
