@@ -40,7 +40,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from tribos_test import hertz_fit  # noqa: E402
+from tribos_test import cylinder_analytic_force, hertz_fit  # noqa: E402
 
 COLUMNS = ["scene", "variant", "method", "penalty_factor", "tangent", "level",
            "dofs", "contact_dofs", "multipliers", "load_steps", "increments",
@@ -158,29 +158,14 @@ def hertz_errors(dim, e_star, force_scale, radius=1.0):
 
 def cylinder_analytic(k):
     """Force on the 1/8 model (8-chord section) after k steps of 0.2 mm."""
-    E, s0, sinf, delta, H, r = 206.9, 0.45, 0.715, 16.93, 0.12924, 6.35
-    area = 4 * r * r * math.sin(math.pi / 16)
-    eps_p = alpha = 0.0
-    for step in range(1, k + 1):
-        stretch = (r - 0.2 * step) / r
-        trial = E * (math.log(stretch) - eps_p)
-        y = lambda a: s0 + (sinf - s0) * (1 - math.exp(-delta * a)) + H * a
-        if abs(trial) > y(alpha):
-            da = 0.0
-            for _ in range(60):
-                da += (abs(trial) - E * da - y(alpha + da)) / (
-                    E + (sinf - s0) * delta * math.exp(-delta * (alpha + da))
-                    + H)
-            eps_p += math.copysign(da, trial)
-            alpha += da
-    return abs(E * (math.log(stretch) - eps_p) / stretch * area)
+    r = 6.35
+    return cylinder_analytic_force(k, 4 * r * r * math.sin(math.pi / 16))
 
 
 def cylinder_errors(axisymmetric=False):
     def errors(folder, h):
         k = int(h[-1]["step"])
         if axisymmetric:  # full section -> the 1/8 model's polygon
-            r = 6.35
             F = abs(h[-1]["pair0_Fy"]) * 4 * math.sin(math.pi / 16) / math.pi
         else:
             F = abs(h[-1]["pair0_Fz"])

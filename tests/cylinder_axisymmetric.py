@@ -13,30 +13,16 @@ import math
 import sys
 import time
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_test import (setup, run, read_csv, check, finish,
+                         cylinder_analytic_force)
 
 tribos, tests, out = setup(sys.argv)
-E, s0, sinf, delta, H, r = 206.9, 0.45, 0.715, 16.93, 0.12924, 6.35
+r = 6.35
 
 
 def analytic(k):
     """Full-section plate force after k steps of 0.2 mm."""
-    eps_p = alpha = 0.0
-    force = 0.0
-    for step in range(1, k + 1):
-        stretch = (r - 0.2 * step) / r
-        trial = E * (math.log(stretch) - eps_p)
-        y = lambda a: s0 + (sinf - s0) * (1 - math.exp(-delta * a)) + H * a
-        if abs(trial) > y(alpha):
-            da = 0.0
-            for _ in range(60):
-                da += (abs(trial) - E * da - y(alpha + da)) / (
-                    E + (sinf - s0) * delta * math.exp(-delta * (alpha + da))
-                    + H)
-            eps_p += math.copysign(da, trial)
-            alpha += da
-        force = abs(E * (math.log(stretch) - eps_p) / stretch) * math.pi * r * r
-    return force
+    return cylinder_analytic_force(k, math.pi * r * r)
 
 
 prm2 = tests + "/../parameters/cylinder_compression_axisymmetric.prm"

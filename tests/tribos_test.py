@@ -105,6 +105,29 @@ def hertz_fit(rows, dim):
     return math.sqrt(intercept), math.sqrt(-intercept / slope), points
 
 
+def cylinder_analytic_force(k, area):
+    """Plate force on a cylinder section of `area` after k steps of 0.2 mm
+    of parameters/cylinder_compression.prm (r = 6.35, half height 6.35):
+    homogeneous compression, backward-Euler 1D integration of the J2 law
+    (36) in logarithmic strain, Kirchhoff stress / stretch x area."""
+    E, s0, sinf, delta, H, r = 206.9, 0.45, 0.715, 16.93, 0.12924, 6.35
+    eps_p = alpha = 0.0
+    stretch = 1.0
+    for step in range(1, k + 1):
+        stretch = (r - 0.2 * step) / r
+        trial = E * (math.log(stretch) - eps_p)
+        y = lambda a: s0 + (sinf - s0) * (1 - math.exp(-delta * a)) + H * a
+        if abs(trial) > y(alpha):
+            da = 0.0
+            for _ in range(60):
+                da += (abs(trial) - E * da - y(alpha + da)) / (
+                    E + (sinf - s0) * delta * math.exp(-delta * (alpha + da))
+                    + H)
+            eps_p += math.copysign(da, trial)
+            alpha += da
+    return abs(E * (math.log(stretch) - eps_p) / stretch) * area
+
+
 def check(condition, message):
     """Print the check and fail the test if it does not hold."""
     print(("ok      " if condition else "FAILED  ") + message)

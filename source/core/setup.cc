@@ -9,6 +9,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <set>
+#include <type_traits>
 
 namespace tribos
 {
@@ -108,29 +109,30 @@ namespace tribos
     types::material_id max_body = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
       max_body = std::max(max_body, cell->material_id());
+    // The same per-body data builds the dim materials and, for an
+    // axisymmetric model, their 3D versions.
+    const auto make = [&m](auto dimension, const unsigned int body)
+    {
+      namespace P = Parameters;
+      return create_material<decltype(dimension)::value>(
+        P::Materials::for_body(m.models, body, "Model"),
+        P::Materials::for_body(m.youngs_moduli, body, "Young's modulus"),
+        P::Materials::for_body(m.poissons_ratios, body, "Poisson's ratio"),
+        {{P::Materials::for_body(m.yield_stresses, body, "Yield stress"),
+          P::Materials::for_body(m.saturation_yield_stresses,
+                                 body,
+                                 "Saturation yield stress"),
+          P::Materials::for_body(m.hardening_exponents,
+                                 body,
+                                 "Hardening exponent"),
+          P::Materials::for_body(m.linear_hardening_moduli,
+                                 body,
+                                 "Linear hardening modulus")}});
+    };
     materials.clear();
     axisymmetric_materials.clear();
     for (unsigned int body = 0; body <= max_body; ++body)
-      materials.push_back(create_material<dim>(
-        Parameters::Materials::for_body(m.models, body, "Model"),
-        Parameters::Materials::for_body(m.youngs_moduli,
-                                        body,
-                                        "Young's modulus"),
-        Parameters::Materials::for_body(m.poissons_ratios,
-                                        body,
-                                        "Poisson's ratio"),
-        {{Parameters::Materials::for_body(m.yield_stresses,
-                                          body,
-                                          "Yield stress"),
-          Parameters::Materials::for_body(m.saturation_yield_stresses,
-                                          body,
-                                          "Saturation yield stress"),
-          Parameters::Materials::for_body(m.hardening_exponents,
-                                          body,
-                                          "Hardening exponent"),
-          Parameters::Materials::for_body(m.linear_hardening_moduli,
-                                          body,
-                                          "Linear hardening modulus")}}));
+      materials.push_back(make(std::integral_constant<int, dim>(), body));
     if (parameters.finite_element.axisymmetric)
     {
       for (const auto &cell : triangulation.active_cell_iterators())
@@ -140,26 +142,8 @@ namespace tribos
                                  "the mesh in x = r >= 0; vertex at x = " +
                                  std::to_string(cell->vertex(v)[0]) + "."));
       for (unsigned int body = 0; body <= max_body; ++body)
-        axisymmetric_materials.push_back(create_material<3>(
-          Parameters::Materials::for_body(m.models, body, "Model"),
-          Parameters::Materials::for_body(m.youngs_moduli,
-                                          body,
-                                          "Young's modulus"),
-          Parameters::Materials::for_body(m.poissons_ratios,
-                                          body,
-                                          "Poisson's ratio"),
-          {{Parameters::Materials::for_body(m.yield_stresses,
-                                            body,
-                                            "Yield stress"),
-            Parameters::Materials::for_body(m.saturation_yield_stresses,
-                                            body,
-                                            "Saturation yield stress"),
-            Parameters::Materials::for_body(m.hardening_exponents,
-                                            body,
-                                            "Hardening exponent"),
-            Parameters::Materials::for_body(m.linear_hardening_moduli,
-                                            body,
-                                            "Linear hardening modulus")}}));
+        axisymmetric_materials.push_back(
+          make(std::integral_constant<int, 3>(), body));
     }
 
     // History only where a material has memory: elastic bodies pay nothing.
