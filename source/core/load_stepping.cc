@@ -33,6 +33,8 @@ namespace tribos
     double       increment          = nominal_step;
     Vector       converged          = solution;
     unsigned int n_increments_total = 0;
+    // Converged increments since the last growth or cutback.
+    unsigned int converged_in_row = 0;
 
     for (unsigned int step = 1; step <= ts.n_steps; ++step)
     {
@@ -92,8 +94,13 @@ namespace tribos
                             report,
                             n_cutbacks,
                             increment_clock.wall_time());
-          if (report.n_iterations <= ts.easy_iterations)
+          ++converged_in_row;
+          if (report.n_iterations <= ts.easy_iterations ||
+              (ts.growth_after > 0 && converged_in_row >= ts.growth_after))
+          {
             increment = std::min(increment * ts.growth_factor, nominal_step);
+            converged_in_row = 0;
+          }
         }
         catch (const NonConvergence &failure)
         {
@@ -105,6 +112,7 @@ namespace tribos
           ++n_cutbacks;
           ++n_total_cutbacks;
           ++cutbacks_in_row;
+          converged_in_row = 0;
           if (cutbacks_in_row > ts.max_cutbacks)
           {
             const std::string message =

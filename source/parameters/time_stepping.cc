@@ -32,6 +32,15 @@ namespace tribos
                         dealii::Patterns::Integer(1),
                         "An increment converged within this many Newton "
                         "iterations counts as easy.");
+      prm.declare_entry("Growth after converged increments",
+                        "4",
+                        dealii::Patterns::Integer(0),
+                        "After this many converged increments in a row the "
+                        "next grows by Growth factor even if they were not "
+                        "easy (cut increments whose Newton always needs "
+                        "more than Easy iterations would otherwise never "
+                        "regrow; a too large increment is simply cut "
+                        "again). 0: only easy increments grow.");
       prm.leave_subsection();
     }
 
@@ -46,6 +55,7 @@ namespace tribos
       max_cutbacks    = prm.get_integer("Maximum cutbacks");
       growth_factor   = prm.get_double("Growth factor");
       easy_iterations = prm.get_integer("Easy iterations");
+      growth_after    = prm.get_integer("Growth after converged increments");
       AssertThrow(end_time > 0,
                   dealii::ExcMessage("Parameter <Time stepping/End time> = <" +
                                      prm.get("End time") + ">: must be > 0."));

@@ -18,6 +18,7 @@ namespace tribos
       unsigned int max_cutbacks;
       double       growth_factor;
       unsigned int easy_iterations;
+      unsigned int growth_after;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
