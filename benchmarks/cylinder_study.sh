@@ -15,7 +15,7 @@ tribos=${1:-$root/build/tribos}
 out=$(mktemp -d)
 mkdir -p "$root/doc/data"
 prm=parameters/cylinder_compression.prm
-friction=(--set "Contact/Friction coefficient=0.2" --set "Contact/Pairs=3 : plate ; 4 : plate")
+friction=(--set "Contact/Friction coefficient=0.2" --set "Contact/Pairs=3, 4 : plate")
 for variant in 10E 100E 1000E augmented lagrange axisymmetric 3d_fine \
                friction_penalty friction_lagrange; do
   prm=parameters/cylinder_compression.prm

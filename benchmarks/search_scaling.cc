@@ -62,8 +62,8 @@ main(int argc, char **argv)
 
     tribos::Parameters::Contact     parameters;
     tribos::Parameters::ContactPair pair;
-    pair.slave_boundary  = 14;
-    pair.master_boundary = 5;
+    pair.slave_boundary  = {14};
+    pair.master_boundary = {5};
     pair.method          = "penalty";
     pair.normal_penalty  = tribos::Parameters::PenaltyValue::parse("1e3", "");
     pair.tangential_penalty    = pair.normal_penalty;

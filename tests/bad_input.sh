@@ -52,7 +52,7 @@ expect too_few_bodies "body id 2" "$tribos" "$tests/ring_2d.prm" \
 contact=$tests/sliding_block.prm
 expect contact_unknown_boundary "boundary id 42" "$tribos" "$contact" \
   --set "Contact/Pairs=42 : plane"
-expect contact_unknown_master "neither a boundary id nor" "$tribos" "$contact" \
+expect contact_unknown_master "neither a list of boundary ids nor" "$tribos" "$contact" \
   --set "Contact/Pairs=2 : table"
 expect contact_negative_mu "Friction coefficient" "$tribos" "$contact" \
   --set "Contact/Friction coefficient=-0.1"
@@ -74,4 +74,8 @@ expect contact_lagrange_iterative "Linear solver/Type = direct" "$tribos" \
 expect contact_lagrange_two_pass "Contact/Passes = two-pass" "$tribos" \
   "$contact" --set "Contact/Method=lagrange multiplier" \
   --set "Contact/Passes=two-pass"
+expect contact_smoothing_3d "Master smoothing" "$tribos" "$tests/cylinder_3d.prm" \
+  --set "Contact/Master smoothing=averaged normals"
+expect contact_slave_is_master "both slave and master" "$tribos" \
+  "$tests/ironing_2d.prm" --set "Contact/Pairs=10, 3 : 3"
 exit $failed

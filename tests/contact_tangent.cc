@@ -161,6 +161,133 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
 
 
 
+/**
+ * The 2D element on a smoothed master (averaged nodal normals): a segment
+ * with a kinked neighbour on each side (or a free end), the slave above
+ * the segment; every perturbed residual with a fresh smoothed projection.
+ */
+void
+check_smoothed(std::mt19937 &random, Tally &tally, bool &ok)
+{
+  using Element = NodeToSmoothedSegment;
+  std::uniform_real_distribution<double> u(-1, 1);
+
+  for (unsigned int sample = 0; sample < 300; ++sample)
+  {
+    // x_0, x_1, node before, node after; kinks up to about 20 degrees.
+    Vec3<double>       master[4] = {{{0, 0.1 * u(random), 0}},
+                                    {{1, 0.1 * u(random), 0}},
+                                    {{-1, 0.35 * u(random), 0}},
+                                    {{2, 0.35 * u(random), 0}}};
+    const bool         has[2]    = {sample % 5 != 1, sample % 7 != 2};
+    const unsigned int n         = 2 * (3 + has[0] + has[1]);
+    Vec3<double> slave{{0.5 + 0.45 * u(random), -0.05 + 0.1 * u(random), 0}};
+
+    ContactLaw law;
+    law.normal_penalty       = 1e3;
+    law.tangential_penalty   = 5e2 * (1 + 0.5 * u(random));
+    law.friction_coefficient = 0.3;
+    Vec3<double> slave_old   = slave, master_old[4];
+    for (unsigned int d = 0; d < 2; ++d)
+      slave_old[d] += 0.03 * u(random);
+    for (unsigned int k = 0; k < 4; ++k)
+    {
+      master_old[k] = master[k];
+      for (unsigned int d = 0; d < 2; ++d)
+        master_old[k][d] += 0.01 * u(random);
+    }
+    const Vec3<double> traction{{3 * u(random), 0, 0}};
+
+    // Positions from the element's dof vector (absent neighbours skipped).
+    const auto positions =
+      [&](const std::vector<double> &x, Vec3<double> &s, Vec3<double> *m)
+    {
+      s = slave;
+      for (unsigned int k = 0; k < 4; ++k)
+        m[k] = master[k];
+      unsigned int next = 2;
+      for (unsigned int d = 0; d < 2; ++d)
+        s[d] += x[d];
+      for (unsigned int k = 0; k < 4; ++k)
+        if (k < 2 || has[k - 2])
+        {
+          for (unsigned int d = 0; d < 2; ++d)
+            m[k][d] += x[next + d];
+          next += 2;
+        }
+    };
+    const auto evaluate = [&](const std::vector<double> &x,
+                              double                    *R,
+                              double                    *K,
+                              const bool                 consistent,
+                              bool                      &projected)
+    {
+      Vec3<double> s, m[4];
+      positions(x, s, m);
+      double xi = 0, derivative = 0;
+      projected = SmoothedSegment::project(s, m, has, xi, derivative) &&
+                  std::abs(xi) <= 1;
+      return Element::evaluate(s,
+                               m,
+                               has,
+                               xi,
+                               derivative,
+                               slave_old,
+                               master_old,
+                               traction,
+                               law,
+                               0.7,
+                               consistent,
+                               R,
+                               K);
+    };
+
+    std::vector<double> zero(n, 0.), R(n), K(n * n), Kp(n * n);
+    bool                projected;
+    const auto result = evaluate(zero, R.data(), K.data(), true, projected);
+    if (!projected)
+      continue;
+    evaluate(zero, R.data(), Kp.data(), false, projected);
+
+    const double h     = 1e-7;
+    double       error = 0, size = 0, paper = 0;
+    bool         kink = false;
+    for (unsigned int j = 0; j < n; ++j)
+    {
+      std::vector<double> plus = zero, minus = zero, Rp(n), Rm(n);
+      plus[j] += h;
+      minus[j] -= h;
+      bool       inside_p, inside_m;
+      const auto rp = evaluate(plus, Rp.data(), nullptr, true, inside_p);
+      const auto rm = evaluate(minus, Rm.data(), nullptr, true, inside_m);
+      kink = kink || rp.status != result.status || rm.status != result.status ||
+             !inside_p || !inside_m;
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const double fd = (Rp[i] - Rm[i]) / (2 * h);
+        error += std::pow(K[i * n + j] - fd, 2);
+        paper += std::pow(Kp[i * n + j] - fd, 2);
+        size += std::pow(K[i * n + j], 2);
+      }
+    }
+    if (kink)
+      continue;
+    ++tally.n[int(result.status)];
+    if (size > 0)
+    {
+      const double relative = std::sqrt(error / size);
+      tally.worst           = std::max(tally.worst, relative);
+      tally.paper_error = std::max(tally.paper_error, std::sqrt(paper / size));
+      if (relative > 1e-6)
+        ok = false;
+    }
+    else if (result.status != ContactStatus::open)
+      ok = false;
+  }
+}
+
+
+
 template <int dim>
 void
 check_rigid(const std::string &type,
@@ -292,6 +419,13 @@ main()
     check_segment<3>(random, t, ok);
     ok = ok && t.n_clamped > 5 && t.paper_error > 1e-3;
     report("3D node-to-face", t, ok);
+  }
+  {
+    Tally t;
+    bool  ok = true;
+    check_smoothed(random, t, ok);
+    ok = ok && t.paper_error > 1e-3;
+    report("2D node-to-segment, smoothed master", t, ok);
   }
   for (const std::string type : {"plane", "sphere", "cylinder"})
   {

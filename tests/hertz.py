@@ -3,7 +3,8 @@ rigid plane and on an elastic block; 3D (sphere, quarter model) on a rigid
 plane. The contact half-width a and the peak pressure p0 come from a
 least-squares fit of p^2 = p0^2 (1 - x^2/a^2) to the nodal CPRESS of the
 slave nodes in contact, the load P from the contact normal force; asserts
-a and p0 within 3 % (2D) and 5 % (3D) of Hertz and reports the relative L2
+a and p0 within 3 % (2D, also with Master smoothing on the elastic
+block) and 5 % (3D) of Hertz and reports the relative L2
 error of the pressure profile."""
 
 import math
@@ -37,6 +38,14 @@ run(tribos, prm, out + "/block", [
     "Boundary conditions/Dirichlet=11 : xy : 0, -0.01*t ; 2 : xy : 0, 0"])
 verify("2D on elastic block", 2, out + "/block", E / (2 * (1 - nu * nu)),
        0.03, 1)
+# The same with the smoothed master (averaged nodal normals): on the
+# nearly flat block the smoothing must not cost accuracy.
+run(tribos, prm, out + "/block_smoothed", [
+    "Scene/Cylinder over block/With block=true", "Contact/Pairs=10 : 3",
+    "Contact/Master smoothing=averaged normals",
+    "Boundary conditions/Dirichlet=11 : xy : 0, -0.01*t ; 2 : xy : 0, 0"])
+verify("2D on elastic block, smoothed master", 2, out + "/block_smoothed",
+       E / (2 * (1 - nu * nu)), 0.03, 1)
 
 prm3 = tests + "/../parameters/hertz_3d.prm"
 run(tribos, prm3, out + "/sphere")

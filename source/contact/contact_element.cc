@@ -433,6 +433,109 @@ namespace tribos
     return result;
   }
 
+  ContactPointResult
+  NodeToSmoothedSegment::evaluate(const Vec3<double> &slave,
+                                  const Vec3<double> *master,
+                                  const bool         *has,
+                                  const double        xi_value,
+                                  const double        derivative,
+                                  const Vec3<double> &slave_old,
+                                  const Vec3<double> *master_old,
+                                  const Vec3<double> &previous_traction,
+                                  const ContactLaw   &law,
+                                  const double        area,
+                                  const bool          consistent,
+                                  double             *R,
+                                  double             *K,
+                                  const Vec3<double> *multiplier)
+  {
+    constexpr unsigned int dim = 2;
+    ContactPointResult     result;
+    result.face = -1;
+
+    // Seed the present nodes: slave, x_0, x_1, then the neighbours.
+    const unsigned int n_displacements =
+      dim * (3 + (has[0] ? 1 : 0) + (has[1] ? 1 : 0));
+    const unsigned int n_out = n_displacements + (multiplier ? dim : 0);
+    const Vec3<AD>     xs    = seed<dim>(slave, 0, n_out);
+    Vec3<AD>           xm[4];
+    unsigned int       next = dim;
+    for (unsigned int k = 0; k < 4; ++k)
+      if (k < 2 || has[k - 2])
+      {
+        xm[k] = seed<dim>(master[k], next, n_out);
+        next += dim;
+      }
+      else
+        xm[k] = to<AD>(master[k]);
+
+    Vec3<AD> n0, n1;
+    if (consistent)
+      SmoothedSegment::nodal_normals(xm, has, n0, n1);
+    else
+    {
+      // Paper tangent: the normal field held fixed.
+      Vec3<double> m0, m1;
+      SmoothedSegment::nodal_normals(master, has, m0, m1);
+      n0 = to<AD>(m0);
+      n1 = to<AD>(m1);
+    }
+
+    // xi: one Newton step in AD from the converged root is the implicit
+    // derivative of the projection condition.
+    AD xi = xi_value;
+    {
+      const AD       N0 = 0.5 * (1. - xi_value), N1 = 0.5 * (1. + xi_value);
+      const Vec3<AD> xbar   = scale(N0, xm[0]) + scale(N1, xm[1]);
+      const Vec3<AD> normal = scale(N0, n0) + scale(N1, n1);
+      xi -= SmoothedSegment::cross2(xs - xbar, normal) / derivative;
+    }
+    const AD       N[2]   = {0.5 * (1. - xi), 0.5 * (1. + xi)};
+    const Vec3<AD> xbar   = scale(N[0], xm[0]) + scale(N[1], xm[1]);
+    Vec3<AD>       normal = scale(N[0], n0) + scale(N[1], n1);
+    normal                = scale(1. / norm(normal), normal);
+    const AD gap          = dot(xs - xbar, normal);
+
+    Vec3<AD> relative = xs - to<AD>(slave_old);
+    for (unsigned int k = 0; k < 2; ++k)
+      relative = relative - scale(N[k], xm[k] - to<AD>(master_old[k]));
+    const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
+
+    Vec3<AD> force, constraint;
+    if (multiplier)
+      multiplier_law(gap,
+                     normal,
+                     slip,
+                     seed<dim>(*multiplier, n_displacements, n_out),
+                     law,
+                     force,
+                     constraint,
+                     result);
+    else
+      interface_law(gap, normal, slip, previous_traction, law, force, result);
+
+    AD residual[max_dofs + dim];
+    for (unsigned int i = 0; i < n_out; ++i)
+      residual[i] = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      residual[d] = area * force[d];
+      for (unsigned int k = 0; k < 2; ++k)
+        residual[dim * (1 + k) + d] = -area * N[k] * force[d];
+      if (multiplier)
+        residual[n_displacements + d] = area * constraint[d];
+    }
+    for (unsigned int i = 0; i < n_out; ++i)
+    {
+      R[i] = residual[i].val();
+      if (K != nullptr)
+        for (unsigned int j = 0; j < n_out; ++j)
+          K[i * n_out + j] = residual[i].dx(j);
+    }
+    result.xi[0] = value(xi);
+    return result;
+  }
+
   template struct NodeToSegment<2>;
   template struct NodeToSegment<3>;
   template struct NodeToRigid<2>;

@@ -30,18 +30,25 @@ namespace tribos
       if (face->at_boundary())
         existing.insert(face->boundary_id());
 
-    std::map<types::boundary_id, std::shared_ptr<ContactSurface<dim>>> surfaces;
-    const auto surface = [&](const unsigned int id)
+    std::map<std::set<types::boundary_id>, std::shared_ptr<ContactSurface<dim>>>
+               surfaces;
+    const auto surface = [&](const std::set<unsigned int> &ids)
     {
-      AssertThrow(existing.count(id) == 1,
-                  ExcMessage("Parameter <Contact/Pairs> names boundary id " +
-                             std::to_string(id) +
-                             ", which the scene does not have. Its boundary "
-                             "ids are listed in the README."));
-      auto &s = surfaces[id];
+      std::set<types::boundary_id> boundary_ids;
+      for (const auto id : ids)
+      {
+        AssertThrow(existing.count(id) == 1,
+                    ExcMessage("Parameter <Contact/Pairs> names boundary id " +
+                               std::to_string(id) +
+                               ", which the scene does not have. Its "
+                               "boundary ids are listed in the README."));
+        boundary_ids.insert(id);
+      }
+      auto &s = surfaces[boundary_ids];
       if (!s)
-        s =
-          std::make_shared<ContactSurface<dim>>(dof_handler, id, axisymmetric);
+        s = std::make_shared<ContactSurface<dim>>(dof_handler,
+                                                  boundary_ids,
+                                                  axisymmetric);
       return s;
     };
     std::map<std::string, std::shared_ptr<RigidSurface<dim>>> rigid_surfaces;
@@ -76,9 +83,6 @@ namespace tribos
         E = std::min(E, youngs_modulus(body));
       if (description.rigid_surface.empty())
       {
-        AssertThrow(description.master_boundary != description.slave_boundary,
-                    ExcMessage("Parameter <Contact/Pairs>: a pair needs "
-                               "different slave and master boundaries."));
         pair.master = surface(description.master_boundary);
         for (const auto body : pair.master->bodies())
           E = std::min(E, youngs_modulus(body));
@@ -190,6 +194,19 @@ namespace tribos
           continue;
         const Vec3<double> &x = pair.slave_positions[k];
 
+        if (smoothed(pair))
+        {
+          pair_smoothed(pair, k);
+          if (pairing.valid && pair.couplings.count({k, pairing.face}) == 0)
+          {
+            new_coupling = true;
+            pair.couplings.insert({k, pairing.face});
+            for (const unsigned int g : faces[pairing.face].neighbours)
+              pair.couplings.insert({k, g});
+          }
+          continue;
+        }
+
         // Keep the face of the last evaluation while the node projects
         // onto it or onto its extension within a small band: over a
         // master vertex (a concave kink of the deformed master) the
@@ -282,6 +299,115 @@ namespace tribos
 
 
   template <int dim>
+  bool
+  ContactHandler<dim>::smoothed(const Pair &pair) const
+  {
+    return dim == 2 && pair.master && parameters.smoothing != "none";
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::smoothed_stencil(
+    const Pair                      &pair,
+    const unsigned int               face,
+    const std::vector<Vec3<double>> &positions,
+    Vec3<double>                    *x,
+    bool                            *has) const
+  {
+    const auto &f = pair.master->faces()[face];
+    x[0]          = positions[f.nodes[0]];
+    x[1]          = positions[f.nodes[1]];
+    for (unsigned int side = 0; side < 2; ++side)
+    {
+      has[side]   = f.beyond[side] >= 0;
+      x[2 + side] = has[side] ? positions[f.beyond[side]] : x[side];
+    }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::pair_smoothed(Pair &pair, const unsigned int k) const
+  {
+    Pairing            &pairing = pair.pairing[k];
+    const Vec3<double> &x       = pair.slave_positions[k];
+    const auto         &faces   = pair.master->faces();
+
+    // The smoothed projection onto one face: inside, or on the extension
+    // beyond a free end of the master within the edge band.
+    const auto try_face = [&](const unsigned int f, Projection &p) -> int
+    {
+      Vec3<double> xm[4];
+      bool         has[2];
+      smoothed_stencil(pair, f, pair.master_positions, xm, has);
+      double xi, derivative;
+      if (!SmoothedSegment::project(x, xm, has, xi, derivative))
+        return 0;
+      const double xbar[2] = {0.5 * (1 - xi) * xm[0][0] +
+                                0.5 * (1 + xi) * xm[1][0],
+                              0.5 * (1 - xi) * xm[0][1] +
+                                0.5 * (1 + xi) * xm[1][1]};
+      p                    = Projection();
+      p.xi[0]              = xi;
+      p.distance           = std::hypot(x[0] - xbar[0], x[1] - xbar[1]);
+      if (std::abs(xi) <= 1.)
+        return 2;
+      const int side = xi > 0 ? 1 : 0;
+      p.clamped[0]   = xi > 0 ? 1 : -1;
+      if (!faces[f].continues[0][side] && std::abs(xi) <= 1. + edge_band)
+        return 1;
+      return 0;
+    };
+
+    // The face of the last evaluation while the node still projects onto
+    // it: the projection is continuous across vertices, so this only
+    // saves the search.
+    if (pairing.valid)
+    {
+      Projection p;
+      const int  kind = try_face(pairing.face, p);
+      if (kind > 0 && p.distance <= parameters.search_distance)
+      {
+        pairing.projection = p;
+        return;
+      }
+    }
+    pairing = Pairing();
+
+    unsigned int closest;
+    double       squared_distance;
+    if (!pair.search.closest_face(x, closest, squared_distance))
+      return;
+    pairing.distance = std::sqrt(squared_distance);
+    if (pairing.distance > parameters.search_distance)
+      return;
+
+    std::vector<unsigned int> candidates = faces[closest].neighbours;
+    candidates.insert(candidates.begin(), closest);
+    int    best_kind     = 0;
+    double best_distance = std::numeric_limits<double>::max();
+    for (const unsigned int f : candidates)
+    {
+      Projection p;
+      const int  kind = try_face(f, p);
+      if (kind > best_kind ||
+          (kind == best_kind && kind > 0 && p.distance < best_distance))
+      {
+        best_kind          = kind;
+        best_distance      = p.distance;
+        pairing.face       = f;
+        pairing.projection = p;
+      }
+    }
+    pairing.valid = best_kind > 0;
+  }
+
+
+
+  template <int dim>
   void
   ContactHandler<dim>::element_dofs(
     const Pair                           &pair,
@@ -292,9 +418,16 @@ namespace tribos
     const auto &slave_dofs = pair.slave->nodes()[node].dofs;
     dofs.assign(slave_dofs.begin(), slave_dofs.end());
     if (pair.master && face >= 0)
+    {
       for (const unsigned int m : pair.master->faces()[face].nodes)
         for (const auto dof : pair.master->nodes()[m].dofs)
           dofs.push_back(dof);
+      if (smoothed(pair))
+        for (const int m : pair.master->faces()[face].beyond)
+          if (m >= 0)
+            for (const auto dof : pair.master->nodes()[m].dofs)
+              dofs.push_back(dof);
+    }
     if (pair.lagrange)
       for (unsigned int d = 0; d < dim; ++d)
         dofs.push_back(pair.first_multiplier + dim * node + d);
@@ -340,9 +473,11 @@ namespace tribos
                                 TrilinosWrappers::MPI::Vector   &free_residual,
                                 TrilinosWrappers::MPI::Vector   &full_residual)
   {
-    constexpr unsigned int n_max = NodeToSegment<dim>::n_dofs + dim;
-    double                 R[n_max], K[n_max * n_max];
-    const Vec3<double>     zero{{0, 0, 0}};
+    constexpr unsigned int n_max =
+      std::max(NodeToSegment<dim>::n_dofs, NodeToSmoothedSegment::max_dofs) +
+      dim;
+    double             R[n_max], K[n_max * n_max];
+    const Vec3<double> zero{{0, 0, 0}};
 
     for (auto &pair : pairs)
     {
@@ -424,7 +559,38 @@ namespace tribos
               law.fixed_components |= (1u << d);
           }
 
-        if (pair.master)
+        unsigned int n_element = n_dofs;
+        if (smoothed(pair))
+        {
+          const int    face = pair.pairing[k].face;
+          Vec3<double> xm[4], xm_old[4];
+          bool         has[2];
+          smoothed_stencil(pair, face, pair.master_positions, xm, has);
+          smoothed_stencil(pair, face, pair.old_master_positions, xm_old, has);
+          double xi, derivative;
+          // update() paired the node at these positions.
+          AssertThrow(SmoothedSegment::project(x, xm, has, xi, derivative),
+                      ExcInternalError());
+          pair.results[k] =
+            NodeToSmoothedSegment::evaluate(x,
+                                            xm,
+                                            has,
+                                            xi,
+                                            derivative,
+                                            pair.old_slave_positions[k],
+                                            xm_old,
+                                            previous,
+                                            law,
+                                            area,
+                                            consistent,
+                                            R,
+                                            K,
+                                            lambda);
+          pair.results[k].face = face;
+          n_element = dim * (3 + (has[0] ? 1 : 0) + (has[1] ? 1 : 0)) +
+                      (pair.lagrange ? dim : 0);
+        }
+        else if (pair.master)
         {
           const auto  &faces = pair.master->faces();
           const int    face  = pair.pairing[k].face;
@@ -471,15 +637,16 @@ namespace tribos
           continue;
 
         element_dofs(pair, k, pair.pairing[k].face, dofs);
+        AssertDimension(dofs.size(), n_element);
         if (pair.lagrange)
           guard_constraint_rows(dofs,
-                                n_displacements,
+                                n_element - dim,
                                 homogeneous,
                                 area,
                                 pair.lagrange_values[k],
                                 R,
                                 K);
-        add(n_dofs);
+        add(n_element);
       }
     }
   }
@@ -637,7 +804,9 @@ namespace tribos
           const int status =
             pair.results[k].status == ContactStatus::open ? 0 : 1;
           if (pair.tracked_status[k] >= 0 && status != pair.tracked_status[k])
+          {
             ++pair.status_changes[k];
+          }
           pair.tracked_status[k] = status;
           if (pair.status_changes[k] > limit)
             ++n_chattering;

@@ -7,10 +7,11 @@
 namespace tribos
 {
   template <int dim>
-  ContactSurface<dim>::ContactSurface(const DoFHandler<dim>   &dof_handler,
-                                      const types::boundary_id boundary_id,
-                                      const bool               axisymmetric)
-    : id(boundary_id)
+  ContactSurface<dim>::ContactSurface(
+    const DoFHandler<dim>              &dof_handler,
+    const std::set<types::boundary_id> &boundary_ids,
+    const bool                          axisymmetric)
+    : ids(boundary_ids)
   {
     std::map<unsigned int, unsigned int> node_of_vertex;
 
@@ -18,7 +19,7 @@ namespace tribos
       for (const unsigned int f : cell->face_indices())
       {
         const auto face = cell->face(f);
-        if (!face->at_boundary() || face->boundary_id() != boundary_id)
+        if (!face->at_boundary() || ids.count(face->boundary_id()) == 0)
           continue;
 
         Face contact_face;
@@ -134,6 +135,16 @@ namespace tribos
             if (shares_all)
               face.continues[c][side] = true;
           }
+        }
+
+      if constexpr (dim == 2)
+        for (const unsigned int g : face.neighbours)
+        {
+          const auto &other = face_list[g].nodes;
+          if (other[1] == face.nodes[0] && face.beyond[0] < 0)
+            face.beyond[0] = other[0];
+          if (other[0] == face.nodes[1] && face.beyond[1] < 0)
+            face.beyond[1] = other[1];
         }
     }
   }

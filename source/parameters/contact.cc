@@ -52,10 +52,13 @@ namespace tribos
         "",
         dealii::Patterns::Anything(),
         "Contact pairs separated by ';': 'slave : master' or 'slave : master "
-        ": key=value, ...'. slave is a boundary id whose nodes are checked; "
-        "master is a boundary id (deformable master faces) or the name of a "
-        "rigid surface. Per-pair keys: method, penalty, tangential penalty, "
-        "mu. Example: '10 : 3 ; 4 : plate : mu=0.2'.");
+        ": key=value, ...'. slave is a list of boundary ids whose nodes are "
+        "checked; master is a list of boundary ids (deformable master "
+        "faces) or the name of a rigid surface. A list (e.g. '10, 11, 12') "
+        "makes one connected surface: a node on the edge between two of its "
+        "parts is one node, and master faces continue across that edge. "
+        "Per-pair keys: method, penalty, tangential penalty, mu. Example: "
+        "'10 : 3 ; 4 : plate : mu=0.2 ; 3 : 10, 11, 12'.");
       prm.declare_entry("Method",
                         "penalty",
                         dealii::Patterns::Selection(
@@ -99,6 +102,16 @@ namespace tribos
                         "two-pass adds, for every deformable pair, the pair "
                         "with slave and master swapped; both carry half the "
                         "tributary area.");
+      prm.declare_entry(
+        "Master smoothing",
+        "none",
+        dealii::Patterns::Selection("none|averaged normals"),
+        "none: the master is its faces (piecewise linear in 2D, bilinear "
+        "in 3D). averaged normals (2D only): the normal field of each "
+        "deformable master is interpolated between averaged nodal normals, "
+        "so projection, gap and contact force stay continuous when a slave "
+        "node crosses a master vertex (no chattering between segments at "
+        "kinks of a coarse or strongly deformed master).");
       prm.declare_entry("Search distance",
                         "0",
                         dealii::Patterns::Double(0),
@@ -158,6 +171,7 @@ namespace tribos
       tangent                = prm.get("Tangent");
       passes                 = prm.get("Passes");
       search_distance        = prm.get_double("Search distance");
+      smoothing              = prm.get("Master smoothing");
       augmentation_tolerance = prm.get_double("Augmentation tolerance");
       max_augmentations      = prm.get_integer("Maximum augmentations");
       chattering_flips       = prm.get_integer("Chattering flips");
@@ -240,14 +254,9 @@ namespace tribos
                                        "> must read 'slave : master' or "
                                        "'slave : master : key=value, ...'."));
         ContactPair pair;
-        const auto  slave = Text::parse_unsigned(parts[0], pair_entry);
-        AssertThrow(slave.size() == 1,
-                    dealii::ExcMessage("Parameter <" + pair_entry +
-                                       ">: slave <" + parts[0] +
-                                       "> must be one boundary id."));
-        pair.slave_boundary  = slave[0];
-        pair.master_boundary = std::numeric_limits<unsigned int>::max();
-        bool is_rigid        = false;
+        for (const auto id : Text::parse_unsigned(parts[0], pair_entry))
+          pair.slave_boundary.insert(id);
+        bool is_rigid = false;
         for (const auto &surface : rigid_surfaces)
           if (surface.name == parts[1])
             is_rigid = true;
@@ -255,14 +264,25 @@ namespace tribos
           pair.rigid_surface = parts[1];
         else
         {
-          char      *end = nullptr;
-          const long id  = std::strtol(parts[1].c_str(), &end, 10);
-          AssertThrow(!parts[1].empty() && *end == '\0' && id >= 0,
-                      dealii::ExcMessage(
-                        "Parameter <" + pair_entry + ">: master <" + parts[1] +
-                        "> is neither a boundary id nor the name of a "
-                        "surface in <Contact/Rigid surfaces>."));
-          pair.master_boundary = id;
+          for (const auto &piece : Text::split_top_level(parts[1], ','))
+          {
+            char      *end = nullptr;
+            const long id  = std::strtol(piece.c_str(), &end, 10);
+            AssertThrow(!piece.empty() && *end == '\0' && id >= 0,
+                        dealii::ExcMessage(
+                          "Parameter <" + pair_entry + ">: master <" +
+                          parts[1] +
+                          "> is neither a list of boundary ids nor the name "
+                          "of a surface in <Contact/Rigid surfaces>."));
+            pair.master_boundary.insert(id);
+          }
+          for (const auto id : pair.master_boundary)
+            AssertThrow(pair.slave_boundary.count(id) == 0,
+                        dealii::ExcMessage(
+                          "Parameter <" + pair_entry + ">: item <" + item +
+                          ">: boundary id " + std::to_string(id) +
+                          " is both slave and master; a pair needs "
+                          "different slave and master boundaries."));
         }
         pair.method               = default_method;
         pair.normal_penalty       = default_normal;

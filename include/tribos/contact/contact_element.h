@@ -4,6 +4,7 @@
 #include <tribos/contact/contact_point.h>
 #include <tribos/contact/master_face.h>
 #include <tribos/contact/rigid_surface.h>
+#include <tribos/contact/smoothed_segment.h>
 
 namespace tribos
 {
@@ -62,6 +63,45 @@ namespace tribos
     evaluate(const Vec3<double> &slave,
              const Vec3<double> *master,
              const Projection   &projection,
+             const Vec3<double> &slave_old,
+             const Vec3<double> *master_old,
+             const Vec3<double> &previous_traction,
+             const ContactLaw   &law,
+             const double        area,
+             const bool          consistent,
+             double             *R,
+             double             *K,
+             const Vec3<double> *multiplier = nullptr);
+  };
+
+  /**
+   * The 2D element against a master whose normal field is smoothed by
+   * averaged nodal normals (SmoothedSegment, Contact/Master smoothing): the
+   * same interface laws, with the projection, the gap and the normal of
+   * the smoothed surface. The force acts on the slave and on the two nodes
+   * of the segment (-N_a(xi) times it); the neighbour nodes get no force,
+   * but the normal depends on them, so their columns are part of the
+   * (exact, AD) tangent. Dofs: slave, x_0, x_1, then the node before x_0
+   * and the node after x_1 where @p has says they exist, then the
+   * multiplier.
+   */
+  struct NodeToSmoothedSegment
+  {
+    /** Displacement dofs at most: slave and four master nodes. */
+    static constexpr unsigned int max_dofs = 2 * 5;
+
+    /**
+     * @p master: x_0, x_1, node before, node after (SmoothedSegment);
+     * @p xi and @p derivative from SmoothedSegment::project at the current
+     * positions; @p master_old the segment's two nodes at the last
+     * converged step. Other arguments as for NodeToSegment.
+     */
+    static ContactPointResult
+    evaluate(const Vec3<double> &slave,
+             const Vec3<double> *master,
+             const bool         *has,
+             const double        xi,
+             const double        derivative,
              const Vec3<double> &slave_old,
              const Vec3<double> *master_old,
              const Vec3<double> &previous_traction,

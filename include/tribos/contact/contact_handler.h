@@ -247,13 +247,38 @@ namespace tribos
     };
 
     /** The dofs of the element of slave @p node against master @p face
-     * (slave first, then the face's nodes, then the node's multipliers
-     * for a Lagrange pair), into @p dofs. */
+     * (slave first, then the face's nodes, with Master smoothing the
+     * face's neighbour nodes, then the node's multipliers for a Lagrange
+     * pair), into @p dofs. */
     void
     element_dofs(const Pair                           &pair,
                  const unsigned int                    node,
                  const int                             face,
                  std::vector<types::global_dof_index> &dofs) const;
+
+    /** Whether the pair's master is smoothed (SmoothedSegment). */
+    bool
+    smoothed(const Pair &pair) const;
+
+    /**
+     * The nodes of @p face for SmoothedSegment (segment, node before, node
+     * after) at @p positions, and which neighbours exist.
+     */
+    void
+    smoothed_stencil(const Pair                      &pair,
+                     const unsigned int               face,
+                     const std::vector<Vec3<double>> &positions,
+                     Vec3<double>                    *x,
+                     bool                            *has) const;
+
+    /**
+     * Pair slave @p k with the smoothed master: the face whose smoothed
+     * normal line through the node has xi in [-1, 1] (the nearest such);
+     * near a free end of the master, the end face's extension within the
+     * edge band. Unpaired (invalid) otherwise.
+     */
+    void
+    pair_smoothed(Pair &pair, const unsigned int k) const;
 
     /**
      * Lagrange pairs: replace every constraint row of an element (@p R,

@@ -16,7 +16,8 @@ namespace tribos
   using namespace dealii;
 
   /**
-   * The faces and nodes of one boundary (by boundary id) of a Q1 mesh, as
+   * The faces and nodes of a boundary part (one or more boundary ids) of a
+   * Q1 mesh, as
    * seen by contact: as a slave, its nodes with their tributary areas; as a
    * master, its faces (vertex order such that the normal of MasterFace
    * points out of the body) with their neighbours. Built once from the
@@ -49,7 +50,13 @@ namespace tribos
        * Per local coordinate and side (-1, +1): whether another face of the
        * surface continues across that edge (false: the surface ends).
        */
-      bool               continues[2][2] = {{false, false}, {false, false}};
+      bool continues[2][2] = {{false, false}, {false, false}};
+      /**
+       * 2D only: the surface node before node 0 and after node 1 along the
+       * surface (of the neighbouring faces with the same orientation), or
+       * -1 where the surface ends. Used by the smoothed master normals.
+       */
+      int                beyond[2] = {-1, -1};
       types::material_id body;
     };
 
@@ -57,14 +64,15 @@ namespace tribos
      * With @p axisymmetric (2D, x = r) the tributary areas are those of the
      * surface of revolution, the integral of N_k 2 pi r.
      */
-    ContactSurface(const DoFHandler<dim>   &dof_handler,
-                   const types::boundary_id boundary_id,
-                   const bool               axisymmetric = false);
+    ContactSurface(const DoFHandler<dim>              &dof_handler,
+                   const std::set<types::boundary_id> &boundary_ids,
+                   const bool                          axisymmetric = false);
 
-    types::boundary_id
-    boundary_id() const
+    /** The boundary ids this surface is made of. */
+    const std::set<types::boundary_id> &
+    boundary_ids() const
     {
-      return id;
+      return ids;
     }
 
     const std::vector<Node> &
@@ -87,7 +95,7 @@ namespace tribos
     }
 
   private:
-    types::boundary_id           id;
+    std::set<types::boundary_id> ids;
     std::vector<Node>            node_list;
     std::vector<Face>            face_list;
     std::set<types::material_id> body_ids;

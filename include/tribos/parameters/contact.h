@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -50,12 +51,17 @@ namespace tribos
       std::vector<std::string> motion;
     };
 
-    /** One contact pair: slave boundary, master boundary or rigid surface. */
+    /**
+     * One contact pair: slave surface, master surface or rigid surface. A
+     * surface is the union of one or more boundary ids (like an Abaqus
+     * surface made of several facet sets), so that a corner between two
+     * boundary parts is one node of one connected surface.
+     */
     struct ContactPair
     {
-      unsigned int slave_boundary;
-      /** Master boundary id, or invalid if the master is rigid. */
-      unsigned int master_boundary;
+      std::set<unsigned int> slave_boundary;
+      /** Master boundary ids; empty if the master is rigid. */
+      std::set<unsigned int> master_boundary;
       /** Name of the rigid master surface (empty if deformable). */
       std::string rigid_surface;
 
@@ -77,8 +83,10 @@ namespace tribos
       std::string               tangent;
       std::string               passes;
       double                    search_distance;
-      double                    augmentation_tolerance;
-      unsigned int              max_augmentations;
+      /** Master smoothing: "none" or "averaged normals" (2D). */
+      std::string  smoothing;
+      double       augmentation_tolerance;
+      unsigned int max_augmentations;
       /** Status changes per increment beyond which a node chatters. */
       unsigned int chattering_flips;
       /** freeze, cutback or none. */
