@@ -107,6 +107,8 @@ namespace tribos
       // surfaces, e.g. the top and the side of an upset cylinder) would
       // get a second, identical constraint: the system would be singular.
       // It is left to the earlier pair (its multipliers are held at 0).
+      // Writing both parts as one slave surface ('3, 4 : plate') avoids
+      // the duplicate altogether.
       pair.duplicate.assign(n_slaves, false);
       if (pair.lagrange)
         for (unsigned int k = 0; k < n_slaves; ++k)
