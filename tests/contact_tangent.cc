@@ -224,14 +224,12 @@ check_smoothed(std::mt19937 &random, Tally &tally, bool &ok)
     {
       Vec3<double> s, m[4];
       positions(x, s, m);
-      double xi = 0, derivative = 0;
-      projected = SmoothedSegment::project(s, m, has, xi, derivative) &&
-                  std::abs(xi) <= 1;
+      double xi = 0;
+      projected = SmoothedSegment::project(s, m, has, xi) && std::abs(xi) <= 1;
       return Element::evaluate(s,
                                m,
                                has,
                                xi,
-                               derivative,
                                slave_old,
                                master_old,
                                traction,

@@ -233,6 +233,61 @@ namespace tribos
         result[d] = (d < dim ? AD(n, first + d, x[d]) : AD(x[d]));
       return result;
     }
+
+    /**
+     * The interface law at one slave node (penalty form, or the multiplier
+     * form with @p multiplier) and the element residual it gives, with its
+     * AD derivative: A force on the slave's dim rows, -N_a A force on the
+     * rows of the @p n_master_nodes master nodes that carry it, and A times
+     * the constraint on the dim multiplier rows after the @p
+     * n_displacements displacement rows. Every element type ends with this
+     * (a rigid master carries no nodes).
+     */
+    template <int dim>
+    void
+    apply_law(const AD           &gap,
+              const Vec3<AD>     &normal,
+              const Vec3<AD>     &slip,
+              const AD           *N,
+              const unsigned int  n_master_nodes,
+              const unsigned int  n_displacements,
+              const Vec3<double> *multiplier,
+              const Vec3<double> &previous_traction,
+              const ContactLaw   &law,
+              const double        area,
+              double             *R,
+              double             *K,
+              ContactPointResult &result)
+    {
+      const unsigned int n_out = n_displacements + (multiplier ? dim : 0);
+      Vec3<AD>           force, constraint;
+      if (multiplier)
+        multiplier_law(gap,
+                       normal,
+                       slip,
+                       seed<dim>(*multiplier, n_displacements, n_out),
+                       law,
+                       force,
+                       constraint,
+                       result);
+      else
+        interface_law(gap, normal, slip, previous_traction, law, force, result);
+
+      for (unsigned int i = 0; i < n_out; ++i)
+      {
+        AD residual = 0.;
+        if (i < dim)
+          residual = area * force[i];
+        else if (i < dim * (1 + n_master_nodes))
+          residual = -area * N[i / dim - 1] * force[i % dim];
+        else if (i >= n_displacements)
+          residual = area * constraint[i - n_displacements];
+        R[i] = residual.val();
+        if (K != nullptr)
+          for (unsigned int j = 0; j < n_out; ++j)
+            K[i * n_out + j] = residual.dx(j);
+      }
+    }
   } // namespace
 
 
@@ -330,35 +385,19 @@ namespace tribos
       relative = relative - scale(N[k], xm[k] - to<AD>(master_old[k]));
     const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
 
-    Vec3<AD> force, constraint;
-    if (multiplier)
-      multiplier_law(gap,
-                     normal,
-                     slip,
-                     seed<dim>(*multiplier, n_dofs, n_out),
-                     law,
-                     force,
-                     constraint,
-                     result);
-    else
-      interface_law(gap, normal, slip, previous_traction, law, force, result);
-
-    AD residual[n_dofs + dim];
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      residual[d] = area * force[d];
-      for (unsigned int k = 0; k < n_nodes; ++k)
-        residual[dim * (1 + k) + d] = -area * N[k] * force[d];
-      if (multiplier)
-        residual[n_dofs + d] = area * constraint[d];
-    }
-    for (unsigned int i = 0; i < n_out; ++i)
-    {
-      R[i] = residual[i].val();
-      if (K != nullptr)
-        for (unsigned int j = 0; j < n_out; ++j)
-          K[i * n_out + j] = residual[i].dx(j);
-    }
+    apply_law<dim>(gap,
+                   normal,
+                   slip,
+                   N,
+                   n_nodes,
+                   n_dofs,
+                   multiplier,
+                   previous_traction,
+                   law,
+                   area,
+                   R,
+                   K,
+                   result);
     result.xi[0] = value(xi[0]);
     result.xi[1] = value(xi[1]);
     return result;
@@ -409,27 +448,19 @@ namespace tribos
       (xs - to<AD>(slave_old)) - to<AD>(shift - shift_old);
     const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
 
-    Vec3<AD> force, constraint;
-    if (multiplier)
-      multiplier_law(gap,
-                     normal,
-                     slip,
-                     seed<dim>(*multiplier, n_dofs, n_out),
-                     law,
-                     force,
-                     constraint,
-                     result);
-    else
-      interface_law(gap, normal, slip, previous_traction, law, force, result);
-
-    for (unsigned int i = 0; i < n_out; ++i)
-    {
-      const AD residual = area * (i < dim ? force[i] : constraint[i - dim]);
-      R[i]              = residual.val();
-      if (K != nullptr)
-        for (unsigned int j = 0; j < n_out; ++j)
-          K[i * n_out + j] = residual.dx(j);
-    }
+    apply_law<dim>(gap,
+                   normal,
+                   slip,
+                   nullptr,
+                   0,
+                   n_dofs,
+                   multiplier,
+                   previous_traction,
+                   law,
+                   area,
+                   R,
+                   K,
+                   result);
     return result;
   }
 
@@ -438,7 +469,6 @@ namespace tribos
                                   const Vec3<double> *master,
                                   const bool         *has,
                                   const double        xi_value,
-                                  const double        derivative,
                                   const Vec3<double> &slave_old,
                                   const Vec3<double> *master_old,
                                   const Vec3<double> &previous_traction,
@@ -483,6 +513,8 @@ namespace tribos
 
     // xi: one Newton step in AD from the converged root is the implicit
     // derivative of the projection condition.
+    const double derivative =
+      SmoothedSegment::condition_derivative(slave, master, has, xi_value);
     AD xi = xi_value;
     {
       const AD       N0 = 0.5 * (1. - xi_value), N1 = 0.5 * (1. + xi_value);
@@ -501,37 +533,19 @@ namespace tribos
       relative = relative - scale(N[k], xm[k] - to<AD>(master_old[k]));
     const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
 
-    Vec3<AD> force, constraint;
-    if (multiplier)
-      multiplier_law(gap,
-                     normal,
-                     slip,
-                     seed<dim>(*multiplier, n_displacements, n_out),
-                     law,
-                     force,
-                     constraint,
-                     result);
-    else
-      interface_law(gap, normal, slip, previous_traction, law, force, result);
-
-    AD residual[max_dofs + dim];
-    for (unsigned int i = 0; i < n_out; ++i)
-      residual[i] = 0.;
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      residual[d] = area * force[d];
-      for (unsigned int k = 0; k < 2; ++k)
-        residual[dim * (1 + k) + d] = -area * N[k] * force[d];
-      if (multiplier)
-        residual[n_displacements + d] = area * constraint[d];
-    }
-    for (unsigned int i = 0; i < n_out; ++i)
-    {
-      R[i] = residual[i].val();
-      if (K != nullptr)
-        for (unsigned int j = 0; j < n_out; ++j)
-          K[i * n_out + j] = residual[i].dx(j);
-    }
+    apply_law<dim>(gap,
+                   normal,
+                   slip,
+                   N,
+                   2,
+                   n_displacements,
+                   multiplier,
+                   previous_traction,
+                   law,
+                   area,
+                   R,
+                   K,
+                   result);
     result.xi[0] = value(xi);
     return result;
   }

@@ -194,98 +194,12 @@ namespace tribos
         Pairing &pairing = pair.pairing[k];
         if (!pair.owned[k] || pair.duplicate[k])
           continue;
-        const Vec3<double> &x = pair.slave_positions[k];
-
         if (smoothed(pair))
-        {
           pair_smoothed(pair, k);
-          if (pairing.valid && pair.couplings.count({k, pairing.face}) == 0)
-          {
-            new_coupling = true;
-            pair.couplings.insert({k, pairing.face});
-            for (const unsigned int g : faces[pairing.face].neighbours)
-              pair.couplings.insert({k, g});
-          }
-          continue;
-        }
+        else
+          pair_faceted(pair, k);
 
-        // Keep the face of the last evaluation while the node projects
-        // onto it or onto its extension within a small band: over a
-        // master vertex (a concave kink of the deformed master) the
-        // closest face would otherwise flip between iterations and
-        // Newton would cycle between two smooth residuals.
-        if (pairing.valid)
-        {
-          Vec3<double> xm[4];
-          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-            xm[v] = pair.master_positions[faces[pairing.face].nodes[v]];
-          const Projection kept = project<dim>(x, xm, false);
-          bool             near = kept.distance <= parameters.search_distance;
-          for (unsigned int c = 0; c < dim - 1; ++c)
-            near = near && std::abs(kept.xi[c]) <= 1. + edge_band;
-          if (near)
-          {
-            pairing.projection = kept;
-            continue;
-          }
-        }
-        pairing = Pairing();
-
-        unsigned int closest;
-        double       squared_distance;
-        if (!pair.search.closest_face(x, closest, squared_distance))
-          continue;
-        pairing.distance = std::sqrt(squared_distance);
-        if (pairing.distance > parameters.search_distance)
-          continue;
-
-        // Exact projection on the candidate and its neighbours: prefer
-        // a projection inside a face (the closest such), else the
-        // closest clamped one.
-        std::vector<unsigned int> candidates = faces[closest].neighbours;
-        candidates.insert(candidates.begin(), closest);
-        bool   best_inside   = false;
-        double best_distance = std::numeric_limits<double>::max();
-        for (const unsigned int f : candidates)
-        {
-          Vec3<double> xm[4];
-          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-            xm[v] = pair.master_positions[faces[f].nodes[v]];
-          const Projection p      = project<dim>(x, xm);
-          const bool       inside = p.inside();
-          if ((inside && !best_inside) ||
-              (inside == best_inside && p.distance < best_distance))
-          {
-            best_inside        = inside;
-            best_distance      = p.distance;
-            pairing.face       = f;
-            pairing.projection = p;
-          }
-        }
-        // A projection clamped at an edge where the master surface ends:
-        // within a small band beyond the edge the node sees the face's
-        // extension (a smooth residual for nodes flush with the end of
-        // the master); farther out it has slid off: no contact.
-        pairing.valid = true;
-        bool at_end   = false;
-        for (unsigned int c = 0; c < dim - 1; ++c)
-          if (pairing.projection.clamped[c] != 0 &&
-              !faces[pairing.face]
-                 .continues[c][pairing.projection.clamped[c] > 0])
-            at_end = true;
-        if (at_end)
-        {
-          Vec3<double> xm[4];
-          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-            xm[v] = pair.master_positions[faces[pairing.face].nodes[v]];
-          const Projection extended = project<dim>(x, xm, false);
-          for (unsigned int c = 0; c < dim - 1; ++c)
-            if (std::abs(extended.xi[c]) > 1. + edge_band)
-              pairing.valid = false;
-          pairing.projection = extended;
-        }
-
-        if (pair.couplings.count({k, pairing.face}) == 0)
+        if (pairing.face >= 0 && pair.couplings.count({k, pairing.face}) == 0)
         {
           new_coupling = true;
           pair.couplings.insert({k, pairing.face});
@@ -332,6 +246,105 @@ namespace tribos
 
   template <int dim>
   void
+  ContactHandler<dim>::pair_faceted(Pair &pair, const unsigned int k) const
+  {
+    Pairing            &pairing = pair.pairing[k];
+    const Vec3<double> &x       = pair.slave_positions[k];
+    const auto         &faces   = pair.master->faces();
+    const auto project_onto     = [&](const unsigned int f, const bool clamp)
+    {
+      Vec3<double> xm[4];
+      for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+        xm[v] = pair.master_positions[faces[f].nodes[v]];
+      return project<dim>(x, xm, clamp);
+    };
+
+    // Keep the face of the last evaluation while the node projects
+    // onto it or onto its extension within a small band: over a
+    // master vertex (a concave kink of the deformed master) the
+    // closest face would otherwise flip between iterations and
+    // Newton would cycle between two smooth residuals.
+    if (pairing.valid)
+    {
+      const Projection kept = project_onto(pairing.face, false);
+      bool             near = kept.distance <= parameters.search_distance;
+      for (unsigned int c = 0; c < dim - 1; ++c)
+        near = near && std::abs(kept.xi[c]) <= 1. + edge_band;
+      if (near)
+      {
+        pairing.projection = kept;
+        return;
+      }
+    }
+    pairing = Pairing();
+    const std::vector<unsigned int> candidates =
+      candidate_faces(pair, x, pairing);
+    if (candidates.empty())
+      return;
+
+    // Exact projection on the candidate and its neighbours: prefer
+    // a projection inside a face (the closest such), else the
+    // closest clamped one.
+    bool   best_inside   = false;
+    double best_distance = std::numeric_limits<double>::max();
+    for (const unsigned int f : candidates)
+    {
+      const Projection p      = project_onto(f, true);
+      const bool       inside = p.inside();
+      if ((inside && !best_inside) ||
+          (inside == best_inside && p.distance < best_distance))
+      {
+        best_inside        = inside;
+        best_distance      = p.distance;
+        pairing.face       = f;
+        pairing.projection = p;
+      }
+    }
+    // A projection clamped at an edge where the master surface ends:
+    // within a small band beyond the edge the node sees the face's
+    // extension (a smooth residual for nodes flush with the end of
+    // the master); farther out it has slid off: no contact.
+    pairing.valid = true;
+    bool at_end   = false;
+    for (unsigned int c = 0; c < dim - 1; ++c)
+      if (pairing.projection.clamped[c] != 0 &&
+          !faces[pairing.face].continues[c][pairing.projection.clamped[c] > 0])
+        at_end = true;
+    if (at_end)
+    {
+      const Projection extended = project_onto(pairing.face, false);
+      for (unsigned int c = 0; c < dim - 1; ++c)
+        if (std::abs(extended.xi[c]) > 1. + edge_band)
+          pairing.valid = false;
+      pairing.projection = extended;
+    }
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  ContactHandler<dim>::candidate_faces(const Pair         &pair,
+                                       const Vec3<double> &x,
+                                       Pairing            &pairing) const
+  {
+    unsigned int closest;
+    double       squared_distance;
+    if (!pair.search.closest_face(x, closest, squared_distance))
+      return {};
+    pairing.distance = std::sqrt(squared_distance);
+    if (pairing.distance > parameters.search_distance)
+      return {};
+    std::vector<unsigned int> candidates =
+      pair.master->faces()[closest].neighbours;
+    candidates.insert(candidates.begin(), closest);
+    return candidates;
+  }
+
+
+
+  template <int dim>
+  void
   ContactHandler<dim>::pair_smoothed(Pair &pair, const unsigned int k) const
   {
     Pairing            &pairing = pair.pairing[k];
@@ -345,8 +358,8 @@ namespace tribos
       Vec3<double> xm[4];
       bool         has[2];
       smoothed_stencil(pair, f, pair.master_positions, xm, has);
-      double xi, derivative;
-      if (!SmoothedSegment::project(x, xm, has, xi, derivative))
+      double xi;
+      if (!SmoothedSegment::project(x, xm, has, xi))
         return 0;
       const double xbar[2] = {0.5 * (1 - xi) * xm[0][0] +
                                 0.5 * (1 + xi) * xm[1][0],
@@ -377,21 +390,10 @@ namespace tribos
         return;
       }
     }
-    pairing = Pairing();
-
-    unsigned int closest;
-    double       squared_distance;
-    if (!pair.search.closest_face(x, closest, squared_distance))
-      return;
-    pairing.distance = std::sqrt(squared_distance);
-    if (pairing.distance > parameters.search_distance)
-      return;
-
-    std::vector<unsigned int> candidates = faces[closest].neighbours;
-    candidates.insert(candidates.begin(), closest);
+    pairing              = Pairing();
     int    best_kind     = 0;
     double best_distance = std::numeric_limits<double>::max();
-    for (const unsigned int f : candidates)
+    for (const unsigned int f : candidate_faces(pair, x, pairing))
     {
       Projection p;
       const int  kind = try_face(f, p);
@@ -483,17 +485,15 @@ namespace tribos
 
     for (auto &pair : pairs)
     {
-      const unsigned int n_displacements =
-        pair.master ? NodeToSegment<dim>::n_dofs : NodeToRigid<dim>::n_dofs;
-      const unsigned int n_dofs = n_displacements + (pair.lagrange ? dim : 0);
       const Vec3<double> shift =
         pair.rigid ? pair.rigid->translation(time) : zero;
       const Vec3<double> old_shift =
         pair.rigid ? pair.rigid->translation(committed_time) : zero;
-      // Element buffers, reused for every slave node of the pair.
+      // Element buffers, reused for every slave node of the pair (sized
+      // per element by add()).
       std::vector<types::global_dof_index> dofs;
-      dealii::Vector<double> local_rhs(n_dofs), local_residual(n_dofs);
-      FullMatrix<double>     local_matrix(n_dofs, n_dofs);
+      dealii::Vector<double>               local_rhs, local_residual;
+      FullMatrix<double>                   local_matrix;
 
       const auto add = [&](const unsigned int n)
       {
@@ -561,7 +561,6 @@ namespace tribos
               law.fixed_components |= (1u << d);
           }
 
-        unsigned int n_element = n_dofs;
         if (smoothed(pair))
         {
           const int    face = pair.pairing[k].face;
@@ -569,16 +568,11 @@ namespace tribos
           bool         has[2];
           smoothed_stencil(pair, face, pair.master_positions, xm, has);
           smoothed_stencil(pair, face, pair.old_master_positions, xm_old, has);
-          double xi, derivative;
-          // update() paired the node at these positions.
-          AssertThrow(SmoothedSegment::project(x, xm, has, xi, derivative),
-                      ExcInternalError());
           pair.results[k] =
             NodeToSmoothedSegment::evaluate(x,
                                             xm,
                                             has,
-                                            xi,
-                                            derivative,
+                                            pair.pairing[k].projection.xi[0],
                                             pair.old_slave_positions[k],
                                             xm_old,
                                             previous,
@@ -589,8 +583,6 @@ namespace tribos
                                             K,
                                             lambda);
           pair.results[k].face = face;
-          n_element = dim * (3 + (has[0] ? 1 : 0) + (has[1] ? 1 : 0)) +
-                      (pair.lagrange ? dim : 0);
         }
         else if (pair.master)
         {
@@ -638,8 +630,10 @@ namespace tribos
         if (!pair.lagrange && pair.results[k].status == ContactStatus::open)
           continue;
 
+        // The element's size: its master nodes (with smoothing also the
+        // segment's neighbours) and multipliers.
         element_dofs(pair, k, pair.pairing[k].face, dofs);
-        AssertDimension(dofs.size(), n_element);
+        const unsigned int n_element = dofs.size();
         if (pair.lagrange)
           guard_constraint_rows(dofs,
                                 n_element - dim,

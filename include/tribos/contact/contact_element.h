@@ -92,16 +92,15 @@ namespace tribos
 
     /**
      * @p master: x_0, x_1, node before, node after (SmoothedSegment);
-     * @p xi and @p derivative from SmoothedSegment::project at the current
-     * positions; @p master_old the segment's two nodes at the last
-     * converged step. Other arguments as for NodeToSegment.
+     * @p xi from SmoothedSegment::project at the current positions;
+     * @p master_old the segment's two nodes at the last converged step.
+     * Other arguments as for NodeToSegment.
      */
     static ContactPointResult
     evaluate(const Vec3<double> &slave,
              const Vec3<double> *master,
              const bool         *has,
              const double        xi,
-             const double        derivative,
              const Vec3<double> &slave_old,
              const Vec3<double> *master_old,
              const Vec3<double> &previous_traction,

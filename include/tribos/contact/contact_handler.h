@@ -272,6 +272,26 @@ namespace tribos
                      bool                            *has) const;
 
     /**
+     * The faces near slave point @p x: the closest face (CGAL search) and
+     * its neighbours; empty if the master is farther than Search
+     * distance. Sets @p pairing.distance.
+     */
+    std::vector<unsigned int>
+    candidate_faces(const Pair         &pair,
+                    const Vec3<double> &x,
+                    Pairing            &pairing) const;
+
+    /**
+     * Pair slave @p k with the faceted master: keep the face of the last
+     * evaluation while the node projects onto it (or its extension within
+     * the edge band), else the closest projection inside a candidate face
+     * (else the closest clamped one); near a free end of the master, the
+     * end face's extension within the edge band.
+     */
+    void
+    pair_faceted(Pair &pair, const unsigned int k) const;
+
+    /**
      * Pair slave @p k with the smoothed master: the face whose smoothed
      * normal line through the node has xi in [-1, 1] (the nearest such);
      * near a free end of the master, the end face's extension within the

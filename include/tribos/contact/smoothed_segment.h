@@ -79,16 +79,14 @@ namespace tribos
      * smoothed normal line passes through @p point, in double. The
      * condition is quadratic in s = (1 + xi)/2; of its roots the one
      * nearest the segment is taken. Returns false if there is none (a
-     * point far on the concave side, where the normal lines do not reach).
-     * The result is not clamped; @p derivative gets d/dxi of the
-     * condition at the root (for the implicit derivative of xi).
+     * point far on the concave side, where the normal lines do not reach)
+     * or if the root is degenerate. The result is not clamped.
      */
     static bool
     project(const Vec3<double> &point,
             const Vec3<double> *x,
             const bool         *has,
-            double             &xi,
-            double             &derivative)
+            double             &xi)
     {
       Vec3<double> n0, n1;
       nodal_normals(x, has, n0, n1);
@@ -119,9 +117,28 @@ namespace tribos
         const double s2 = (q != 0. ? c0 / q : s1);
         s               = (std::abs(s1 - 0.5) <= std::abs(s2 - 0.5) ? s1 : s2);
       }
-      xi         = 2 * s - 1;
-      derivative = 0.5 * (c1 + 2 * c2 * s);
-      return std::isfinite(xi) && derivative != 0.;
+      xi = 2 * s - 1;
+      return std::isfinite(xi) && c1 + 2 * c2 * s != 0.;
+    }
+
+    /**
+     * d/dxi of the projection condition (x_s - xbar(xi)) x n(xi) at @p xi,
+     * for the implicit derivative of xi: -xbar_xi x n + (x_s - xbar) x
+     * n_xi with xbar_xi = (x_1 - x_0)/2, n_xi = (n_1 - n_0)/2.
+     */
+    static double
+    condition_derivative(const Vec3<double> &point,
+                         const Vec3<double> *x,
+                         const bool         *has,
+                         const double        xi)
+    {
+      Vec3<double> n0, n1;
+      nodal_normals(x, has, n0, n1);
+      const double       N0 = 0.5 * (1 - xi), N1 = 0.5 * (1 + xi);
+      const Vec3<double> xbar   = scale(N0, x[0]) + scale(N1, x[1]);
+      const Vec3<double> normal = scale(N0, n0) + scale(N1, n1);
+      return 0.5 *
+             (cross2(x[0] - x[1], normal) + cross2(point - xbar, n1 - n0));
     }
   };
 } // namespace tribos
