@@ -40,14 +40,20 @@ namespace tribos
                               update_quadrature_points | update_JxW_values);
     // F-bar: the deformation gradient at the cell centre.
     const bool    f_bar = parameters.finite_element.f_bar;
-    FEValues<dim> fe_values_centre(*fe, QGauss<dim>(1), update_gradients);
+    FEValues<dim> fe_values_centre(*fe,
+                                   QGauss<dim>(1),
+                                   update_values | update_gradients |
+                                     update_quadrature_points);
     std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
       1,
       std::vector<Tensor<1, dim>>(dim));
-    Tensor<2, dim>    F0, P_eff;
-    Tensor<4, dim>    dP_dF, dP_dF0;
-    double            J0 = 1;
-    FEFaceValues<dim> fe_face_values(*fe,
+    std::vector<dealii::Vector<double>> centre_values(1,
+                                                      dealii::Vector<double>(
+                                                        dim));
+    Tensor<2, dim>                      F0, P_eff;
+    Tensor<4, dim>                      dP_dF, dP_dF0;
+    double                              J0 = 1;
+    FEFaceValues<dim>                   fe_face_values(*fe,
                                      face_quadrature,
                                      update_values | update_quadrature_points |
                                        update_JxW_values);
@@ -79,8 +85,9 @@ namespace tribos
     const bool axisymmetric = parameters.finite_element.axisymmetric;
     std::vector<dealii::Vector<double>> values(n_q,
                                                dealii::Vector<double>(dim));
-    Tensor<2, 3>                        F3, P3, row3;
-    Tensor<4, 3>                        A3;
+    Tensor<2, 3>                        F3, P3, row3, F3_0, P3_eff, centre_row3;
+    Tensor<4, 3>                        A3, dP3_dF, dP3_dF0;
+    double                              centre_radius = 1;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
@@ -103,6 +110,18 @@ namespace tribos
         for (unsigned int c = 0; c < dim; ++c)
           F0[c] += centre_gradients[0][c];
         J0 = determinant(F0);
+        if (axisymmetric)
+        {
+          // The volume change of the centre includes its hoop stretch.
+          fe_values_centre.get_function_values(ghosted_solution, centre_values);
+          centre_radius = fe_values_centre.quadrature_point(0)[0];
+          F3_0          = 0;
+          for (unsigned int a = 0; a < 2; ++a)
+            for (unsigned int b = 0; b < 2; ++b)
+              F3_0[a][b] = F0[a][b];
+          F3_0[2][2] = 1. + centre_values[0](0) / centre_radius;
+          J0         = determinant(F3_0);
+        }
       }
       const Material<dim> &material  = *materials[cell->material_id()];
       const unsigned int   n_history = n_history_variables(cell->material_id());
@@ -130,13 +149,29 @@ namespace tribos
             for (unsigned int b = 0; b < 2; ++b)
               F3[a][b] = F[a][b];
           F3[2][2] = 1. + values[q](0) / radius;
-          axisymmetric_materials[cell->material_id()]->evaluate(F3,
+          // F-bar: the 3D volume change (hoop stretch included) of the
+          // centre replaces that of the quadrature point.
+          const double s3 = f_bar ? FBar<3>::scale(F3, J0) : 1.;
+          axisymmetric_materials[cell->material_id()]->evaluate(s3 * F3,
                                                                 old_history,
                                                                 new_history,
                                                                 P3,
                                                                 with_matrix ?
                                                                   &A3 :
                                                                   nullptr);
+          if (f_bar)
+          {
+            FBar<3>::effective(F3,
+                               F3_0,
+                               s3,
+                               P3,
+                               with_matrix ? &A3 : nullptr,
+                               P3_eff,
+                               dP3_dF,
+                               dP3_dF0);
+            P3 = P3_eff;
+            A3 = dP3_dF;
+          }
           const double JxW = fe_values.JxW(q) * 2. * numbers::PI * radius;
           if (body_force)
             body_force->vector_value(fe_values.quadrature_point(q), force);
@@ -164,6 +199,26 @@ namespace tribos
                 if (cj == 0)
                   value += row3[2][2] * fe_values.shape_value(j, q) / radius;
                 cell_matrix(i, j) += value * JxW;
+              }
+              if (f_bar)
+              {
+                // Coupling through the centre's volume change, whose
+                // virtual deformation gradient has the hoop entry too.
+                centre_row3 = grad_i[0] * dP3_dF0[ci][0] +
+                              grad_i[1] * dP3_dF0[ci][1] +
+                              hoop_i * dP3_dF0[2][2];
+                for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                {
+                  const unsigned int    cj = component[j];
+                  const Tensor<1, dim> &grad_j =
+                    fe_values_centre.shape_grad(j, 0);
+                  double value = centre_row3[cj][0] * grad_j[0] +
+                                 centre_row3[cj][1] * grad_j[1];
+                  if (cj == 0)
+                    value += centre_row3[2][2] *
+                             fe_values_centre.shape_value(j, 0) / centre_radius;
+                  cell_matrix(i, j) += value * JxW;
+                }
               }
             }
           }

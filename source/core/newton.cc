@@ -195,9 +195,12 @@ namespace tribos
     Vector              line_search_base(locally_owned_dofs, mpi_communicator);
     std::vector<double> multiplier_base;
 
-    double       reference   = 0;
-    double       step_length = std::numeric_limits<double>::quiet_NaN();
-    double       update_norm = std::numeric_limits<double>::quiet_NaN();
+    double reference   = 0;
+    double step_length = std::numeric_limits<double>::quiet_NaN();
+    double update_norm = std::numeric_limits<double>::quiet_NaN();
+    // The undamped Newton correction: a line search shortens the step
+    // taken, not the distance to the solution.
+    double       newton_norm = std::numeric_limits<double>::quiet_NaN();
     double       previous[2] = {-1, -1};
     const double nan         = std::numeric_limits<double>::quiet_NaN();
 
@@ -268,10 +271,12 @@ namespace tribos
                         p.absolute_residual_tolerance;
         const bool update_converged =
           update_norm <= p.increment_tolerance * change || change == 0;
-        // A correction at round-off level of the solution means the
+        // A Newton correction at round-off level of the solution means the
         // residual cannot get smaller in floating point: accept it
-        // (e.g. a stress-free rigid motion, whose residual is noise).
-        const bool stagnated = update_norm <= 1e-12 * change;
+        // (e.g. a stress-free rigid motion, whose residual is noise). The
+        // full correction, not the step the line search took: a step cut
+        // to 1/32 on a kink is small without the iterate being converged.
+        const bool stagnated = newton_norm <= 1e-12 * change;
         if ((residual_converged && update_converged) || stagnated)
         {
           if (n_frozen > 0)
@@ -355,7 +360,8 @@ namespace tribos
         apply_update(newton_update, 1.);
         ghosted_solution = solution;
       }
-      update_norm = step_length * displacement_norm(newton_update);
+      newton_norm = displacement_norm(newton_update);
+      update_norm = step_length * newton_norm;
     }
   }
 

@@ -272,10 +272,16 @@ namespace tribos
     std::vector<std::vector<Tensor<1, dim>>> gradients(
       quadrature.size(),
       std::vector<Tensor<1, dim>>(dim));
-    FEValues<dim> fe_values_centre(*fe, QGauss<dim>(1), update_gradients);
+    FEValues<dim>                            fe_values_centre(*fe,
+                                   QGauss<dim>(1),
+                                   update_values | update_gradients |
+                                     update_quadrature_points);
     std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
       1,
       std::vector<Tensor<1, dim>>(dim));
+    std::vector<dealii::Vector<double>> centre_values(1,
+                                                      dealii::Vector<double>(
+                                                        dim));
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
       {
@@ -295,6 +301,14 @@ namespace tribos
           for (unsigned int c = 0; c < dim; ++c)
             F0[c] += centre_gradients[0][c];
           J0 = determinant(F0);
+          if (axisymmetric)
+          {
+            // With the hoop stretch of the centre (as in assembly).
+            fe_values_centre.get_function_values(ghosted_solution,
+                                                 centre_values);
+            J0 *= 1. +
+                  centre_values[0](0) / fe_values_centre.quadrature_point(0)[0];
+          }
         }
         const auto        &material  = *materials[cell->material_id()];
         const unsigned int n_history = n_history_variables(cell->material_id());
@@ -308,7 +322,7 @@ namespace tribos
           const double *history =
             n_history ? &history_old[history_offset[index] + q * n_history] :
                         nullptr;
-          if (parameters.finite_element.f_bar)
+          if (parameters.finite_element.f_bar && !axisymmetric)
             F *= FBar<dim>::scale(F, J0);
           if (axisymmetric)
           {
@@ -318,6 +332,8 @@ namespace tribos
               for (unsigned int b = 0; b < 2; ++b)
                 F3[a][b] = F[a][b];
             F3[2][2] = 1. + values[q](0) / fe_values.quadrature_point(q)[0];
+            if (parameters.finite_element.f_bar)
+              F3 *= FBar<3>::scale(F3, J0);
             const auto &material3 =
               *axisymmetric_materials[cell->material_id()];
             average += fe_values.JxW(q) * material3.cauchy_stress(F3, history);

@@ -23,7 +23,8 @@ namespace tribos
                         "Q1 only: the F-bar element (the volume change of "
                         "each quadrature point replaced by that of the cell "
                         "centre) against locking in isochoric plastic "
-                        "flow.");
+                        "flow (axisymmetric: the 3D volume change, hoop "
+                        "stretch included).");
       prm.declare_entry("Axisymmetric",
                         "false",
                         dealii::Patterns::Bool(),
@@ -49,11 +50,6 @@ namespace tribos
         n_quadrature_points = degree + 1;
       f_bar        = prm.get_bool("F-bar");
       axisymmetric = prm.get_bool("Axisymmetric");
-      AssertThrow(!(f_bar && axisymmetric),
-                  dealii::ExcMessage("Parameter <Finite element/F-bar> = "
-                                     "true is not available with "
-                                     "Axisymmetric = true; use Polynomial "
-                                     "degree = 2 against locking."));
       AssertThrow(!f_bar || degree == 1,
                   dealii::ExcMessage("Parameter <Finite element/F-bar> = "
                                      "true needs Polynomial degree = 1."));
