@@ -62,6 +62,8 @@ expect contact_zero_penalty "Contact/Penalty factor" "$tribos" "$contact" \
   --set "Contact/Penalty factor=0*E"
 expect contact_negative_penalty "Contact/Penalty factor" "$tribos" "$contact" \
   --set "Contact/Penalty factor=-5"
+expect contact_complementarity "Friction complementarity parameter" \
+  "$tribos" "$contact" --set "Contact/Friction complementarity parameter=abc"
 expect contact_bad_motion "cannot parse the motion" "$tribos" "$contact" \
   --set "Contact/Rigid surfaces=plane : plane : 0, 0, 0 : 0, 1, 0 : 0, sin(" 
 expect contact_bad_surface_type "unknown type <cone>" "$tribos" "$contact" \

@@ -18,8 +18,12 @@ sane physics:
   mode (> 1e6 x the size of the block) and increments are cut;
 * very high penalty (1e4 E, 1e6 E) on Hertz 2D: converges, a and p0
   within 3 %;
-* frictional upsetting (mu = 0.5, 8 of the 25 steps), penalty and
-  Lagrange: completes;
+* frictional upsetting (mu = 0.5, F-bar): the 3D 1/8 model's first 8 of
+  25 steps complete with both methods, and its plate force (times 4)
+  agrees with the axisymmetric model within 2 %; the axisymmetric model
+  (16 x 8 cells) completes the whole stroke (79 % compression of the half
+  height, the side surface folded onto the plate) with both methods, whose
+  final forces agree within 2 %;
 * ironing (parameters/ironing.prm, smoothed master), penalty and
   Lagrange: the full 1 mm press and the first 0.6 mm of sliding complete
   (past the 0.44 mm where the faceted master stops), with an apparent
@@ -139,17 +143,48 @@ for factor in ("1e4", "1e6"):
              100 * abs(p0_h - p0) / p0))
 
 # Frictional upsetting, first 8 steps, both methods (top and side are one
-# slave surface, so the rim nodes carry one multiplier each).
+# slave surface, so the rim nodes carry one multiplier each), against the
+# axisymmetric model of the same file's physics.
+axisymmetric = ["Finite element/F-bar=true", "Contact/Friction coefficient=0.5",
+                "Contact/Pairs=3, 4 : plate",
+                "Contact/Tangential penalty factor=10*E",
+                "Output/Write VTU=false"]
+folder = out + "/upsetting_axisymmetric_t8"
+run(tribos, prm("cylinder_compression_axisymmetric"), folder, axisymmetric + [
+    "Time stepping/End time=8", "Time stepping/Number of steps=8"])
+reference = read_csv(folder + "/history.csv")[-1]["pair0_normal_force"]
 for method, sets in (("penalty", []), ("lagrange", LM)):
     folder = out + "/upsetting_" + method
     run(tribos, prm("upsetting"), folder, sets + [
         "Time stepping/End time=8", "Time stepping/Number of steps=8",
         "Output/Write VTU=false"])
     h = read_csv(folder + "/history.csv")
-    check(h[-1]["step"] == 8 and h[-1]["time"] > 7.999,
+    force = 4 * h[-1]["pair0_normal_force"]
+    check(h[-1]["step"] == 8 and h[-1]["time"] > 7.999 and
+          abs(force - reference) < 0.02 * reference,
           "upsetting mu = 0.5, %s: 8 steps (%d Newton iterations, %d cut "
-          "increments)" % (method, sum(r["newton_iterations"] for r in h),
-                           sum(1 for r in h if r["cutbacks"] > 0)))
+          "increments); plate force 4 x %.3f = %.2f vs axisymmetric %.2f "
+          "(%.2f %%)" % (method, sum(r["newton_iterations"] for r in h),
+                         sum(1 for r in h if r["cutbacks"] > 0), force / 4,
+                         force, reference,
+                         100 * abs(force - reference) / reference))
+
+# The whole stroke, axisymmetric, both methods.
+final = {}
+for method, sets in (("penalty", []), ("lagrange", LM)):
+    folder = out + "/upsetting_axisymmetric_" + method
+    run(tribos, prm("cylinder_compression_axisymmetric"), folder,
+        axisymmetric + sets + [
+            "Scene/Cylinder compression/Radial refinements=3",
+            "Scene/Cylinder compression/Axial cells=8"])
+    h = read_csv(folder + "/history.csv")
+    final[method] = h[-1]["pair0_normal_force"]
+    check(h[-1]["time"] > 24.999,
+          "upsetting mu = 0.5, axisymmetric, %s: the whole stroke in %d "
+          "increments, plate force %.1f" % (method, len(h), final[method]))
+check(abs(final["penalty"] - final["lagrange"]) < 0.02 * final["lagrange"],
+      "upsetting mu = 0.5, axisymmetric: penalty vs Lagrange %.2f %%"
+      % (100 * abs(final["penalty"] - final["lagrange"]) / final["lagrange"]))
 
 # Ironing: press and the first 0.6 mm of sliding (past the 0.44 mm where
 # the faceted master stopped), both methods.

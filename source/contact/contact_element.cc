@@ -130,9 +130,12 @@ namespace tribos
      * every evaluation, so the active set is updated inside Newton, and the
      * derivative of C is the generalized Jacobian on each branch. The slip
      * branch couples T to the normal multiplier non-symmetrically, as in
-     * the paper's (22) and (35). c = eps_N and c_T = eps_T change the
+     * the paper's (22) and (35). c = eps_N and c_T (Contact/Friction
+     * complementarity parameter, by default E / h of the node) change the
      * iterates (which branch a node takes) and the row scaling only, never
-     * the converged solution.
+     * the converged solution. c_T must not be much stiffer than the body:
+     * with c_T = 1000 E a slip of 1e-6 h already decides the branch, and
+     * the iteration cycled between stick and slip on the 3D upsetting.
      */
     template <typename Number>
     void

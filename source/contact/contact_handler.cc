@@ -91,6 +91,7 @@ namespace tribos
       else
         pair.rigid = rigid_surfaces.at(description.rigid_surface);
 
+      pair.youngs_modulus           = E;
       pair.law.normal_penalty       = description.normal_penalty.resolve(E);
       pair.law.tangential_penalty   = description.tangential_penalty.resolve(E);
       pair.law.friction_coefficient = description.friction_coefficient;
@@ -544,10 +545,19 @@ namespace tribos
           }
           continue;
         }
-        const SlaveHistory &history  = pair.history[k];
-        ContactLaw          law      = pair.law;
-        law.multiplier               = pair.multipliers[k];
-        law.frozen_closed            = k < pair.frozen.size() && pair.frozen[k];
+        const SlaveHistory &history = pair.history[k];
+        ContactLaw          law     = pair.law;
+        law.multiplier              = pair.multipliers[k];
+        law.frozen_closed           = k < pair.frozen.size() && pair.frozen[k];
+        if (pair.lagrange)
+        {
+          // The semismooth stick/slip parameter c_T: on the scale of the
+          // body's stiffness E / h unless given.
+          const auto &c_T = parameters.friction_complementarity;
+          law.tangential_penalty =
+            c_T.given ? c_T.resolve(pair.youngs_modulus) :
+                        pair.youngs_modulus / pair.slave->nodes()[k].size;
+        }
         const Vec3<double> &previous = history.active ? history.traction : zero;
         const Vec3<double> &x        = pair.slave_positions[k];
         const Vec3<double> *lambda =
@@ -863,8 +873,7 @@ namespace tribos
         for (unsigned int k = 0; k < pair.owned.size(); ++k)
           if (pair.owned[k] && pair.results[k].status != ContactStatus::open)
           {
-            const double area = pair.slave->nodes()[k].area;
-            const double size = (dim == 2 ? area : std::sqrt(area));
+            const double size = pair.slave->nodes()[k].size;
             // Closed nodes must touch: a gap of either sign is a
             // violation (a positive one means the warm-started multiplier
             // of an unloading node is too large).

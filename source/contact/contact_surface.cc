@@ -97,9 +97,15 @@ namespace tribos
         const double weight = quadrature.weight(q) * (dim == 2 ? 2. : 4.);
         const double ring   = axisymmetric ? 2 * numbers::PI * xbar[0] : 1.;
         for (unsigned int v = 0; v < n_face_nodes; ++v)
+        {
           node_list[face.nodes[v]].area += N[v] * jacobian * weight * ring;
+          node_list[face.nodes[v]].size += N[v] * jacobian * weight;
+        }
       }
     }
+    if (dim == 3)
+      for (auto &node : node_list)
+        node.size = std::sqrt(node.size);
 
     // Local node numbers along each edge: 2D ends; 3D edges of xi_1 = -+1
     // (nodes 0,2 / 1,3) and xi_2 = -+1 (nodes 0,1 / 2,3).

@@ -84,6 +84,17 @@ namespace tribos
                         dealii::Patterns::Anything(),
                         "Tangential penalty eps_T (stick stiffness), same "
                         "syntax; empty means equal to the normal penalty.");
+      prm.declare_entry(
+        "Friction complementarity parameter",
+        "",
+        dealii::Patterns::Anything(),
+        "Lagrange multipliers only: c_T of the semismooth stick/slip "
+        "decision |T + c_T dg_T| <= mu t_N (a solver parameter: it changes "
+        "the iterates, never the converged solution). Same syntax as the "
+        "penalties; empty means E / h of each slave node (h its tributary "
+        "length), the scale of the body's stiffness. Much larger values "
+        "(e.g. 1000*E) let tiny slips flip the stick/slip state and can "
+        "make Newton cycle on 3D frictional contact.");
       prm.declare_entry("Friction coefficient",
                         "0",
                         dealii::Patterns::Double(0),
@@ -191,6 +202,9 @@ namespace tribos
       if (!default_tangential.given)
         default_tangential = default_normal;
       const double default_mu = prm.get_double("Friction coefficient");
+      friction_complementarity =
+        PenaltyValue::parse(prm.get("Friction complementarity parameter"),
+                            "Contact/Friction complementarity parameter");
 
       rigid_surfaces.clear();
       const std::string rigid_entry = "Contact/Rigid surfaces";

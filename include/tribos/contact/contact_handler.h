@@ -221,8 +221,10 @@ namespace tribos
       std::shared_ptr<ContactSurface<dim>> master;
       std::shared_ptr<RigidSurface<dim>>   rigid;
       ContactLaw                           law;
-      double                               area_factor = 1;
-      ContactSearch<dim>                   search;
+      /** The smaller Young's modulus of the pair. */
+      double             youngs_modulus = 0;
+      double             area_factor    = 1;
+      ContactSearch<dim> search;
 
       std::vector<bool> owned;
       /** Status at the last tracked evaluation and changes in the

@@ -37,6 +37,9 @@ namespace tribos
       /** Tributary area (24): integral of the face shape function of the
        * node over the surface, in the reference configuration. */
       double area = 0;
+      /** Tributary length: the area without the ring factor 2 pi r
+       * (2D) or its square root (3D); the element size at the node. */
+      double size = 0;
       /** Faces this node belongs to. */
       std::vector<unsigned int> faces;
     };

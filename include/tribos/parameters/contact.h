@@ -91,6 +91,11 @@ namespace tribos
       unsigned int chattering_flips;
       /** freeze, cutback or none. */
       std::string chattering_remedy;
+      /**
+       * Lagrange multipliers: the semismooth stick/slip parameter c_T; not
+       * given: E / h of each slave node.
+       */
+      PenaltyValue friction_complementarity;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
