@@ -2,16 +2,13 @@
 #include <tribos/core/problem.h>
 
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <map>
 
 namespace tribos
 {
@@ -165,17 +162,6 @@ namespace tribos
         if (!homogeneous_constraints.is_constrained(i))
         {
           const double fd = -(plus[i] - free_residual[i]) / (2 * h);
-          if (std::getenv("TRIBOS_DEBUG") &&
-              std::abs(column[i] - fd) > 1e-2 * std::max(1., std::abs(fd)))
-          {
-            std::map<types::global_dof_index, Point<dim>> points;
-            DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
-                                                 dof_handler,
-                                                 points);
-            pcout << "    DEBUGTC K[" << i << "," << j << "] = " << column[i]
-                  << " fd " << fd << " at " << points[i] << " / " << points[j]
-                  << std::endl;
-          }
           error += (column[i] - fd) * (column[i] - fd);
           size += column[i] * column[i];
         }
