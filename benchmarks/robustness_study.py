@@ -31,7 +31,7 @@ CASES = [
     ("force control, initially apart", "force_control_apart", []),
     ("upsetting mu = 0.5", "upsetting", []),
     ("upsetting mu = 0.2", "upsetting", ["Contact/Friction coefficient=0.2"]),
-    ("upsetting mu = 0.5, axisymmetric 16 x 8", "cylinder_compression_axisymmetric",
+    ("upsetting mu = 0.5, axisymmetric 8 x 8", "cylinder_compression_axisymmetric",
      ["Finite element/F-bar=true", "Contact/Friction coefficient=0.5",
       "Contact/Pairs=3, 4 : plate", "Contact/Tangential penalty factor=10*E",
       "Scene/Cylinder compression/Radial refinements=3",

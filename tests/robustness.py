@@ -21,7 +21,7 @@ sane physics:
 * frictional upsetting (mu = 0.5, F-bar): the 3D 1/8 model's first 8 of
   25 steps complete with both methods, and its plate force (times 4)
   agrees with the axisymmetric model within 2 %; the axisymmetric model
-  (16 x 8 cells) completes the whole stroke (79 % compression of the half
+  (8 x 8 cells) completes the whole stroke (79 % compression of the half
   height, the side surface folded onto the plate) with both methods, whose
   final forces agree within 2 %;
 * ironing (parameters/ironing.prm, smoothed master), penalty and
