@@ -339,11 +339,32 @@ namespace tribos
       throw InvertedElement(
         "J2 plasticity: det F = " + to_scientific(determinant(F_in)) +
         " <= 0 at a quadrature point");
+    if (tangent == nullptr)
+    {
+      // Residual only (line search, reactions): the same return map in
+      // plain doubles, without carrying empty derivatives.
+      Mat3<double> F = identity<double>();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          F[i][j] = F_in[i][j];
+      Mat3<double> tau;
+      return_map(F,
+                 old_history,
+                 bulk_modulus,
+                 shear_modulus,
+                 hardening,
+                 tau,
+                 new_history);
+      const Mat3<double> P_full = tau * transpose(inverse(F));
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          P[i][j] = P_full[i][j];
+      return;
+    }
     Mat3<AD> F = identity<AD>();
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
-        F[i][j] = (tangent != nullptr ? AD(dim * dim, i * dim + j, F_in[i][j]) :
-                                        AD(F_in[i][j]));
+        F[i][j] = AD(dim * dim, i * dim + j, F_in[i][j]);
     Mat3<AD> tau;
     return_map(F,
                old_history,
@@ -357,10 +378,9 @@ namespace tribos
       for (unsigned int j = 0; j < dim; ++j)
       {
         P[i][j] = P_full[i][j].val();
-        if (tangent != nullptr)
-          for (unsigned int k = 0; k < dim; ++k)
-            for (unsigned int l = 0; l < dim; ++l)
-              (*tangent)[i][j][k][l] = P_full[i][j].dx(k * dim + l);
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = 0; l < dim; ++l)
+            (*tangent)[i][j][k][l] = P_full[i][j].dx(k * dim + l);
       }
   }
 
