@@ -27,6 +27,61 @@ struct Tally
 
 
 
+/**
+ * Compares the tangent @p K (and the `paper` tangent @p Kp, if given) of
+ * an element with @p n dofs, assembled at the dof vector 0 where the
+ * status is @p status, with central differences of @p residual. That
+ * functor writes R at a perturbed dof vector and returns whether the
+ * evaluation is comparable (same status, a valid projection); if not, a
+ * kink lies within +-h, there is no derivative to compare, and the sample
+ * is skipped (returns false). Otherwise the sample is counted in @p tally
+ * and @p ok is cleared above a relative error of 1e-6.
+ */
+template <typename Residual>
+bool
+compare_with_differences(const unsigned int         n,
+                         const ContactStatus        status,
+                         const std::vector<double> &K,
+                         const std::vector<double> *Kp,
+                         const Residual            &residual,
+                         Tally                     &tally,
+                         bool                      &ok)
+{
+  const double        h     = 1e-7;
+  double              error = 0, size = 0, paper = 0;
+  std::vector<double> Rp(n), Rm(n);
+  for (unsigned int j = 0; j < n; ++j)
+  {
+    std::vector<double> plus(n, 0.), minus(n, 0.);
+    plus[j] += h;
+    minus[j] -= h;
+    if (!residual(plus, Rp.data()) || !residual(minus, Rm.data()))
+      return false;
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      const double fd = (Rp[i] - Rm[i]) / (2 * h);
+      error += std::pow(K[i * n + j] - fd, 2);
+      if (Kp)
+        paper += std::pow((*Kp)[i * n + j] - fd, 2);
+      size += std::pow(K[i * n + j], 2);
+    }
+  }
+  ++tally.n[int(status)];
+  if (size > 0)
+  {
+    const double relative = std::sqrt(error / size);
+    tally.worst           = std::max(tally.worst, relative);
+    tally.paper_error = std::max(tally.paper_error, std::sqrt(paper / size));
+    if (relative > 1e-6)
+      ok = false;
+  }
+  else if (status != ContactStatus::open)
+    ok = false;
+  return true;
+}
+
+
+
 template <int dim>
 void
 check_segment(std::mt19937 &random, Tally &tally, bool &ok)
@@ -97,7 +152,7 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
                                nullptr);
     };
 
-    std::vector<double> zero(n, 0.), R(n), K(n * n), Kp(n * n);
+    std::vector<double> R(n), K(n * n), Kp(n * n);
     const Projection    p      = project<dim>(slave, master);
     const auto          result = Element::evaluate(slave,
                                           master,
@@ -122,40 +177,17 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
                       R.data(),
                       Kp.data());
 
-    const double h     = 1e-7;
-    double       error = 0, size = 0, paper = 0;
-    bool         kink = false;
-    for (unsigned int j = 0; j < n; ++j)
-    {
-      std::vector<double> plus = zero, minus = zero, Rp(n), Rm(n);
-      plus[j] += h;
-      minus[j] -= h;
-      const auto rp = residual(plus, Rp.data());
-      const auto rm = residual(minus, Rm.data());
-      kink = kink || rp.status != result.status || rm.status != result.status;
-      for (unsigned int i = 0; i < n; ++i)
-      {
-        const double fd = (Rp[i] - Rm[i]) / (2 * h);
-        error += std::pow(K[i * n + j] - fd, 2);
-        paper += std::pow(Kp[i * n + j] - fd, 2);
-        size += std::pow(K[i * n + j], 2);
-      }
-    }
-    if (kink)
-      continue; // a status change within +-h: no derivative to compare
-    ++tally.n[int(result.status)];
-    if (!p.inside() && result.status != ContactStatus::open)
+    const bool compared = compare_with_differences(
+      n,
+      result.status,
+      K,
+      &Kp,
+      [&](const std::vector<double> &x, double *R_x)
+      { return residual(x, R_x).status == result.status; },
+      tally,
+      ok);
+    if (compared && !p.inside() && result.status != ContactStatus::open)
       ++tally.n_clamped;
-    if (size > 0)
-    {
-      const double relative = std::sqrt(error / size);
-      tally.worst           = std::max(tally.worst, relative);
-      tally.paper_error = std::max(tally.paper_error, std::sqrt(paper / size));
-      if (relative > 1e-6)
-        ok = false;
-    }
-    else if (result.status != ContactStatus::open)
-      ok = false;
   }
 }
 
@@ -247,40 +279,20 @@ check_smoothed(std::mt19937 &random, Tally &tally, bool &ok)
       continue;
     evaluate(zero, R.data(), Kp.data(), false, projected);
 
-    const double h     = 1e-7;
-    double       error = 0, size = 0, paper = 0;
-    bool         kink = false;
-    for (unsigned int j = 0; j < n; ++j)
-    {
-      std::vector<double> plus = zero, minus = zero, Rp(n), Rm(n);
-      plus[j] += h;
-      minus[j] -= h;
-      bool       inside_p, inside_m;
-      const auto rp = evaluate(plus, Rp.data(), nullptr, true, inside_p);
-      const auto rm = evaluate(minus, Rm.data(), nullptr, true, inside_m);
-      kink = kink || rp.status != result.status || rm.status != result.status ||
-             !inside_p || !inside_m;
-      for (unsigned int i = 0; i < n; ++i)
+    compare_with_differences(
+      n,
+      result.status,
+      K,
+      &Kp,
+      [&](const std::vector<double> &x, double *R_x)
       {
-        const double fd = (Rp[i] - Rm[i]) / (2 * h);
-        error += std::pow(K[i * n + j] - fd, 2);
-        paper += std::pow(Kp[i * n + j] - fd, 2);
-        size += std::pow(K[i * n + j], 2);
-      }
-    }
-    if (kink)
-      continue;
-    ++tally.n[int(result.status)];
-    if (size > 0)
-    {
-      const double relative = std::sqrt(error / size);
-      tally.worst           = std::max(tally.worst, relative);
-      tally.paper_error = std::max(tally.paper_error, std::sqrt(paper / size));
-      if (relative > 1e-6)
-        ok = false;
-    }
-    else if (result.status != ContactStatus::open)
-      ok = false;
+        bool inside;
+        return evaluate(x, R_x, nullptr, true, inside).status ==
+                 result.status &&
+               inside;
+      },
+      tally,
+      ok);
   }
 }
 
@@ -325,64 +337,36 @@ check_rigid(const std::string &type,
     law.tangential_penalty   = 1e3;
     law.friction_coefficient = 0.2;
 
-    double       R[dim], K[dim * dim], Rp[dim], Rm[dim];
-    const auto   result = NodeToRigid<dim>::evaluate(slave,
-                                                   surface,
-                                                   shift,
-                                                   shift_old,
-                                                   slave_old,
-                                                   traction,
-                                                   law,
-                                                   1.3,
-                                                   true,
-                                                   R,
-                                                   K);
-    const double h      = 1e-7;
-    double       error = 0, size = 0;
-    bool         kink = false;
-    for (unsigned int j = 0; j < dim; ++j)
+    const auto evaluate = [&](const Vec3<double> &x, double *R, double *K)
     {
-      Vec3<double> plus = slave, minus = slave;
-      plus[j] += h;
-      minus[j] -= h;
-      kink = kink || NodeToRigid<dim>::evaluate(plus,
-                                                surface,
-                                                shift,
-                                                shift_old,
-                                                slave_old,
-                                                traction,
-                                                law,
-                                                1.3,
-                                                true,
-                                                Rp,
-                                                nullptr)
-                         .status != result.status;
-      kink = kink || NodeToRigid<dim>::evaluate(minus,
-                                                surface,
-                                                shift,
-                                                shift_old,
-                                                slave_old,
-                                                traction,
-                                                law,
-                                                1.3,
-                                                true,
-                                                Rm,
-                                                nullptr)
-                         .status != result.status;
-      for (unsigned int i = 0; i < dim; ++i)
+      return NodeToRigid<dim>::evaluate(x,
+                                        surface,
+                                        shift,
+                                        shift_old,
+                                        slave_old,
+                                        traction,
+                                        law,
+                                        1.3,
+                                        true,
+                                        R,
+                                        K);
+    };
+    std::vector<double> R(dim), K(dim * dim);
+    const auto          result = evaluate(slave, R.data(), K.data());
+    compare_with_differences(
+      dim,
+      result.status,
+      K,
+      nullptr,
+      [&](const std::vector<double> &x, double *R_x)
       {
-        const double fd = (Rp[i] - Rm[i]) / (2 * h);
-        error += std::pow(K[i * dim + j] - fd, 2);
-        size += std::pow(K[i * dim + j], 2);
-      }
-    }
-    if (kink)
-      continue;
-    ++tally.n[int(result.status)];
-    const double relative = size > 0 ? std::sqrt(error / size) : 1.;
-    tally.worst           = std::max(tally.worst, relative);
-    if (relative > 1e-6)
-      ok = false;
+        Vec3<double> moved = slave;
+        for (unsigned int d = 0; d < dim; ++d)
+          moved[d] += x[d];
+        return evaluate(moved, R_x, nullptr).status == result.status;
+      },
+      tally,
+      ok);
   }
 }
 

@@ -598,13 +598,12 @@ namespace tribos
         {
           const auto  &faces = pair.master->faces();
           const int    face  = pair.pairing[k].face;
-          Vec3<double> xm[4];
+          Vec3<double> xm[4], xm_old[4];
           for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-            xm[v] = pair.master_positions[faces[face].nodes[v]];
-
-          Vec3<double> xm_old[4];
-          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+          {
+            xm[v]     = pair.master_positions[faces[face].nodes[v]];
             xm_old[v] = pair.old_master_positions[faces[face].nodes[v]];
+          }
           pair.results[k] =
             NodeToSegment<dim>::evaluate(x,
                                          xm,

@@ -4,6 +4,7 @@
 #include <Sacado.hpp>
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 namespace tribos
 {
@@ -205,6 +206,26 @@ namespace tribos
   namespace
   {
     /**
+     * @p F_in (dim x dim) as a 3x3 matrix of numbers @p N; as AD numbers its
+     * dim x dim entries are the independent variables of the tangent.
+     */
+    template <typename N, int dim>
+    Mat3<N>
+    embed(const Tensor<2, dim> &F_in)
+    {
+      Mat3<N> F = identity<N>();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          if constexpr (std::is_same_v<N, AD>)
+            F[i][j] = AD(dim * dim, i * dim + j, F_in[i][j]);
+          else
+            F[i][j] = F_in[i][j];
+      return F;
+    }
+
+
+
+    /**
      * The return map at deformation gradient @p F (3x3) from the history
      * @p old: Kirchhoff stress @p tau, and (values) the new history.
      */
@@ -339,15 +360,10 @@ namespace tribos
       throw InvertedElement(
         "J2 plasticity: det F = " + to_scientific(determinant(F_in)) +
         " <= 0 at a quadrature point");
-    if (tangent == nullptr)
+    // P = tau F^-T of the return map, in the number type of F.
+    const auto first_piola = [&](const auto &F)
     {
-      // Residual only (line search, reactions): the same return map in
-      // plain doubles, without carrying empty derivatives.
-      Mat3<double> F = identity<double>();
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          F[i][j] = F_in[i][j];
-      Mat3<double> tau;
+      std::decay_t<decltype(F)> tau;
       return_map(F,
                  old_history,
                  bulk_modulus,
@@ -355,25 +371,19 @@ namespace tribos
                  hardening,
                  tau,
                  new_history);
-      const Mat3<double> P_full = tau * transpose(inverse(F));
+      return tau * transpose(inverse(F));
+    };
+    if (tangent == nullptr)
+    {
+      // Residual only (line search, reactions): plain doubles, without
+      // carrying empty derivatives.
+      const Mat3<double> P_full = first_piola(embed<double>(F_in));
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           P[i][j] = P_full[i][j];
       return;
     }
-    Mat3<AD> F = identity<AD>();
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        F[i][j] = AD(dim * dim, i * dim + j, F_in[i][j]);
-    Mat3<AD> tau;
-    return_map(F,
-               old_history,
-               bulk_modulus,
-               shear_modulus,
-               hardening,
-               tau,
-               new_history);
-    const Mat3<AD> P_full = tau * transpose(inverse(F));
+    const Mat3<AD> P_full = first_piola(embed<AD>(F_in));
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
       {
@@ -391,11 +401,8 @@ namespace tribos
   J2Plasticity<dim>::cauchy_stress(const Tensor<2, dim> &F_in,
                                    const double         *history) const
   {
-    Mat3<double> F = identity<double>();
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        F[i][j] = F_in[i][j];
-    Mat3<double> tau;
+    const Mat3<double> F = embed<double>(F_in);
+    Mat3<double>       tau;
     return_map(F,
                history,
                bulk_modulus,
