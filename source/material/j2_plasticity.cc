@@ -1,6 +1,8 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/material/j2_plasticity.h>
 
+#include <deal.II/base/symmetric_tensor.h>
+
 #include <Sacado.hpp>
 #include <array>
 #include <cmath>
@@ -100,88 +102,123 @@ namespace tribos
       return B;
     }
 
+    /**
+     * Eigenvalues and orthonormal eigenvectors (columns of @p Q) of the
+     * values of a symmetric matrix; Jacobi rotations for their accuracy
+     * near repeated eigenvalues.
+     */
     template <typename N>
-    double
-    norm_value(const Mat3<N> &A)
+    std::array<double, 3>
+    spectral_values(const Mat3<N> &A, Mat3<double> &Q)
     {
-      double sum = 0;
+      SymmetricTensor<2, 3> S;
       for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          sum += value(A[i][j]) * value(A[i][j]);
-      return std::sqrt(sum);
+        for (unsigned int j = i; j < 3; ++j)
+          S[i][j] = 0.5 * (value(A[i][j]) + value(A[j][i]));
+      const auto pairs =
+        eigenvectors(S, SymmetricTensorEigenvectorMethod::jacobi);
+      std::array<double, 3> lambda;
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        lambda[k] = pairs[k].first;
+        for (unsigned int i = 0; i < 3; ++i)
+          Q[i][k] = pairs[k].second[i];
+      }
+      return lambda;
     }
 
-    /** Square root of an SPD matrix: Denman-Beavers iteration. */
-    template <typename N>
-    Mat3<N>
-    sqrt_spd(const Mat3<N> &M)
+    /** Q diag(f) Q^T, or Q (theta o D) Q^T for a full matrix of weights. */
+    Mat3<double>
+    spectral_sum(const Mat3<double> &Q, const Mat3<double> &weights)
     {
-      Mat3<N> Y = M, Z = identity<N>();
-      for (unsigned int k = 0; k < 60; ++k)
-      {
-        const Mat3<N> Y_next = combine<N, double>(0.5, Y, 0.5, inverse(Z));
-        const Mat3<N> Z_next = combine<N, double>(0.5, Z, 0.5, inverse(Y));
-        const double  change =
-          norm_value(combine<N, double>(1., Y_next, -1., Y));
-        Y = Y_next;
-        Z = Z_next;
-        if (change < 1e-16 * norm_value(Y))
-          break;
-      }
-      return Y;
+      return Q * weights * transpose(Q);
     }
 
     /**
-     * Logarithm of an SPD matrix by inverse scaling and squaring: square
-     * roots until M is close to I, then the series of ln(I + X).
+     * (ln a - ln b) / (a - b), ln'(a) = 1/a when a = b: the weight of the
+     * (i, j) eigenvector pair in the derivative of the matrix logarithm
+     * (Daleckii-Krein). With x = (a - b)/b it is log1p(x)/(x b), exact to
+     * round-off however close a and b are.
+     */
+    double
+    log_divided_difference(const double a, const double b)
+    {
+      const double x = (a - b) / b;
+      if (std::abs(x) < 1e-8)
+        return (1. - x / 2. + x * x / 3.) / b;
+      return std::log1p(x) / (x * b);
+    }
+
+    /**
+     * Logarithm of an SPD matrix from its spectral decomposition,
+     * ln M = sum ln(lambda_i) n_i n_i^T. For AD numbers each derivative
+     * direction dM maps to Q (theta o Q^T dM Q) Q^T with the divided
+     * differences theta_ij of ln: the exact derivative, at the cost of a
+     * few 3x3 products per direction instead of AD through an iterative
+     * algorithm.
      */
     template <typename N>
     Mat3<N>
-    log_spd(Mat3<N> M)
+    log_spd(const Mat3<N> &M)
     {
-      const Mat3<N> I       = identity<N>();
-      unsigned int  n_roots = 0;
-      while (norm_value(combine<N, double>(1., M, -1., I)) > 0.1 &&
-             n_roots < 30)
+      Mat3<double>                Q;
+      const std::array<double, 3> lambda = spectral_values(M, Q);
+      for (const double l : lambda)
+        if (!(l > 0))
+          throw InvertedElement("J2 plasticity: elastic left Cauchy-Green "
+                                "tensor with eigenvalue " +
+                                to_scientific(l) + " <= 0");
+      Mat3<double> log_lambda = identity<double>();
+      for (unsigned int i = 0; i < 3; ++i)
+        log_lambda[i][i] = std::log(lambda[i]);
+      const Mat3<double> L = spectral_sum(Q, log_lambda);
+
+      Mat3<N> result;
+      if constexpr (std::is_same_v<N, double>)
+        result = L;
+      else
       {
-        M = sqrt_spd(M);
-        ++n_roots;
+        Mat3<double> theta;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            theta[i][j] = log_divided_difference(lambda[i], lambda[j]);
+        int n_derivatives = 0;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            n_derivatives = std::max(n_derivatives, M[i][j].size());
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            result[i][j] = N(n_derivatives, L[i][j]);
+        const Mat3<double> Q_t = transpose(Q);
+        for (int k = 0; k < n_derivatives; ++k)
+        {
+          Mat3<double> dM;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              dM[i][j] = M[i][j].dx(k);
+          Mat3<double> D = Q_t * dM * Q;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              D[i][j] *= theta[i][j];
+          const Mat3<double> dL = spectral_sum(Q, D);
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              result[i][j].fastAccessDx(k) = dL[i][j];
+        }
       }
-      const Mat3<N> X    = combine<N, double>(1., M, -1., I);
-      Mat3<N>       sum  = combine<N, double>(0., X, 0., X);
-      Mat3<N>       term = X;
-      for (unsigned int k = 1; k < 80; ++k)
-      {
-        const double sign = (k % 2 == 1 ? 1. : -1.);
-        sum               = combine<N, double>(1., sum, sign / k, term);
-        if (norm_value(term) / k < 1e-18 * (1 + norm_value(sum)))
-          break;
-        term = term * X;
-      }
-      return combine<N, double>(std::pow(2., n_roots), sum, 0., sum);
+      return result;
     }
 
-    /** Exponential of a symmetric matrix (values only): scaling, squaring. */
+    /** Exponential of a symmetric matrix (values), spectrally. */
     Mat3<double>
     exp_sym(const Mat3<double> &A)
     {
-      unsigned int n_squarings = 0;
-      double       scale       = 1;
-      while (norm_value(A) * scale > 0.5)
-      {
-        scale *= 0.5;
-        ++n_squarings;
-      }
-      const Mat3<double> X   = combine<double, double>(scale, A, 0., A);
-      Mat3<double>       sum = identity<double>(), term = identity<double>();
-      for (unsigned int k = 1; k < 30; ++k)
-      {
-        term = combine<double, double>(1. / k, term * X, 0., X);
-        sum  = combine<double, double>(1., sum, 1., term);
-      }
-      for (unsigned int k = 0; k < n_squarings; ++k)
-        sum = sum * sum;
-      return sum;
+      Mat3<double>                Q;
+      const std::array<double, 3> mu          = spectral_values(A, Q);
+      Mat3<double>                exponential = identity<double>();
+      for (unsigned int i = 0; i < 3; ++i)
+        exponential[i][i] = std::exp(mu[i]);
+      return spectral_sum(Q, exponential);
     }
 
     /** The six independent entries of a symmetric matrix and back. */
