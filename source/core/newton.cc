@@ -20,10 +20,15 @@ namespace tribos
     const auto        &p = parameters.linear_solver;
     if (p.type == "direct")
     {
-      SolverControl                  control(1, 0);
+      // KLU's left-looking LU costs least for small systems; the
+      // multifrontal MUMPS wins once fill-in dominates (doc/benchmarks.md).
+      const std::string name = (p.direct_solver != "auto" ? p.direct_solver :
+                                system_matrix.m() > 5000  ? "Amesos_Mumps" :
+                                                            "Amesos_Klu");
+      SolverControl     control(1, 0);
       TrilinosWrappers::SolverDirect solver(
         control,
-        TrilinosWrappers::SolverDirect::AdditionalData(false, p.direct_solver));
+        TrilinosWrappers::SolverDirect::AdditionalData(false, name));
       try
       {
         solver.solve(system_matrix, newton_update, system_rhs);
@@ -32,7 +37,7 @@ namespace tribos
       {
         // A singular matrix (e.g. an unsupported body, or a degenerate
         // active set) fails this increment; the load stepping cuts back.
-        throw NonConvergence("the direct solver " + p.direct_solver +
+        throw NonConvergence("the direct solver " + name +
                              " failed (singular system?)");
       }
     }

@@ -13,11 +13,15 @@ namespace tribos
                         dealii::Patterns::Selection("direct|iterative"),
                         "direct: sparse LU (Amesos); iterative: GMRES "
                         "preconditioned by algebraic multigrid (ML).");
-      prm.declare_entry("Direct solver",
-                        "Amesos_Klu",
-                        dealii::Patterns::Selection(
-                          "Amesos_Klu|Amesos_Mumps|Amesos_Lapack"),
-                        "Trilinos Amesos package used when Type = direct.");
+      prm.declare_entry(
+        "Direct solver",
+        "auto",
+        dealii::Patterns::Selection(
+          "auto|Amesos_Klu|Amesos_Mumps|Amesos_Lapack"),
+        "Trilinos Amesos package used when Type = direct. auto: KLU for "
+        "systems of up to 5000 unknowns (less overhead per factorization), "
+        "the multifrontal MUMPS above (less fill-in: 3-6 times faster from "
+        "6000 unknowns in 3D, benchmarks/direct_solvers.py).");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         dealii::Patterns::Double(0),
