@@ -23,7 +23,10 @@ sane physics:
   agrees with the axisymmetric model within 2 %; the axisymmetric model
   (8 x 8 cells) completes the whole stroke (79 % compression of the half
   height, the side surface folded onto the plate) with both methods, whose
-  final forces agree within 2 %;
+  final forces agree within 2 %; with the split-corner mesh the 3D model
+  (first 8 steps) agrees with its axisymmetric section within 1 % per
+  area, and that section completes the whole stroke within 3 % of the
+  8 x 8 grid's final force;
 * ironing (parameters/ironing.prm, smoothed master), penalty and
   Lagrange: the full 1 mm press and the first 0.6 mm of sliding complete
   (past the 0.44 mm where the faceted master stops), with an apparent
@@ -169,6 +172,32 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
                          force, reference,
                          100 * abs(force - reference) / reference))
 
+# The split-corner mesh (Scene/Cylinder compression/Mesh): the 3D model
+# against its own meridian section run axisymmetric, at t = 8. The 3D
+# cross section is the polygon inscribed in the circle (4 x 2^r segments
+# over the full turn for r = Radial refinements = 2), with N sin(2 pi/N) /
+# (2 pi) of the circle's area; the force is compared per area.
+split = ["Scene/Cylinder compression/Mesh=split corner"]
+folder = out + "/upsetting_axisymmetric_split_t8"
+run(tribos, prm("cylinder_compression_axisymmetric"), folder,
+    axisymmetric + split + ["Time stepping/End time=8",
+                            "Time stepping/Number of steps=8"])
+reference = read_csv(folder + "/history.csv")[-1]["pair0_normal_force"]
+folder = out + "/upsetting_split_penalty"
+run(tribos, prm("upsetting"), folder, split + [
+    "Time stepping/End time=8", "Time stepping/Number of steps=8",
+    "Output/Write VTU=false"])
+h = read_csv(folder + "/history.csv")
+n_segments = 16
+area_ratio = n_segments * math.sin(2 * math.pi / n_segments) / (2 * math.pi)
+force = 4 * h[-1]["pair0_normal_force"] / area_ratio
+check(h[-1]["time"] > 7.999 and abs(force - reference) < 0.01 * reference,
+      "upsetting mu = 0.5, split-corner mesh, penalty: 8 steps; plate "
+      "force 4 x %.3f / %.4f (polygon area) = %.2f vs its axisymmetric "
+      "section %.2f (%.2f %%)" % (h[-1]["pair0_normal_force"], area_ratio,
+                                  force, reference,
+                                  100 * abs(force - reference) / reference))
+
 # The whole stroke, axisymmetric, both methods.
 final = {}
 for method, sets in (("penalty", []), ("lagrange", LM)):
@@ -185,6 +214,20 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
 check(abs(final["penalty"] - final["lagrange"]) < 0.02 * final["lagrange"],
       "upsetting mu = 0.5, axisymmetric: penalty vs Lagrange %.2f %%"
       % (100 * abs(final["penalty"] - final["lagrange"]) / final["lagrange"]))
+# The split-corner section (192 cells) completes too, and its final force
+# is within 3 % of the 8 x 8 grid's (mesh convergence: 16 x 16 is 2 %
+# above 8 x 8).
+folder = out + "/upsetting_axisymmetric_split"
+run(tribos, prm("cylinder_compression_axisymmetric"), folder,
+    axisymmetric + split + ["Scene/Cylinder compression/Radial refinements=3"])
+h = read_csv(folder + "/history.csv")
+force = h[-1]["pair0_normal_force"]
+check(h[-1]["time"] > 24.999 and
+      abs(force - final["penalty"]) < 0.03 * final["penalty"],
+      "upsetting mu = 0.5, axisymmetric split-corner mesh, penalty: the "
+      "whole stroke in %d increments, plate force %.1f vs %.1f on 8 x 8 "
+      "(%.2f %%)" % (len(h), force, final["penalty"],
+                     100 * abs(force - final["penalty"]) / final["penalty"]))
 
 # Ironing: press and the first 0.6 mm of sliding (past the 0.44 mm where
 # the faceted master stopped), both methods.

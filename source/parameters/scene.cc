@@ -237,7 +237,21 @@ namespace tribos
       prm.declare_entry("Axial cells",
                         "4",
                         Patterns::Integer(1),
-                        "Cells over the half height before refinement.");
+                        "Cells over the half height before refinement "
+                        "(structured mesh only).");
+      prm.declare_entry(
+        "Mesh",
+        "structured",
+        Patterns::Selection("structured|split corner"),
+        "structured: the meridian section is a grid (2D: 2^r x axial "
+        "cells; 3D: quarter disc extruded), and the rim corner (top face "
+        "meets lateral face) is the corner of one cell, which goes flat "
+        "when the side folds onto the plate. split corner: the meridian "
+        "section is three blocks, each refined r times, two of which meet "
+        "at the rim corner along its bisector, so a fold opens each of "
+        "them to about 90 degrees; in 3D the outer 3/4 of the radius is "
+        "this section swept around the axis, the inner 1/4 a quarter disc "
+        "extruded (Axial cells unused).");
       prm.declare_entry("Imperfection",
                         "0",
                         Patterns::Double(0, 0.5),
@@ -257,6 +271,7 @@ namespace tribos
       height             = positive(prm, "Height");
       radial_refinements = prm.get_integer("Radial refinements");
       axial_cells        = prm.get_integer("Axial cells");
+      split_corner       = (prm.get("Mesh") == "split corner");
       imperfection       = prm.get_double("Imperfection");
       prm.leave_subsection();
     }

@@ -5,6 +5,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -271,6 +272,78 @@ namespace tribos
 
 
     /**
+     * Meridian section [r0, R] x [0, z_top] in three blocks, each refined
+     * @p n_refinements times: one at the inner bottom corner and two that
+     * meet along the line from the section's centre to the rim corner
+     * (R, z_top). The rim corner is then a vertex of two cells: when the
+     * lateral face folds onto the plate, the corner's 180 degrees are
+     * shared by two cells instead of flattening one.
+     */
+    void
+    create_split_corner_section(Triangulation<2>  &section,
+                                const double       r0,
+                                const double       R,
+                                const double       z_top,
+                                const unsigned int n_refinements)
+    {
+      const double                rm = 0.5 * (r0 + R), zm = 0.5 * z_top;
+      const std::vector<Point<2>> vertices = {Point<2>(r0, 0),
+                                              Point<2>(rm, 0),
+                                              Point<2>(R, 0),
+                                              Point<2>(r0, zm),
+                                              Point<2>(rm, zm),
+                                              Point<2>(r0, z_top),
+                                              Point<2>(R, z_top)};
+      std::vector<CellData<2>>    cells(3);
+      cells[0].vertices = {0, 1, 3, 4};
+      cells[1].vertices = {1, 2, 4, 6};
+      cells[2].vertices = {3, 4, 5, 6};
+      section.create_triangulation(vertices, cells, SubCellData());
+      section.refine_global(n_refinements);
+    }
+
+
+
+    /**
+     * The section (r, z) swept over the quarter turn x, y >= 0 in
+     * @p n_angles equal angles: hexahedra r x z x angle.
+     */
+    void
+    sweep_section(const Triangulation<2> &section,
+                  const unsigned int      n_angles,
+                  Triangulation<3>       &result)
+    {
+      const std::vector<Point<2>> &points     = section.get_vertices();
+      const unsigned int           n_vertices = points.size();
+      std::vector<Point<3>>        vertices;
+      for (unsigned int j = 0; j <= n_angles; ++j)
+      {
+        const double angle = 0.5 * numbers::PI * j / n_angles;
+        for (const Point<2> &p : points)
+          vertices.emplace_back(p[0] * std::cos(angle),
+                                p[0] * std::sin(angle),
+                                p[1]);
+      }
+      std::vector<CellData<3>> cells;
+      for (const auto &cell : section.active_cell_iterators())
+        for (unsigned int j = 0; j < n_angles; ++j)
+        {
+          // (r, z, -angle) is right-handed: the later angle comes first.
+          CellData<3> hex;
+          hex.vertices.resize(8);
+          for (unsigned int v = 0; v < 4; ++v)
+          {
+            hex.vertices[v]     = (j + 1) * n_vertices + cell->vertex_index(v);
+            hex.vertices[v + 4] = j * n_vertices + cell->vertex_index(v);
+          }
+          cells.push_back(hex);
+        }
+      result.create_triangulation(vertices, cells, SubCellData());
+    }
+
+
+
+    /**
      * One eighth of the cylinder (3D): quarter disc x, y >= 0 extruded over
      * the upper half height z in [0, h/2]. 2D: the meridian section
      * [0, r] x [0, h/2]. Ids: 0 plane x = 0, 1 plane y = 0, 2 mid plane,
@@ -285,11 +358,53 @@ namespace tribos
       const unsigned int axial_cells = s.axial_cells << p.refinement;
       const double       tolerance   = 1e-10 * s.radius;
 
-      if constexpr (dim == 2)
+      const unsigned int n_refinements = s.radial_refinements + p.refinement;
+      if (s.split_corner)
+      {
+        if constexpr (dim == 2)
+          create_split_corner_section(tria,
+                                      0.,
+                                      s.radius,
+                                      0.5 * s.height,
+                                      n_refinements);
+        else
+        {
+          // Inner quarter of the radius: a quarter disc extruded in the
+          // section's layers at r0; outside: the section swept around in
+          // the disc's arc segments. The disc is refined once less than
+          // the section: the fold-over is axisymmetric and needs its
+          // resolution in the section, while each refinement of the
+          // angles doubles the ring's cells (r = 3: 2304 cells).
+          const double     r0 = 0.25 * s.radius;
+          Triangulation<2> section;
+          create_split_corner_section(section,
+                                      r0,
+                                      s.radius,
+                                      0.5 * s.height,
+                                      n_refinements);
+          std::vector<double> layers;
+          for (const Point<2> &v : section.get_vertices())
+            if (std::abs(v[0] - r0) < tolerance)
+              layers.push_back(v[1]);
+          std::sort(layers.begin(), layers.end());
+          Triangulation<2> disc, flat;
+          GridGenerator::quarter_hyper_ball(disc, Point<2>(), r0);
+          disc.refine_global(std::max(n_refinements, 1u) - 1);
+          GridGenerator::flatten_triangulation(disc, flat);
+          Triangulation<3> core, ring;
+          GridGenerator::extrude_triangulation(flat, layers, core);
+          sweep_section(section, 1u << std::max(n_refinements, 1u), ring);
+          GridGenerator::merge_triangulations(core,
+                                              ring,
+                                              tria,
+                                              1e-8 * s.radius);
+        }
+      }
+      else if constexpr (dim == 2)
       {
         GridGenerator::subdivided_hyper_rectangle(
           tria,
-          {(1u << (s.radial_refinements + p.refinement)), axial_cells},
+          {(1u << n_refinements), axial_cells},
           Point<2>(),
           Point<2>(s.radius, 0.5 * s.height));
       }
@@ -297,7 +412,7 @@ namespace tribos
       {
         Triangulation<2> disc;
         GridGenerator::quarter_hyper_ball(disc, Point<2>(), s.radius);
-        disc.refine_global(s.radial_refinements + p.refinement);
+        disc.refine_global(n_refinements);
         Triangulation<2> flat;
         GridGenerator::flatten_triangulation(disc, flat);
         GridGenerator::extrude_triangulation(flat,

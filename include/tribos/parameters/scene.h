@@ -77,6 +77,8 @@ namespace tribos
       double       height;
       unsigned int radial_refinements;
       unsigned int axial_cells;
+      /** Meridian section of three blocks, the rim corner split. */
+      bool split_corner;
       /** Relative radius reduction at the mid plane (linear taper). */
       double imperfection;
 
