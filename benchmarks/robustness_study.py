@@ -6,7 +6,7 @@ convergence order near convergence, the increments with chattering nodes
 and the wall time.
 
     python3 benchmarks/robustness_study.py [--tribos build/tribos]
-        [--timeout 1800] [--cases ironing upsetting]
+        [--timeout 1800] [--cases ironing upsetting] [--exact]
 
 Writes doc/data/robustness.csv; with --cases only the cases whose name
 contains one of the given words are run, and their rows replace the same
@@ -30,6 +30,9 @@ CASES = [
     ("slide off a convex corner", "slide_off_edge", []),
     ("force control, initially apart", "force_control_apart", []),
     ("upsetting mu = 0.5", "upsetting", []),
+    ("upsetting mu = 0.5, split-corner mesh, r = 3", "upsetting",
+     ["Scene/Cylinder compression/Mesh=split corner",
+      "Scene/Cylinder compression/Radial refinements=3"]),
     ("upsetting mu = 0.2", "upsetting", ["Contact/Friction coefficient=0.2"]),
     ("upsetting mu = 0.5, axisymmetric 8 x 8", "cylinder_compression_axisymmetric",
      ["Finite element/F-bar=true", "Contact/Friction coefficient=0.5",
@@ -68,10 +71,14 @@ def main():
     parser.add_argument("--cases", nargs="*", default=[],
                         help="run only the cases whose name contains one "
                         "of these words; their rows replace the old ones")
+    parser.add_argument("--exact", action="store_true",
+                        help="--cases are whole case names")
     args = parser.parse_args()
     rows = []
     for name, prm, sets in CASES:
-        if args.cases and not any(word in name for word in args.cases):
+        if args.cases and not any(
+                (word == name if args.exact else word in name)
+                for word in args.cases):
             continue
         for method in ("penalty", "lagrange multiplier"):
             if "penalty 1e" in name and method != "penalty":
