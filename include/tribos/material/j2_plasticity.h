@@ -33,10 +33,14 @@ namespace tribos
    * the equivalent plastic strain.
    *
    * The algorithmic tangent dP/dF is the exact derivative of this update,
-   * obtained by forward AD (Sacado) through the whole map, including the
-   * matrix logarithm, which is computed by inverse scaling and squaring
-   * (Denman-Beavers square roots and a series): no spectral decomposition,
-   * so repeated principal stretches (uniaxial states) need no special case.
+   * obtained by forward AD (Sacado) through the map. The matrix logarithm
+   * is the exception: it is evaluated spectrally (Jacobi eigenvectors),
+   * and its derivative in each AD direction is the Daleckii-Krein formula
+   * Q (theta o Q^T dM Q) Q^T with the divided differences theta_ij of ln,
+   * evaluated by log1p so that repeated principal stretches (uniaxial
+   * states, the undeformed state) need no special case. This replaced AD
+   * through inverse scaling and squaring, which cost twice as much per
+   * assembly.
    */
   template <int dim>
   class J2Plasticity : public Material<dim>
