@@ -11,44 +11,14 @@ negative for an inverted one), the cell's centre in the reference
 configuration and the deformed position of its worst corner. A negative
 value means the trilinear map is no longer one-to-one near that corner; the
 Gauss points follow as the deformation grows (doc/robustness.md, frictional
-upsetting). Standard library only (base64 + zlib blocks of deal.II's VTU).
+upsetting). Standard library only (tools/vtu.py reads the VTU).
 """
 
-import base64
-import re
-import struct
+import os
 import sys
-import zlib
 
-TYPES = {"Float32": "f", "Float64": "d", "Int32": "i", "Int64": "q",
-         "UInt8": "B", "UInt32": "I", "UInt64": "Q"}
-
-
-def read_arrays(path):
-    """Binary data arrays of a zlib-compressed VTU, by name ('Points' for
-    the unnamed coordinates)."""
-    text = open(path).read()
-    arrays = {}
-    pattern = (r'<DataArray type="(\w+)"(?: Name="(\w+)")?'
-               r'(?: NumberOfComponents="(\d+)")?[^>]*format="binary">'
-               r'\s*(\S+)\s*</DataArray>')
-    for match in re.finditer(pattern, text):
-        kind, name, components, data = match.groups()
-        raw = data.encode()
-        n_blocks = struct.unpack("<I", base64.b64decode(raw[:8])[:4])[0]
-        header_length = ((12 + 4 * n_blocks + 2) // 3) * 4
-        header = base64.b64decode(raw[:header_length])
-        sizes = struct.unpack("<%dI" % n_blocks, header[12:12 + 4 * n_blocks])
-        body = base64.b64decode(raw[header_length:])
-        decoded, position = b"", 0
-        for size in sizes:
-            decoded += zlib.decompress(body[position:position + size])
-            position += size
-        code = TYPES[kind]
-        values = struct.unpack("<%d%s" % (len(decoded) // struct.calcsize(code),
-                                          code), decoded)
-        arrays[name or "Points"] = (values, int(components or 1))
-    return arrays
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtu import read_arrays  # noqa: E402
 
 
 # VTK hexahedron: for each corner, its three edge neighbours in right-handed
