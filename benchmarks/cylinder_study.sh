@@ -26,7 +26,8 @@ for variant in 10E 100E 1000E augmented lagrange axisymmetric 3d_fine \
     3d_fine) sets=(--set "Scene/Cylinder compression/Radial refinements=3") ;;
     friction_penalty) sets=("${friction[@]}") ;;
     friction_lagrange) sets=("${friction[@]}" --set "Contact/Method=lagrange multiplier") ;;
-    *) sets=(--set "Contact/Penalty factor=${variant%E}*E") ;;
+    # The paper's 10E, 100E, 1000E: absolute values (E = 206.9, mm).
+    *) sets=(--set "Contact/Penalty factor=$(( ${variant%E} * 2069 / 10 ))") ;;
   esac
   start=$(date +%s.%N)
   "$tribos" "$root/$prm" "${sets[@]}" \

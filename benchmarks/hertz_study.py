@@ -33,7 +33,7 @@ scenes = [
      E / (2 * (1 - nu * nu)), 1, [3, 4, 5]),
     ("3d_rigid", 3, "hertz_3d.prm", [], E / (1 - nu * nu), 4, [2, 3, 4]),
 ]
-factors = ["10*E", "100*E", "1000*E", "1e4*E"]
+factors = ["10*E/h", "100*E/h", "1000*E/h", "1e4*E/h"]
 
 
 def timings(folder):

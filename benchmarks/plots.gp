@@ -10,13 +10,13 @@ set title "Hertz: error of p0 against wall time (each point: mesh level x penalt
 set logscale xy
 set xlabel "wall time of the run [s]"
 set ylabel "relative error of p0"
-plot for [scene in "2d_rigid 2d_block 3d_rigid"] for [eps in "10*E 100*E 1000*E 1e4*E"] \
+plot for [scene in "2d_rigid 2d_block 3d_rigid"] for [eps in "10*E/h 100*E/h 1000*E/h 1e4*E/h"] \
   "< awk -F, -v s=".scene." -v e=".eps." '$1==s && $3==e' doc/data/hertz_study.csv" \
   using 6:12 with linespoints title scene." ".eps
 
 set output "doc/hertz_error_vs_penalty.png"
 set title "Hertz: error of p0 and Newton iterations against the penalty factor"
-set xlabel "penalty factor eps_N / E"
+set xlabel "penalty factor k = eps_N h / E"
 set ylabel "relative error of p0"
 set y2label "Newton iterations"
 set y2tics

@@ -51,8 +51,8 @@ COLUMNS = ["scene", "variant", "method", "penalty_factor", "tangent", "level",
            "error_p0", "error_profile", "error_force", "max_penetration",
            "status"]
 
-METHODS = {"10E": ("penalty", "10"), "100E": ("penalty", "100"),
-           "1000E": ("penalty", "1000"), "1e4E": ("penalty", "10000"),
+METHODS = {"10E/h": ("penalty", "10"), "100E/h": ("penalty", "100"),
+           "1000E/h": ("penalty", "1000"), "1e4E/h": ("penalty", "10000"),
            "lagrange": ("lagrange multiplier", ""),
            "augmented": ("augmented lagrangian", "")}
 
@@ -61,7 +61,7 @@ def method_sets(key):
     method, factor = METHODS[key]
     sets = ["Contact/Method=" + method]
     if factor:
-        sets.append("Contact/Penalty factor=%s*E" % factor)
+        sets.append("Contact/Penalty factor=%s*E/h" % factor)
     return sets
 
 
@@ -202,7 +202,7 @@ def main():
     rigid2 = hertz_errors(2, E / (1 - nu * nu), 1)
     levels = [2] if args.smoke else ([3, 4, 5, 6] if args.full else
                                      [3, 4, 5])
-    methods = ["1000E", "lagrange"] if args.smoke else list(METHODS)
+    methods = ["1000E/h", "lagrange"] if args.smoke else list(METHODS)
     # Hertz 2D: method x mesh level (Contact refinements).
     for lv in levels:
         for m in methods:
@@ -212,9 +212,9 @@ def main():
                                  "refinements=%d" % lv], rigid2, level=lv,
                method=METHODS[m][0], factor=METHODS[m][1])
         if not args.smoke:
-            go("hertz_2d", "1000E paper tangent L%d" % lv, hertz2,
+            go("hertz_2d", "1000E/h paper tangent L%d" % lv, hertz2,
                os.path.join(work, "hertz2d_paper_%d" % lv),
-               method_sets("1000E") + [
+               method_sets("1000E/h") + [
                    "Contact/Tangent=paper",
                    "Scene/Cylinder over block/Contact refinements=%d" % lv],
                rigid2, level=lv, method="penalty", factor="1000",
@@ -228,7 +228,7 @@ def main():
     hertz3 = "parameters/hertz_3d.prm"
     rigid3 = hertz_errors(3, E / (1 - nu * nu), 4)
     for lv in ([2, 3, 4] if args.full else [2, 3]):
-        for m in ("1000E", "lagrange"):
+        for m in ("1000E/h", "lagrange"):
             extra = ["Linear solver/Type=direct"] if m == "lagrange" else []
             go("hertz_3d", "%s L%d" % (m, lv), hertz3,
                os.path.join(work, "hertz3d_%s_%d" % (m, lv)),
@@ -273,36 +273,36 @@ def main():
               "2 : xy : 0, 0"]
     stiff = E / (1 - nu * nu) / (1 + E / 1e4)  # E* with a 1e4 E block
     go("choice_plate", "rigid analytic plane", hertz2,
-       os.path.join(work, "choice_rigid"), method_sets("1000E"), rigid2)
+       os.path.join(work, "choice_rigid"), method_sets("1000E/h"), rigid2)
     go("choice_plate", "meshed plate E_plate = 1e4 E", hertz2,
-       os.path.join(work, "choice_meshed"), method_sets("1000E") + block2 +
+       os.path.join(work, "choice_meshed"), method_sets("1000E/h") + block2 +
        ["Materials/Young's modulus=1, 1e4"],
        hertz_errors(2, 1 / ((1 - nu * nu) / E + (1 - nu * nu) / 1e4), 1))
     go("choice_axisymmetry", "3D 1/8 model", cylinder,
-       os.path.join(work, "choice_3d"), method_sets("1000E"),
+       os.path.join(work, "choice_3d"), method_sets("1000E/h"),
        cylinder_errors())
     go("choice_axisymmetry", "2D axisymmetric",
        "parameters/cylinder_compression_axisymmetric.prm",
-       os.path.join(work, "choice_axisymmetric"), method_sets("1000E"),
+       os.path.join(work, "choice_axisymmetric"), method_sets("1000E/h"),
        cylinder_errors(axisymmetric=True))
     for model in ("linear elastic", "neo-Hookean"):
         go("choice_strain", model, hertz2,
            os.path.join(work, "choice_" + model.split()[0]),
-           method_sets("1000E") + ["Materials/Model=" + model], rigid2)
+           method_sets("1000E/h") + ["Materials/Model=" + model], rigid2)
     go("choice_plasticity", "neo-Hookean (no history)", hertz2,
        os.path.join(work, "choice_elastic"),
-       method_sets("1000E") + block2 + ["Materials/Model=neo-Hookean"],
+       method_sets("1000E/h") + block2 + ["Materials/Model=neo-Hookean"],
        hertz_errors(2, E / (2 * (1 - nu * nu)), 1))
     go("choice_plasticity", "J2 plasticity yield never reached", hertz2,
        os.path.join(work, "choice_j2"),
-       method_sets("1000E") + block2 + ["Materials/Model=J2 plasticity",
+       method_sets("1000E/h") + block2 + ["Materials/Model=J2 plasticity",
                                         "Materials/Yield stress=1e6",
                                         "Materials/Saturation yield "
                                         "stress=1e6"],
        hertz_errors(2, E / (2 * (1 - nu * nu)), 1))
     for mu in ("0", "0.3"):
         go("choice_friction", "mu = " + mu, hertz2,
-           os.path.join(work, "choice_mu" + mu), method_sets("1000E") +
+           os.path.join(work, "choice_mu" + mu), method_sets("1000E/h") +
            block2 + ["Contact/Friction coefficient=" + mu],
            hertz_errors(2, E / (2 * (1 - nu * nu)), 1))
     write(rows, data)
@@ -398,8 +398,8 @@ do for [s in "hertz_2d hertz_3d cylinder ring"] {
 }
 unset multiplot
 set output "doc/study_penalty.png"
-set multiplot layout 1,2 title "Penalty: error and Newton iterations against eps_N / E"
-set xlabel "eps_N / E"
+set multiplot layout 1,2 title "Penalty: error and Newton iterations against k = eps_N h / E"
+set xlabel "k = eps_N h / E"
 set title "error"
 plot "DATA/study_penalty.dat" index 0 using 1:2 with linespoints title "Hertz 2D (a, p0)", \\
      "" index 1 using 1:2 with linespoints title "cylinder (force)", \\
@@ -416,7 +416,7 @@ set logscale xy
 set title "Hertz 2D: compute time against dofs (KPEN, KLAG)"
 set xlabel "dofs"
 set ylabel "compute time (timer sections) [s]"
-plot "DATA/study_cost.dat" index 0 using 1:2 with linespoints title "penalty 1000E", \\
+plot "DATA/study_cost.dat" index 0 using 1:2 with linespoints title "penalty 1000E/h", \\
      "" index 1 using 1:2 with linespoints title "Lagrange"
 """.replace("DATA", os.path.relpath(data, ROOT)).replace(
         "KPEN", "penalty exponent %.2f" % fits["penalty"]).replace(

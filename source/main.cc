@@ -41,10 +41,12 @@ namespace
 
   template <int dim>
   void
-  run(dealii::ParameterHandler &prm)
+  run(dealii::ParameterHandler &prm, const std::string &filename)
   {
     tribos::Parameters::AllParameters parameters;
     parameters.parse_parameters(prm);
+    parameters.input_warnings =
+      tribos::Parameters::input_file_warnings(filename);
     // Let the problem (and its TimerOutput) be destroyed before a failure
     // propagates, so that its destructor runs outside of stack unwinding.
     std::exception_ptr failure;
@@ -144,9 +146,9 @@ main(int argc, char **argv)
       tribos::Parameters::read_dimension(filename, overrides);
     tribos::Parameters::read_input(prm, filename, overrides);
     if (dim == 2)
-      run<2>(prm);
+      run<2>(prm, filename);
     else
-      run<3>(prm);
+      run<3>(prm, filename);
   }
   catch (const tribos::NonConvergence &failure)
   {

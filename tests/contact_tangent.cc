@@ -3,14 +3,23 @@
  * consistent) against central finite differences of its residual, where
  * every perturbed residual is evaluated with a fresh closest-point
  * projection. Random configurations in 2D (segments) and 3D (warped
- * bilinear faces), open, stick and slip, projections inside a face and
- * clamped at its edge (a node beyond a convex corner), and rigid plane,
- * sphere and cylinder. Asserts a relative error below 1e-6, and that the
- * `paper` tangent differs (it drops the geometric terms).
+ * bilinear faces), open, stick and slip, projections inside a face,
+ * clamped at its edge (a node beyond a convex corner) and onto the face's
+ * extension (unclamped, as the handler keeps a face within its edge band
+ * and at the free end of a master), and rigid plane, sphere and cylinder;
+ * each with the penalty law and with the Lagrange multiplier law (the
+ * element's rows and columns of the node's multipliers included). Asserts
+ * a relative error below 1e-6, and that the `paper` tangent differs (it
+ * drops the geometric terms). Then two iterates the semismooth Newton
+ * meets: a tensile multiplier on the closed branch, whose Coulomb bound
+ * must be mu max(0, t_N - c g_N), never negative; a node whose tangential
+ * motion is fixed in both directions (on the axis of a symmetric model),
+ * whose residual and tangent must be finite.
  */
 
 #include <tribos/contact/contact_element.h>
 
+#include <cmath>
 #include <iostream>
 #include <random>
 #include <vector>
@@ -19,7 +28,7 @@ using namespace tribos;
 
 struct Tally
 {
-  unsigned int n[3]        = {0, 0, 0};
+  unsigned int n[4]        = {0, 0, 0, 0};
   unsigned int n_clamped   = 0;
   double       worst       = 0;
   double       paper_error = 0;
@@ -82,12 +91,36 @@ compare_with_differences(const unsigned int         n,
 
 
 
+/** A random multiplier (traction on the slave): mostly compressive along
+ * -@p normal, with a tangential part. */
+Vec3<double>
+random_multiplier(std::mt19937 &random, const unsigned int dim)
+{
+  std::uniform_real_distribution<double> u(-1, 1);
+  Vec3<double> lambda{{3 * u(random), 3 * u(random), 3 * u(random)}};
+  lambda[dim - 1] = -10 * (1 + 0.5 * u(random));
+  if (dim == 2)
+    lambda[2] = 0;
+  return lambda;
+}
+
+
+
+/**
+ * @p multipliers: the Lagrange multiplier element (dim more dofs). With
+ * @p extended the slave is projected onto the face's extension (not
+ * clamped), as for a node kept within the edge band or at a free end.
+ */
 template <int dim>
 void
-check_segment(std::mt19937 &random, Tally &tally, bool &ok)
+check_segment(std::mt19937 &random,
+              Tally        &tally,
+              bool         &ok,
+              const bool    multipliers = false,
+              const bool    extended    = false)
 {
-  using Element                            = NodeToSegment<dim>;
-  constexpr unsigned int                 n = Element::n_dofs;
+  using Element        = NodeToSegment<dim>;
+  const unsigned int n = Element::n_dofs + (multipliers ? dim : 0);
   std::uniform_real_distribution<double> u(-1, 1);
 
   for (unsigned int sample = 0; sample < 300; ++sample)
@@ -114,22 +147,43 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
     law.tangential_penalty   = 5e2 * (1 + 0.5 * u(random));
     law.friction_coefficient = 0.3;
     // Positions at the last converged step: a tangential history.
-    Vec3<double> slave_old = slave, master_old[4];
-    for (unsigned int d = 0; d < dim; ++d)
-      slave_old[d] += 0.03 * u(random);
+    Vec3<double> master_old[4];
     for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
     {
       master_old[k] = master[k];
       for (unsigned int d = 0; d < dim; ++d)
         master_old[k][d] += 0.01 * u(random);
     }
-    Vec3<double> traction{{3 * u(random), 3 * u(random), 0}};
+    // The committed state: on this face (at other coordinates) or on
+    // another one, its traction tangent to the committed normal.
+    SlaveHistory history;
+    history.active = true;
+    {
+      // Near where the slave projects on the old face: small slips.
+      const Projection old = project<dim>(slave, master_old, false);
+      history.xi[0]        = old.xi[0] + 0.05 * u(random);
+      history.xi[1]        = dim == 3 ? old.xi[1] + 0.05 * u(random) : 0.;
+    }
+    const bool same = sample % 2 == 0;
+    history.face    = same ? 0 : 1;
+    {
+      Vec3<double> a[2];
+      MasterFace<dim>::geometry(master_old,
+                                history.xi,
+                                history.point,
+                                a,
+                                history.normal);
+    }
+    const Vec3<double> traction{{3 * u(random), 3 * u(random), 3 * u(random)}};
+    history.traction =
+      traction - scale(dot(traction, history.normal), history.normal);
     if (dim == 2)
-      traction[1] = 0;
+      history.traction[2] = 0;
+    const Vec3<double> lambda = random_multiplier(random, dim);
 
     const auto residual = [&](const std::vector<double> &x, double *R)
     {
-      Vec3<double> s = slave, m[4];
+      Vec3<double> s = slave, m[4], l = lambda;
       for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
         m[k] = master[k];
       for (unsigned int d = 0; d < dim; ++d)
@@ -137,45 +191,50 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
         s[d] += x[d];
         for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
           m[k][d] += x[dim * (1 + k) + d];
+        if (multipliers)
+          l[d] += x[Element::n_dofs + d];
       }
-      const Projection p = project<dim>(s, m);
+      const Projection p = project<dim>(s, m, !extended);
       return Element::evaluate(s,
                                m,
                                p,
-                               slave_old,
                                master_old,
-                               traction,
+                               history,
+                               same,
                                law,
                                0.7,
                                true,
                                R,
-                               nullptr);
+                               nullptr,
+                               multipliers ? &l : nullptr);
     };
 
     std::vector<double> R(n), K(n * n), Kp(n * n);
-    const Projection    p      = project<dim>(slave, master);
+    const Projection    p      = project<dim>(slave, master, !extended);
     const auto          result = Element::evaluate(slave,
                                           master,
                                           p,
-                                          slave_old,
                                           master_old,
-                                          traction,
+                                          history,
+                                          same,
                                           law,
                                           0.7,
                                           true,
                                           R.data(),
-                                          K.data());
+                                          K.data(),
+                                          multipliers ? &lambda : nullptr);
     Element::evaluate(slave,
                       master,
                       p,
-                      slave_old,
                       master_old,
-                      traction,
+                      history,
+                      same,
                       law,
                       0.7,
                       false,
                       R.data(),
-                      Kp.data());
+                      Kp.data(),
+                      multipliers ? &lambda : nullptr);
 
     const bool compared = compare_with_differences(
       n,
@@ -186,7 +245,11 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
       { return residual(x, R_x).status == result.status; },
       tally,
       ok);
-    if (compared && !p.inside() && result.status != ContactStatus::open)
+    // Beyond the face: clamped, or on its extension (|xi| > 1).
+    bool outside = !p.inside();
+    for (unsigned int c = 0; c < dim - 1; ++c)
+      outside = outside || std::abs(p.xi[c]) > 1;
+    if (compared && outside && result.status != ContactStatus::open)
       ++tally.n_clamped;
   }
 }
@@ -199,7 +262,10 @@ check_segment(std::mt19937 &random, Tally &tally, bool &ok)
  * the segment; every perturbed residual with a fresh smoothed projection.
  */
 void
-check_smoothed(std::mt19937 &random, Tally &tally, bool &ok)
+check_smoothed(std::mt19937 &random,
+               Tally        &tally,
+               bool         &ok,
+               const bool    multipliers = false)
 {
   using Element = NodeToSmoothedSegment;
   std::uniform_real_distribution<double> u(-1, 1);
@@ -207,28 +273,38 @@ check_smoothed(std::mt19937 &random, Tally &tally, bool &ok)
   for (unsigned int sample = 0; sample < 300; ++sample)
   {
     // x_0, x_1, node before, node after; kinks up to about 20 degrees.
-    Vec3<double>       master[4] = {{{0, 0.1 * u(random), 0}},
-                                    {{1, 0.1 * u(random), 0}},
-                                    {{-1, 0.35 * u(random), 0}},
-                                    {{2, 0.35 * u(random), 0}}};
-    const bool         has[2]    = {sample % 5 != 1, sample % 7 != 2};
-    const unsigned int n         = 2 * (3 + has[0] + has[1]);
+    Vec3<double>       master[4]       = {{{0, 0.1 * u(random), 0}},
+                                          {{1, 0.1 * u(random), 0}},
+                                          {{-1, 0.35 * u(random), 0}},
+                                          {{2, 0.35 * u(random), 0}}};
+    const bool         has[2]          = {sample % 5 != 1, sample % 7 != 2};
+    const unsigned int n_displacements = 2 * (3 + has[0] + has[1]);
+    const unsigned int n      = n_displacements + (multipliers ? 2 : 0);
+    const Vec3<double> lambda = random_multiplier(random, 2);
     Vec3<double> slave{{0.5 + 0.45 * u(random), -0.05 + 0.1 * u(random), 0}};
 
     ContactLaw law;
     law.normal_penalty       = 1e3;
     law.tangential_penalty   = 5e2 * (1 + 0.5 * u(random));
     law.friction_coefficient = 0.3;
-    Vec3<double> slave_old   = slave, master_old[4];
-    for (unsigned int d = 0; d < 2; ++d)
-      slave_old[d] += 0.03 * u(random);
+    Vec3<double> master_old[4];
     for (unsigned int k = 0; k < 4; ++k)
     {
       master_old[k] = master[k];
       for (unsigned int d = 0; d < 2; ++d)
         master_old[k][d] += 0.01 * u(random);
     }
-    const Vec3<double> traction{{3 * u(random), 0, 0}};
+    // Committed: a point of the old segment, its chord normal, a
+    // tangential traction.
+    SlaveHistory history;
+    history.active      = true;
+    const double xi_old = 2 * (slave[0] - 0.5) + 0.05 * u(random);
+    history.point       = scale(0.5 * (1 - xi_old), master_old[0]) +
+                    scale(0.5 * (1 + xi_old), master_old[1]);
+    const Vec3<double> chord = master_old[1] - master_old[0];
+    history.normal =
+      scale(1. / norm(chord), Vec3<double>{{-chord[1], chord[0], 0}});
+    history.traction = scale(3 * u(random) / norm(chord), chord);
 
     // Positions from the element's dof vector (absent neighbours skipped).
     const auto positions =
@@ -254,22 +330,25 @@ check_smoothed(std::mt19937 &random, Tally &tally, bool &ok)
                               const bool                 consistent,
                               bool                      &projected)
     {
-      Vec3<double> s, m[4];
+      Vec3<double> s, m[4], l = lambda;
       positions(x, s, m);
+      if (multipliers)
+        for (unsigned int d = 0; d < 2; ++d)
+          l[d] += x[n_displacements + d];
       double xi = 0;
       projected = SmoothedSegment::project(s, m, has, xi) && std::abs(xi) <= 1;
       return Element::evaluate(s,
                                m,
                                has,
                                xi,
-                               slave_old,
                                master_old,
-                               traction,
+                               history,
                                law,
                                0.7,
                                consistent,
                                R,
-                               K);
+                               K,
+                               multipliers ? &l : nullptr);
     };
 
     std::vector<double> zero(n, 0.), R(n), K(n * n), Kp(n * n);
@@ -303,8 +382,10 @@ void
 check_rigid(const std::string &type,
             std::mt19937      &random,
             Tally             &tally,
-            bool              &ok)
+            bool              &ok,
+            const bool         multipliers = false)
 {
+  const unsigned int                     n = dim + (multipliers ? dim : 0);
   std::uniform_real_distribution<double> u(-1, 1);
   Parameters::RigidSurface               description;
   description.name      = type;
@@ -331,43 +412,185 @@ check_rigid(const std::string &type,
       slave +
       Vec3<double>{
         {3e-4 * u(random), 3e-4 * u(random), dim == 3 ? 3e-4 * u(random) : 0.}};
-    Vec3<double> traction{{u(random), u(random), dim == 3 ? u(random) : 0.}};
-    ContactLaw   law;
+    // Committed: the closest point at the last step, its normal, a
+    // tangential traction.
+    SlaveHistory history;
+    history.active = true;
+    {
+      double old_gap;
+      surface.closest_point(slave_old,
+                            shift_old,
+                            history.point,
+                            history.normal,
+                            old_gap);
+    }
+    const Vec3<double> traction{
+      {u(random), u(random), dim == 3 ? u(random) : 0.}};
+    history.traction =
+      traction - scale(dot(traction, history.normal), history.normal);
+    ContactLaw law;
     law.normal_penalty       = 1e3;
     law.tangential_penalty   = 1e3;
     law.friction_coefficient = 0.2;
+    // A traction on the slave: compressive along the surface's normal.
+    Vec3<double> lambda = scale(-10 * (1 + 0.5 * u(random)), normal);
+    for (unsigned int d = 0; d < dim; ++d)
+      lambda[d] += 4 * u(random);
 
-    const auto evaluate = [&](const Vec3<double> &x, double *R, double *K)
+    const auto evaluate =
+      [&](const Vec3<double> &x, const Vec3<double> &l, double *R, double *K)
     {
       return NodeToRigid<dim>::evaluate(x,
                                         surface,
                                         shift,
                                         shift_old,
-                                        slave_old,
-                                        traction,
+                                        history,
                                         law,
                                         1.3,
                                         true,
                                         R,
-                                        K);
+                                        K,
+                                        multipliers ? &l : nullptr);
     };
-    std::vector<double> R(dim), K(dim * dim);
-    const auto          result = evaluate(slave, R.data(), K.data());
+    std::vector<double> R(n), K(n * n);
+    const auto          result = evaluate(slave, lambda, R.data(), K.data());
     compare_with_differences(
-      dim,
+      n,
       result.status,
       K,
       nullptr,
       [&](const std::vector<double> &x, double *R_x)
       {
-        Vec3<double> moved = slave;
+        Vec3<double> moved = slave, l = lambda;
         for (unsigned int d = 0; d < dim; ++d)
+        {
           moved[d] += x[d];
-        return evaluate(moved, R_x, nullptr).status == result.status;
+          if (multipliers)
+            l[d] += x[dim + d];
+        }
+        return evaluate(moved, l, R_x, nullptr).status == result.status;
       },
       tally,
       ok);
   }
+}
+
+
+
+/**
+ * A closed node whose multiplier is tensile (t_N = -Lambda . n < 0 but
+ * t_N - c g_N >= 0: penetrating), slipping, on a rigid plane y = 0: the
+ * tangential row must use the Coulomb bound mu max(0, t_N - c g_N) >= 0;
+ * the raw mu t_N < 0 would turn the friction force against the slip.
+ */
+bool
+check_tensile_multiplier()
+{
+  Parameters::RigidSurface description;
+  description.name      = "plane";
+  description.type      = "plane";
+  description.point     = {0, 0, 0};
+  description.direction = {0, 1, 0};
+  description.motion    = {"0", "0"};
+  const RigidSurface<2> plane(description);
+  const Vec3<double>    zero{{0, 0, 0}};
+
+  ContactLaw law;
+  law.normal_penalty       = 100;
+  law.tangential_penalty   = 50;
+  law.friction_coefficient = 0.3;
+  const double       t_N = -0.5, gap = 3 * t_N / law.normal_penalty;
+  const Vec3<double> lambda{{0.2, -t_N, 0}}; // Lambda . n = -t_N
+  const Vec3<double> slave{{0, gap, 0}};
+  SlaveHistory       history; // was at x = -0.01 on the plane, open
+  history.point = {{-0.01, 0, 0}};
+  double     R[4], K[16];
+  const auto result = NodeToRigid<2>::evaluate(slave,
+                                               plane,
+                                               zero,
+                                               zero,
+                                               history,
+                                               law,
+                                               1.,
+                                               true,
+                                               R,
+                                               K,
+                                               &lambda);
+  // trial = T + c_T dg_T = 0.2 + 50 * 0.01 = 0.7 along +x; the bound is
+  // mu (t_N - c g_N) = 0.3 * (-0.5 + 1.5) = 0.3.
+  const double trial = 0.2 + 50 * 0.01, bound = 0.3 * (t_N - 100 * gap);
+  const double expected = lambda[0] - bound; // tangent t_0 = (-n_y, n_x)
+  bool         ok       = result.status == ContactStatus::slip &&
+            std::abs(std::abs(R[3]) - std::abs(expected)) < 1e-12 &&
+            trial > bound;
+  for (const double k : K)
+    ok = ok && std::isfinite(k);
+  std::cout << "tensile multiplier on the closed branch: tangential row "
+            << R[3] << ", expected +-" << expected
+            << " (bound mu max(0, t_N - c g_N) = " << bound << ")"
+            << (ok ? "  ok" : "  FAILED") << std::endl;
+  return ok;
+}
+
+
+
+/**
+ * A node on the axis of a symmetric 3D model (x and y fixed), pressed on
+ * a rigid plane z = 0 with friction, with penalty and multipliers, also
+ * held closed in tension (the chattering remedy): finite residual and
+ * tangent, and no slip where it cannot move.
+ */
+bool
+check_fixed_tangents()
+{
+  Parameters::RigidSurface description;
+  description.name      = "plate";
+  description.type      = "plane";
+  description.point     = {0, 0, 0};
+  description.direction = {0, 0, 1};
+  description.motion    = {"0", "0", "0"};
+  const RigidSurface<3> plate(description);
+  const Vec3<double>    zero{{0, 0, 0}};
+  bool                  ok = true;
+  for (const bool multipliers : {false, true})
+    for (const double pressure : {2., -2.})
+    {
+      ContactLaw law;
+      law.normal_penalty       = 100;
+      law.tangential_penalty   = 50;
+      law.friction_coefficient = 0.5;
+      law.fixed_components     = multipliers ? 3u : 0u;
+      law.frozen_closed        = pressure < 0;
+      const Vec3<double> slave{{0, 0, -pressure / 100}},
+        lambda{{0, 0, pressure}};
+      double       R[6], K[36];
+      SlaveHistory history;
+      history.point = {{0, 0, 0}};
+      const auto result =
+        NodeToRigid<3>::evaluate(slave,
+                                 plate,
+                                 zero,
+                                 zero,
+                                 history,
+                                 law,
+                                 1.,
+                                 true,
+                                 R,
+                                 K,
+                                 multipliers ? &lambda : nullptr);
+      bool finite = true;
+      for (unsigned int i = 0; i < (multipliers ? 6u : 3u); ++i)
+        finite = finite && std::isfinite(R[i]);
+      for (unsigned int i = 0; i < (multipliers ? 36u : 9u); ++i)
+        finite = finite && std::isfinite(K[i]);
+      const bool sticks = result.status == ContactStatus::stick;
+      std::cout << "axis node, " << (multipliers ? "multipliers" : "penalty")
+                << ", pressure " << pressure << ": status "
+                << int(result.status)
+                << (finite && sticks ? "  ok" : "  FAILED") << std::endl;
+      ok = ok && finite && sticks;
+    }
+  return ok;
 }
 
 
@@ -418,5 +641,59 @@ main()
     report("2D rigid " + type, t2, ok2);
     report("3D rigid " + type, t3, ok3);
   }
+
+  // The same elements on their extended faces and with multipliers.
+  for (const bool multipliers : {false, true})
+  {
+    const std::string law = multipliers ? ", multipliers" : "";
+    {
+      Tally t;
+      bool  ok = true;
+      check_segment<2>(random, t, ok, multipliers, true);
+      ok = ok && t.n_clamped > 5;
+      report("2D node-to-segment, extended faces" + law, t, ok);
+    }
+    {
+      Tally t;
+      bool  ok = true;
+      check_segment<3>(random, t, ok, multipliers, true);
+      ok = ok && t.n_clamped > 5;
+      report("3D node-to-face, extended faces" + law, t, ok);
+    }
+    if (!multipliers)
+      continue;
+    {
+      Tally t;
+      bool  ok = true;
+      check_segment<2>(random, t, ok, true);
+      ok = ok && t.n_clamped > 5;
+      report("2D node-to-segment" + law, t, ok);
+    }
+    {
+      Tally t;
+      bool  ok = true;
+      check_segment<3>(random, t, ok, true);
+      ok = ok && t.n_clamped > 5;
+      report("3D node-to-face" + law, t, ok);
+    }
+    {
+      Tally t;
+      bool  ok = true;
+      check_smoothed(random, t, ok, true);
+      report("2D node-to-segment, smoothed master" + law, t, ok);
+    }
+    for (const std::string type : {"plane", "sphere", "cylinder"})
+    {
+      Tally t2, t3;
+      bool  ok2 = true, ok3 = true;
+      check_rigid<2>(type, random, t2, ok2, true);
+      check_rigid<3>(type, random, t3, ok3, true);
+      report("2D rigid " + type + law, t2, ok2);
+      report("3D rigid " + type + law, t3, ok3);
+    }
+  }
+
+  all_ok = check_tensile_multiplier() && all_ok;
+  all_ok = check_fixed_tangents() && all_ok;
   return all_ok ? 0 : 1;
 }

@@ -1,11 +1,13 @@
 """Load stepping: (1) an increment too large for the allowed Newton
 iterations is cut back, converges in pieces, grows again, and ends on the
-analytic state; (2) a run that cannot converge (the block is compressed to
+analytic state; the Newton iterations of the failed attempts are reported
+beside the accepted ones; (2) a run that cannot converge (the block is compressed to
 zero volume) stops with exit status 2 and a clear message, keeping the
 converged steps' history, VTU files and a FAILED summary."""
 
 import math
 import os
+import re
 import sys
 
 from tribos_test import setup, run, read_csv, check, finish
@@ -40,6 +42,19 @@ check(rows[-1]["cutbacks"] >= 1 and len(rows) >= 2,
 check(abs(rows[-1]["RF1_x"] - exact) < 1e-8 * abs(exact),
       "after cutbacks the reaction %.10g equals the analytic %.10g"
       % (rows[-1]["RF1_x"], exact))
+# The Newton iterations of the failed attempts are counted too: each cut
+# attempt spent Maximum iterations (5) solves before it was abandoned.
+accepted = sum(r["newton_iterations"] for r in rows)
+attempts = sum(r["newton_iterations_all"] for r in rows)
+summary = open(recover + "/summary.txt").read()
+reported = {key: int(value) for key, value in re.findall(
+    r"^(newton iterations(?: \(all attempts\))?)\s+(\d+)$", summary, re.M)}
+check(attempts == accepted + 5 * rows[-1]["cutbacks"] and
+      reported == {"newton iterations": accepted,
+                   "newton iterations (all attempts)": attempts},
+      "iterations: %d accepted, %d with the %d failed attempts, in "
+      "history.csv and summary.txt" % (accepted, attempts,
+                                       rows[-1]["cutbacks"]))
 
 # (2) compression to zero volume at t = 1/1.2: cannot converge
 fail = out + "/fail"

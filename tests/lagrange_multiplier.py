@@ -107,9 +107,9 @@ def difference(folder):
 previous = None
 for factor in ("10", "100", "1000", "10000"):
     folder = out + "/penalty_" + factor
-    run(tribos, hertz, folder, ["Contact/Penalty factor=%s*E" % factor])
+    run(tribos, hertz, folder, ["Contact/Penalty factor=%s*E/h" % factor])
     force, peak = difference(folder)
-    print("penalty %6sE: force differs from Lagrange by %.3e, peak "
+    print("penalty %6sE/h: force differs from Lagrange by %.3e, peak "
           "pressure by %.3e" % (factor, force, peak))
     if previous:
         check(force * 5 < previous[0] and peak * 5 < previous[1],

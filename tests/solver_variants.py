@@ -6,7 +6,8 @@ import sys
 from tribos_test import setup, run, strip_columns, numdiff, check, finish
 
 tribos, tests, out = setup(sys.argv)
-noisy = ("wall_time", "residual", "newton_iterations")
+noisy = ("wall_time", "residual", "newton_iterations",
+         "newton_iterations_all")
 strip_columns(tests + "/cylinder_3d.reference.csv", out + "/reference.csv",
               drop=noisy)
 for name, sets in (("gmres_amg", ["Linear solver/Type=iterative",
@@ -17,5 +18,5 @@ for name, sets in (("gmres_amg", ["Linear solver/Type=iterative",
     strip_columns(folder + "/history.csv", folder + "/h.csv", drop=noisy)
     numdiff(folder + "/h.csv", out + "/reference.csv", relative=1e-6,
             absolute=1e-8)
-    check(True, "%s reproduces the KLU reference within 1e-6" % name)
+    print("ok      %s reproduces the KLU reference within 1e-6" % name)
 finish()

@@ -19,16 +19,50 @@ namespace tribos
     }
 
     /**
-     * The interface law shared by both element types: normal penalty and
-     * Coulomb return mapping. Fills @p force = T - t_N n (the residual of
-     * the slave per unit area) and the reported values.
+     * |v|, with a zero derivative at v = 0 instead of the NaN of d sqrt(x)
+     * at 0 (a node whose tangential motion is fixed in every direction,
+     * e.g. on the axis of a symmetric model, has a zero trial traction).
+     */
+    template <typename Number>
+    Number
+    safe_norm(const Vec3<Number> &v)
+    {
+      if (value(dot(v, v)) == 0)
+        return Number(0.);
+      return norm(v);
+    }
+
+    /**
+     * The slip indicator |T_trial| > mu t_N, with equality to round-off
+     * (relative 1e-12) counted as stick.
+     */
+    template <typename Number>
+    bool
+    slips(const Number &magnitude, const Number &limit)
+    {
+      return value(magnitude) > value(limit) * (1. + 1e-12);
+    }
+
+    /** max(0, x) with the derivative of the branch taken. */
+    template <typename Number>
+    Number
+    positive_part(const Number &x)
+    {
+      return value(x) > 0 ? x : Number(0.);
+    }
+
+    /**
+     * The interface law shared by all element types: normal penalty and
+     * Coulomb return mapping. @p committed is the committed traction T_n
+     * turned with the surface (Q T_n). Fills @p force = T - t_N n (the
+     * residual of the slave per unit area) and the reported values.
      */
     template <typename Number>
     void
     interface_law(const Number       &gap,
                   const Vec3<Number> &normal,
                   const Vec3<Number> &slip_increment,
-                  const Vec3<double> &previous_traction,
+                  const Vec3<Number> &committed,
                   const ContactLaw   &law,
                   Vec3<Number>       &force,
                   ContactPointResult &result)
@@ -48,24 +82,28 @@ namespace tribos
 
       const Number pressure = law.multiplier - law.normal_penalty * gap;
       result.pressure       = value(pressure);
-      result.status         = ContactStatus::stick;
+      result.status         = ContactStatus::closed;
       force                 = scale(-pressure, normal);
 
       if (law.friction_coefficient > 0)
       {
-        // Stick trial (16): the committed traction, kept tangent to the
-        // current surface, plus the elastic part of the slip increment.
-        const Vec3<Number> old_traction = to<Number>(previous_traction);
+        result.status = ContactStatus::stick;
+        // Stick trial (16): the committed traction, turned with the
+        // surface (tangent to it), plus the elastic part of the slip
+        // increment.
         const Vec3<Number> trial =
-          (old_traction - scale(dot(old_traction, normal), normal)) +
-          scale(law.tangential_penalty, slip_increment);
-        const Number magnitude = norm(trial);
-        const Number limit     = law.friction_coefficient * pressure;
-        Vec3<Number> traction  = trial;
+          committed + scale(law.tangential_penalty, slip_increment);
+        const Number magnitude = safe_norm(trial);
+        // A node held closed by the chattering remedy may carry a tensile
+        // pressure: the Coulomb bound is never negative.
+        const Number limit = law.friction_coefficient * positive_part(pressure);
+        Vec3<Number> traction = trial;
         // Slip indicator (17) and return mapping (18)-(19). At equality
         // the node sticks: a node that slipped in the last step starts
-        // the next one on the stick branch (paper, Table 1).
-        if (value(magnitude) > value(limit))
+        // the next one on the stick branch (paper, Table 1). Equality to
+        // round-off: its trial is then its committed traction, mu t_N up
+        // to the last digit, and the last digit must not decide.
+        if (slips(magnitude, limit))
         {
           traction      = scale(limit / magnitude, trial);
           result.status = ContactStatus::slip;
@@ -106,6 +144,77 @@ namespace tribos
       t[0]           = e - scale(n[axis], n);
       t[0]           = scale(1. / norm(t[0]), t[0]);
       t[1]           = cross(n, t[0]);
+    }
+
+
+
+    /**
+     * R v for the rotation R that takes the unit vector @p from to the unit
+     * vector @p to about their common normal (from x to): R v = c v + w x v
+     * + (w . v) w / (1 + c), w = from x to, c = from . to. The committed
+     * traction's turn with the surface's normal.
+     */
+    template <typename Number>
+    Vec3<Number>
+    turn(const Vec3<double> &from,
+         const Vec3<Number> &onto,
+         const Vec3<Number> &v)
+    {
+      const Vec3<Number> f = to<Number>(from);
+      const Number       c = dot(f, onto);
+      const Vec3<Number> w = cross(f, onto);
+      return scale(c, v) + cross(w, v) + scale(dot(w, v) / (1. + c), w);
+    }
+
+    /**
+     * The committed traction @p T (tangent to the committed face) turned with
+     * the face: the rotation of the polar decomposition of the map F_s =
+     * a_alpha (x) a^alpha_o + n (x) n_o, which takes the committed tangents
+     * @p a_old and normal @p n_old to the current @p a and @p n at the same
+     * local coordinates: the rotation taking n_o to n, then about n_o the
+     * angle phi of the in-plane rest G = R1^T F_s (2 x 2 in an orthonormal
+     * frame e_1, e_2 of the old tangent plane): tan phi = (G_21 - G_12) /
+     * (G_11 + G_22). In 2D phi = 0.
+     */
+    template <int dim, typename Number>
+    Vec3<Number>
+    turn_with_face(const Vec3<double> *a_old,
+                   const Vec3<double> &n_old,
+                   const Vec3<Number> *a,
+                   const Vec3<Number> &n,
+                   const Vec3<double> &T)
+    {
+      if constexpr (dim == 2)
+        return turn(n_old, n, to<Number>(T));
+      else
+      {
+        // Dual basis of the old tangents.
+        const double m11           = dot(a_old[0], a_old[0]),
+                     m12           = dot(a_old[0], a_old[1]),
+                     m22           = dot(a_old[1], a_old[1]);
+        const double       det     = m11 * m22 - m12 * m12;
+        const Vec3<double> dual[2] = {
+          scale(1. / det, scale(m22, a_old[0]) - scale(m12, a_old[1])),
+          scale(1. / det, scale(m11, a_old[1]) - scale(m12, a_old[0]))};
+        const auto F = [&](const Vec3<double> &v)
+        {
+          return scale(dot(dual[0], v), a[0]) + scale(dot(dual[1], v), a[1]) +
+                 scale(dot(n_old, v), n);
+        };
+        const Vec3<double> e1 = scale(1. / norm(a_old[0]), a_old[0]);
+        const Vec3<double> e2 = cross(n_old, e1);
+        // G_ij = (R1 e_i) . (F_s e_j).
+        const Vec3<Number> r1 = turn(n_old, n, to<Number>(e1)),
+                           r2 = turn(n_old, n, to<Number>(e2));
+        const Vec3<Number> f1 = F(e1), f2 = F(e2);
+        const Number       c = dot(r1, f1) + dot(r2, f2);
+        const Number       s = dot(r2, f1) - dot(r1, f2);
+        const Number       r = sqrt(c * c + s * s);
+        // Rotation by phi about n_old of T (tangent to the old face).
+        const Vec3<Number> spun = scale(c / r, to<Number>(T)) +
+                                  scale(s / r, to<Number>(cross(n_old, T)));
+        return turn(n_old, n, spun);
+      }
     }
 
 
@@ -163,7 +272,8 @@ namespace tribos
         return;
       }
       result.pressure = value(pressure);
-      result.status   = ContactStatus::stick;
+      result.status   = law.friction_coefficient > 0 ? ContactStatus::stick :
+                                                       ContactStatus::closed;
 
       // Tangents in which the slave cannot move (symmetry planes,
       // Dirichlet): there the condition is T . t = 0 (what symmetry
@@ -198,9 +308,14 @@ namespace tribos
         const Vec3<Number> slip = free_part(slip_increment);
         const Vec3<Number> trial =
           tau_free + scale(law.tangential_penalty, slip);
-        const Number magnitude = norm(trial);
-        const Number limit     = law.friction_coefficient * pressure;
-        if (value(magnitude) > value(limit))
+        const Number magnitude = safe_norm(trial);
+        // The Coulomb bound of the augmented (Alart-Curnier) form, on
+        // max(0, t_N - c g_N): never negative, also in iterates whose
+        // multiplier is tensile; equal to mu t_N at convergence (g_N = 0).
+        const Number limit =
+          law.friction_coefficient *
+          positive_part(Number(pressure - law.normal_penalty * gap));
+        if (slips(magnitude, limit))
         {
           tangential            = tau_free - scale(limit / magnitude, trial);
           result.status         = ContactStatus::slip;
@@ -255,7 +370,7 @@ namespace tribos
               const unsigned int  n_master_nodes,
               const unsigned int  n_displacements,
               const Vec3<double> *multiplier,
-              const Vec3<double> &previous_traction,
+              const Vec3<AD>     &committed,
               const ContactLaw   &law,
               const double        area,
               double             *R,
@@ -274,7 +389,7 @@ namespace tribos
                        constraint,
                        result);
       else
-        interface_law(gap, normal, slip, previous_traction, law, force, result);
+        interface_law(gap, normal, slip, committed, law, force, result);
 
       for (unsigned int i = 0; i < n_out; ++i)
       {
@@ -300,9 +415,9 @@ namespace tribos
   NodeToSegment<dim>::evaluate(const Vec3<double> &slave,
                                const Vec3<double> *master,
                                const Projection   &projection,
-                               const Vec3<double> &slave_old,
                                const Vec3<double> *master_old,
-                               const Vec3<double> &previous_traction,
+                               const SlaveHistory &history,
+                               const bool          same_face,
                                const ContactLaw   &law,
                                const double        area,
                                const bool          consistent,
@@ -381,12 +496,39 @@ namespace tribos
     AD N[n_nodes], dN[n_nodes][2];
     Face::shape(xi, N, dN);
 
-    // Relative motion of the slave and the master material point under it
-    // during the step, tangential part.
-    Vec3<AD> relative = xs - to<AD>(slave_old);
+    // Slip: the projection point's motion relative to the master material
+    // point it left, measured on the master as it was.
+    Vec3<AD> relative = to<AD>(scale(-1., history.point));
     for (unsigned int k = 0; k < n_nodes; ++k)
-      relative = relative - scale(N[k], xm[k] - to<AD>(master_old[k]));
+      relative = relative + scale(N[k], to<AD>(master_old[k]));
     const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
+
+    // The committed traction turned with the face (the same face at the
+    // committed coordinates: its spin too), else with the normal.
+    Vec3<AD> committed = {{AD(0.), AD(0.), AD(0.)}};
+    if (history.active && dot(history.normal, n0) > 0)
+    {
+      if (same_face)
+      {
+        Vec3<double> xbar_old, a_old[2], n_old;
+        Face::geometry(master_old, history.xi, xbar_old, a_old, n_old);
+        Vec3<AD> xbar_now, a_now[2], n_now;
+        if (consistent)
+          Face::geometry(xm, history.xi, xbar_now, a_now, n_now);
+        else
+        {
+          Vec3<double> x_value, a_value[2], n_value;
+          Face::geometry(master, history.xi, x_value, a_value, n_value);
+          n_now = to<AD>(n_value);
+          for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
+            a_now[alpha] = to<AD>(a_value[alpha]);
+        }
+        committed =
+          turn_with_face<dim>(a_old, n_old, a_now, n_now, history.traction);
+      }
+      else
+        committed = turn(history.normal, normal, to<AD>(history.traction));
+    }
 
     apply_law<dim>(gap,
                    normal,
@@ -395,7 +537,7 @@ namespace tribos
                    n_nodes,
                    n_dofs,
                    multiplier,
-                   previous_traction,
+                   committed,
                    law,
                    area,
                    R,
@@ -414,8 +556,7 @@ namespace tribos
                              const RigidSurface<dim> &surface,
                              const Vec3<double>      &shift,
                              const Vec3<double>      &shift_old,
-                             const Vec3<double>      &slave_old,
-                             const Vec3<double>      &previous_traction,
+                             const SlaveHistory      &history,
                              const ContactLaw        &law,
                              const double             area,
                              const bool               consistent,
@@ -445,11 +586,15 @@ namespace tribos
       xbar   = xs - scale(gap, normal);
     }
 
-    // Slip: the tangential part of the slave's motion relative to the
-    // surface during the step.
+    // Slip: the projection point's motion relative to the surface (which
+    // translates) during the step, tangential part.
     const Vec3<AD> relative =
-      (xs - to<AD>(slave_old)) - to<AD>(shift - shift_old);
+      (xbar - to<AD>(history.point)) - to<AD>(shift - shift_old);
     const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
+    // The committed traction turned with the normal (a curved surface).
+    Vec3<AD> committed = {{AD(0.), AD(0.), AD(0.)}};
+    if (history.active && value(dot(to<AD>(history.normal), normal)) > 0)
+      committed = turn(history.normal, normal, to<AD>(history.traction));
 
     apply_law<dim>(gap,
                    normal,
@@ -458,7 +603,7 @@ namespace tribos
                    0,
                    n_dofs,
                    multiplier,
-                   previous_traction,
+                   committed,
                    law,
                    area,
                    R,
@@ -472,9 +617,8 @@ namespace tribos
                                   const Vec3<double> *master,
                                   const bool         *has,
                                   const double        xi_value,
-                                  const Vec3<double> &slave_old,
                                   const Vec3<double> *master_old,
-                                  const Vec3<double> &previous_traction,
+                                  const SlaveHistory &history,
                                   const ContactLaw   &law,
                                   const double        area,
                                   const bool          consistent,
@@ -531,10 +675,15 @@ namespace tribos
     normal                = scale(1. / norm(normal), normal);
     const AD gap          = dot(xs - xbar, normal);
 
-    Vec3<AD> relative = xs - to<AD>(slave_old);
+    // Slip and committed traction as for NodeToSegment (2D: the turn with
+    // the normal is the whole rotation).
+    Vec3<AD> relative = to<AD>(scale(-1., history.point));
     for (unsigned int k = 0; k < 2; ++k)
-      relative = relative - scale(N[k], xm[k] - to<AD>(master_old[k]));
-    const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
+      relative = relative + scale(N[k], to<AD>(master_old[k]));
+    const Vec3<AD> slip      = relative - scale(dot(relative, normal), normal);
+    Vec3<AD>       committed = {{AD(0.), AD(0.), AD(0.)}};
+    if (history.active && value(dot(to<AD>(history.normal), normal)) > 0)
+      committed = turn(history.normal, normal, to<AD>(history.traction));
 
     apply_law<dim>(gap,
                    normal,
@@ -543,7 +692,7 @@ namespace tribos
                    2,
                    n_displacements,
                    multiplier,
-                   previous_traction,
+                   committed,
                    law,
                    area,
                    R,

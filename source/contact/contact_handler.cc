@@ -1,6 +1,8 @@
+#include <tribos/base/exceptions.h>
 #include <tribos/contact/contact_handler.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <cmath>
@@ -23,6 +25,7 @@ namespace tribos
     , mpi_communicator(mpi_communicator)
     , consistent(parameters.tangent == "consistent")
     , all_contact_dofs(dof_handler.n_dofs())
+    , n_displacement_dofs(dof_handler.n_dofs())
   {
     std::set<types::boundary_id> existing;
     for (const auto &face :
@@ -64,8 +67,15 @@ namespace tribos
           auto swapped            = p;
           swapped.slave_boundary  = p.master_boundary;
           swapped.master_boundary = p.slave_boundary;
+          swapped.text            = p.text + " (second pass)";
           descriptions.push_back(swapped);
         }
+
+    // Hanging-node constraints: a slave node on a refinement border whose
+    // position follows its parents carries no multiplier of its own.
+    AffineConstraints<double> hanging_constraints;
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
 
     for (const auto &description : descriptions)
     {
@@ -78,22 +88,28 @@ namespace tribos
                              "constraints of both passes over-constrain the "
                              "interface (singular system). Use one-pass."));
       pair.slave = surface(description.slave_boundary);
-      double E   = std::numeric_limits<double>::max();
+      // The contact modulus: the series modulus E_s E_m / (E_s + E_m) of
+      // the two sides, E_s against a rigid surface (its limit). It is
+      // continuous at that limit and, like Hertz's E*, it is set by the
+      // softer side when the moduli differ much (a penalty on the stiffer
+      // side's scale would make soft-on-hard contact ill-conditioned).
+      double E_s = std::numeric_limits<double>::max();
       for (const auto body : pair.slave->bodies())
-        E = std::min(E, youngs_modulus(body));
+        E_s = std::min(E_s, youngs_modulus(body));
+      double E = E_s;
       if (description.rigid_surface.empty())
       {
         pair.master = surface(description.master_boundary);
+        double E_m  = std::numeric_limits<double>::max();
         for (const auto body : pair.master->bodies())
-          E = std::min(E, youngs_modulus(body));
+          E_m = std::min(E_m, youngs_modulus(body));
+        E                = E_s * E_m / (E_s + E_m);
         pair.area_factor = (parameters.passes == "two-pass" ? 0.5 : 1.);
       }
       else
         pair.rigid = rigid_surfaces.at(description.rigid_surface);
 
-      pair.youngs_modulus           = E;
-      pair.law.normal_penalty       = description.normal_penalty.resolve(E);
-      pair.law.tangential_penalty   = description.tangential_penalty.resolve(E);
+      pair.contact_modulus          = E;
       pair.law.friction_coefficient = description.friction_coefficient;
 
       const unsigned int n_slaves = pair.slave->nodes().size();
@@ -102,25 +118,15 @@ namespace tribos
         pair.owned[k] =
           locally_owned_dofs.is_element(pair.slave->nodes()[k].dofs[0]);
       pair.history.resize(n_slaves);
+      for (unsigned int k = 0; k < n_slaves; ++k)
+        pair.history[k].point = pair.slave->nodes()[k].reference;
       pair.multipliers.assign(n_slaves, 0.);
-      // Lagrange pairs: a slave node that an earlier Lagrange pair already
-      // constrains against the same master (an edge shared by two slave
-      // surfaces, e.g. the top and the side of an upset cylinder) would
-      // get a second, identical constraint: the system would be singular.
-      // It is left to the earlier pair (its multipliers are held at 0).
-      // Writing both parts as one slave surface ('3, 4 : plate') avoids
-      // the duplicate altogether.
-      pair.duplicate.assign(n_slaves, false);
+      pair.area.resize(n_slaves);
+      for (unsigned int k = 0; k < n_slaves; ++k)
+        pair.area[k] = pair.slave->nodes()[k].area * pair.area_factor;
+      pair.excluded.assign(n_slaves, false);
       if (pair.lagrange)
-        for (unsigned int k = 0; k < n_slaves; ++k)
-          for (const auto &other : pairs)
-            if (other.lagrange &&
-                other.description.rigid_surface == description.rigid_surface &&
-                other.description.master_boundary ==
-                  description.master_boundary)
-              for (const auto &node : other.slave->nodes())
-                if (node.vertex == pair.slave->nodes()[k].vertex)
-                  pair.duplicate[k] = true;
+        exclude_dependent_nodes(pair, hanging_constraints);
       if (pair.lagrange)
       {
         pair.first_multiplier = dof_handler.n_dofs() + n_multiplier_dofs;
@@ -146,6 +152,79 @@ namespace tribos
         for (const auto dof : node.dofs)
           all_contact_dofs.add_index(dof);
     all_contact_dofs.compress();
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::exclude_dependent_nodes(
+    Pair                            &pair,
+    const AffineConstraints<double> &hanging_constraints)
+  {
+    const auto                                     &nodes = pair.slave->nodes();
+    const unsigned int                              n_slaves = nodes.size();
+    std::map<types::global_dof_index, unsigned int> node_of_dof;
+    for (unsigned int k = 0; k < n_slaves; ++k)
+      node_of_dof[nodes[k].dofs[0]] = k;
+
+    // A hanging slave node: its constraint row would be the combination of
+    // its parents' rows (a singular saddle-point system). It carries no
+    // multiplier; its tributary area goes to its parents with the
+    // constraint's weights, so that the multipliers stay tractions.
+    for (unsigned int k = 0; k < n_slaves; ++k)
+    {
+      const auto dof = nodes[k].dofs[0];
+      if (!hanging_constraints.is_constrained(dof))
+        continue;
+      const auto *entries = hanging_constraints.get_constraint_entries(dof);
+      if (entries == nullptr || entries->empty())
+        continue;
+      pair.excluded[k] = true;
+      double moved     = 0;
+      for (const auto &[parent_dof, weight] : *entries)
+      {
+        const auto parent = node_of_dof.find(parent_dof);
+        if (parent != node_of_dof.end())
+        {
+          pair.area[parent->second] += weight * pair.area[k];
+          moved += weight;
+        }
+      }
+      AssertThrow(std::abs(moved - 1.) < 1e-8,
+                  ExcMessage("Contact pair <" + pair.description.text +
+                             ">: a hanging slave node whose parents are not "
+                             "on the slave surface; refine the slave surface "
+                             "as a whole."));
+      pair.area[k] = 0;
+    }
+
+    // A node that an earlier Lagrange pair already constrains against the
+    // same master (an edge shared by two slave surfaces, e.g. the top and
+    // the side of an upset cylinder) would get a second, identical
+    // constraint: it is left to the earlier pair, which takes over its
+    // tributary area here. Writing both parts as one slave surface
+    // ('3, 4 : plate') avoids the duplicate altogether.
+    for (auto &other : pairs)
+    {
+      if (!other.lagrange ||
+          other.description.rigid_surface != pair.description.rigid_surface ||
+          other.description.master_boundary != pair.description.master_boundary)
+        continue;
+      std::map<unsigned int, unsigned int> other_node_of_vertex;
+      for (unsigned int j = 0; j < other.slave->nodes().size(); ++j)
+        other_node_of_vertex[other.slave->nodes()[j].vertex] = j;
+      for (unsigned int k = 0; k < n_slaves; ++k)
+      {
+        const auto j = other_node_of_vertex.find(nodes[k].vertex);
+        if (j == other_node_of_vertex.end() || pair.excluded[k])
+          continue;
+        pair.excluded[k] = true;
+        if (!other.excluded[j->second])
+          other.area[j->second] += pair.area[k];
+        pair.area[k] = 0;
+      }
+    }
   }
 
 
@@ -183,7 +262,7 @@ namespace tribos
       if (pair.rigid)
       {
         for (unsigned int k = 0; k < pair.owned.size(); ++k)
-          pair.pairing[k].valid = pair.owned[k] && !pair.duplicate[k];
+          pair.pairing[k].valid = pair.owned[k] && !pair.excluded[k];
         continue;
       }
       positions(*pair.master, pair.master_positions);
@@ -193,7 +272,7 @@ namespace tribos
       for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
         Pairing &pairing = pair.pairing[k];
-        if (!pair.owned[k] || pair.duplicate[k])
+        if (!pair.owned[k] || pair.excluded[k])
           continue;
         if (smoothed(pair))
           pair_smoothed(pair, k);
@@ -476,7 +555,8 @@ namespace tribos
                                 TrilinosWrappers::SparseMatrix  &matrix,
                                 TrilinosWrappers::MPI::Vector   &rhs,
                                 TrilinosWrappers::MPI::Vector   &free_residual,
-                                TrilinosWrappers::MPI::Vector   &full_residual)
+                                TrilinosWrappers::MPI::Vector   &full_residual,
+                                TrilinosWrappers::MPI::Vector   &contact_forces)
   {
     constexpr unsigned int n_max =
       std::max(NodeToSegment<dim>::n_dofs, NodeToSmoothedSegment::max_dofs) +
@@ -496,7 +576,9 @@ namespace tribos
       dealii::Vector<double>               local_rhs, local_residual;
       FullMatrix<double>                   local_matrix;
 
-      const auto add = [&](const unsigned int n)
+      std::vector<types::global_dof_index> force_dofs;
+      std::vector<double>                  local_force;
+      const auto                           add = [&](const unsigned int n)
       {
         local_rhs.reinit(n);
         local_residual.reinit(n);
@@ -506,6 +588,17 @@ namespace tribos
           local_residual(i) = R[i];
         }
         full_residual.add(dofs, local_residual);
+        // The forces on the nodes: the displacement rows only.
+        force_dofs.clear();
+        local_force.clear();
+        for (unsigned int i = 0; i < n; ++i)
+          if (dofs[i] < n_displacement_dofs)
+          {
+            force_dofs.push_back(dofs[i]);
+            local_force.push_back(-R[i]);
+          }
+        if (!force_dofs.empty())
+          contact_forces.add(force_dofs, local_force);
         homogeneous.distribute_local_to_global(local_rhs, dofs, free_residual);
         if (with_matrix)
         {
@@ -524,52 +617,35 @@ namespace tribos
       for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
         pair.results[k]   = ContactPointResult();
-        const double area = pair.slave->nodes()[k].area * pair.area_factor;
+        const double area = pair.area[k];
         if (!pair.pairing[k].valid)
         {
           // Off the master (beyond its end or the search distance): the
           // distance to the master surface, a positive, open gap.
           pair.results[k].gap = pair.pairing[k].distance;
-          // An unpaired node of a Lagrange pair: Lambda = 0.
+          // An unpaired or excluded node of a Lagrange pair: Lambda = 0,
+          // scaled by the node's own tributary area (an excluded node has
+          // handed its area to others).
           if (pair.lagrange && pair.owned[k])
           {
+            const double scale = pair.slave->nodes()[k].area * pair.area_factor;
             element_dofs(pair, k, -1, dofs);
             dofs.erase(dofs.begin(), dofs.begin() + dim);
             for (unsigned int i = 0; i < dim; ++i)
             {
-              R[i] = area * pair.lagrange_values[k][i];
+              R[i] = scale * pair.lagrange_values[k][i];
               for (unsigned int j = 0; j < dim; ++j)
-                K[i * dim + j] = (i == j ? area : 0.);
+                K[i * dim + j] = (i == j ? scale : 0.);
             }
             add(dim);
           }
           continue;
         }
         const SlaveHistory &history = pair.history[k];
-        ContactLaw          law     = pair.law;
-        law.multiplier              = pair.multipliers[k];
-        law.frozen_closed           = k < pair.frozen.size() && pair.frozen[k];
-        if (pair.lagrange)
-        {
-          // The semismooth stick/slip parameter c_T: on the scale of the
-          // body's stiffness E / h unless given.
-          const auto &c_T = parameters.friction_complementarity;
-          law.tangential_penalty =
-            c_T.given ? c_T.resolve(pair.youngs_modulus) :
-                        pair.youngs_modulus / pair.slave->nodes()[k].size;
-        }
-        const Vec3<double> &previous = history.active ? history.traction : zero;
-        const Vec3<double> &x        = pair.slave_positions[k];
+        const ContactLaw    law     = node_law(pair, k, homogeneous);
+        const Vec3<double> &x       = pair.slave_positions[k];
         const Vec3<double> *lambda =
           pair.lagrange ? &pair.lagrange_values[k] : nullptr;
-        if (pair.lagrange)
-          for (unsigned int d = 0; d < dim; ++d)
-          {
-            const auto dof = pair.slave->nodes()[k].dofs[d];
-            if (homogeneous.is_constrained(dof) &&
-                homogeneous.get_constraint_entries(dof)->empty())
-              law.fixed_components |= (1u << d);
-          }
 
         if (smoothed(pair))
         {
@@ -583,9 +659,8 @@ namespace tribos
                                             xm,
                                             has,
                                             pair.pairing[k].projection.xi[0],
-                                            pair.old_slave_positions[k],
                                             xm_old,
-                                            previous,
+                                            history,
                                             law,
                                             area,
                                             consistent,
@@ -608,9 +683,9 @@ namespace tribos
             NodeToSegment<dim>::evaluate(x,
                                          xm,
                                          pair.pairing[k].projection,
-                                         pair.old_slave_positions[k],
                                          xm_old,
-                                         previous,
+                                         history,
+                                         history.face == face,
                                          law,
                                          area,
                                          consistent,
@@ -621,21 +696,21 @@ namespace tribos
         }
         else
         {
-          pair.results[k] =
-            NodeToRigid<dim>::evaluate(x,
-                                       *pair.rigid,
-                                       shift,
-                                       old_shift,
-                                       pair.old_slave_positions[k],
-                                       previous,
-                                       law,
-                                       area,
-                                       consistent,
-                                       R,
-                                       K,
-                                       lambda);
+          pair.results[k] = NodeToRigid<dim>::evaluate(x,
+                                                       *pair.rigid,
+                                                       shift,
+                                                       old_shift,
+                                                       history,
+                                                       law,
+                                                       area,
+                                                       consistent,
+                                                       R,
+                                                       K,
+                                                       lambda);
         }
 
+        if (!pair.rigid || pair.results[k].gap <= parameters.search_distance)
+          pair.ever_near = true;
         if (!pair.lagrange && pair.results[k].status == ContactStatus::open)
           continue;
 
@@ -659,6 +734,35 @@ namespace tribos
 
 
   template <int dim>
+  ContactLaw
+  ContactHandler<dim>::node_law(
+    const Pair                      &pair,
+    const unsigned int               k,
+    const AffineConstraints<double> &homogeneous) const
+  {
+    const auto  &node  = pair.slave->nodes()[k];
+    const double E     = pair.contact_modulus;
+    ContactLaw   law   = pair.law;
+    law.normal_penalty = pair.description.normal_penalty.resolve(E, node.size);
+    // Multipliers: the semismooth stick/slip parameter c_T instead of the
+    // tangential penalty.
+    law.tangential_penalty =
+      pair.lagrange ?
+        parameters.friction_complementarity.resolve(E, node.size) :
+        pair.description.tangential_penalty.resolve(E, node.size);
+    law.multiplier    = pair.multipliers[k];
+    law.frozen_closed = k < pair.frozen.size() && pair.frozen[k];
+    if (pair.lagrange)
+      for (unsigned int d = 0; d < dim; ++d)
+        if (homogeneous.is_constrained(node.dofs[d]) &&
+            homogeneous.get_constraint_entries(node.dofs[d])->empty())
+          law.fixed_components |= (1u << d);
+    return law;
+  }
+
+
+
+  template <int dim>
   void
   ContactHandler<dim>::guard_constraint_rows(
     const std::vector<types::global_dof_index> &dofs,
@@ -670,25 +774,33 @@ namespace tribos
     double                                     *K) const
   {
     // A constraint row that depends on no free unknown (e.g. a slave node
-    // fixed by Dirichlet conditions pressed onto a rigid surface) would
-    // make the system singular: its multiplier does no work on any free
-    // dof, so it is set to zero (the reaction goes to the Dirichlet
-    // boundary instead).
-    const unsigned int n = n_displacements + dim;
+    // fixed by Dirichlet conditions pressed onto a rigid surface, or whose
+    // only free motion on an inclined symmetry plane is tangential to the
+    // gap) would make the system singular: its multiplier does no work on
+    // any free dof, so it is set to zero (the reaction goes to the
+    // constraints instead). The test is on the row as the solver sees it,
+    // condensed through the constraints (u_j = sum_k c_jk u_k): entries of
+    // different constrained columns may cancel on the same free dof.
+    const unsigned int                        n = n_displacements + dim;
+    std::map<types::global_dof_index, double> condensed;
     for (unsigned int i = n_displacements; i < n; ++i)
     {
-      double free = 0, scale = 0;
+      condensed.clear();
+      double scale = 0;
       for (unsigned int j = 0; j < n; ++j)
       {
-        const double entry = std::abs(K[i * n + j]);
-        scale              = std::max(scale, entry);
+        const double entry = K[i * n + j];
+        scale              = std::max(scale, std::abs(entry));
         if (j >= n_displacements || !homogeneous.is_constrained(dofs[j]))
-          free = std::max(free, entry);
+          condensed[dofs[j]] += entry;
         else
           for (const auto &e : *homogeneous.get_constraint_entries(dofs[j]))
-            free = std::max(free, entry * std::abs(e.second));
+            condensed[e.first] += entry * e.second;
       }
-      if (free > 1e-14 * scale)
+      double free = 0;
+      for (const auto &[dof, value] : condensed)
+        free = std::max(free, std::abs(value));
+      if (free > 1e-10 * scale)
         continue;
       const unsigned int d = i - n_displacements;
       R[i]                 = area * lambda[d];
@@ -719,6 +831,23 @@ namespace tribos
         }
         else
           history.traction = {{0, 0, 0}};
+        // Where the node was: its projection point and frame on the
+        // master, or (unpaired) the node itself.
+        const Vec3<double> &x = pair.slave_positions[k];
+        if (pair.pairing[k].valid)
+        {
+          history.point  = x - scale(result.gap, result.normal);
+          history.normal = result.normal;
+          history.face   = result.face;
+          history.xi[0]  = result.xi[0];
+          history.xi[1]  = result.xi[1];
+        }
+        else
+        {
+          history.point  = x;
+          history.normal = {{0, 0, 0}};
+          history.face   = -1;
+        }
       }
       pair.old_slave_positions       = pair.slave_positions;
       pair.old_master_positions      = pair.master_positions;
@@ -903,7 +1032,7 @@ namespace tribos
         const auto &r = pair.results[k];
         if (!pair.owned[k] || r.status == ContactStatus::open)
           continue;
-        const double area = pair.slave->nodes()[k].area * pair.area_factor;
+        const double area = pair.area[k];
         forces[0] += area * r.pressure;
         forces[1] += area * norm(r.traction);
         for (unsigned int d = 0; d < 3; ++d)
@@ -912,7 +1041,7 @@ namespace tribos
         ++s.n_active;
         if (r.status == ContactStatus::stick)
           ++s.n_stick;
-        else
+        else if (r.status == ContactStatus::slip)
           ++s.n_slip;
       }
       for (auto &f : forces)
@@ -925,6 +1054,96 @@ namespace tribos
     s.n_stick  = Utilities::MPI::sum(s.n_stick, mpi_communicator);
     s.n_slip   = Utilities::MPI::sum(s.n_slip, mpi_communicator);
     return s;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactHandler<dim>::setup_warnings() const
+  {
+    std::vector<std::string> warnings;
+    for (const auto &pair : pairs)
+    {
+      const auto check =
+        [&](const Parameters::PenaltyValue &penalty, const std::string &what)
+      {
+        // k = eps h / E at every slave node.
+        double k_min = std::numeric_limits<double>::max(), k_max = 0;
+        for (const auto &node : pair.slave->nodes())
+        {
+          const double k = penalty.resolve(pair.contact_modulus, node.size) *
+                           node.size / pair.contact_modulus;
+          k_min = std::min(k_min, k);
+          k_max = std::max(k_max, k);
+        }
+        if (k_min < 1e-3 || k_max > 1e8)
+          warnings.push_back(
+            "contact pair <" + pair.description.text + ">: the " + what +
+            " is " + to_scientific(k_min) + " to " + to_scientific(k_max) +
+            " E/h over its slave nodes, outside [1e-3, 1e8] E/h (E = " +
+            to_scientific(pair.contact_modulus) + "): " +
+            (k_min < 1e-3 ? "too soft to keep the bodies apart" :
+                            "stiffer than round-off allows Newton to resolve") +
+            " (Contact/" +
+            (what == "normal penalty" ? "Penalty factor" :
+                                        "Tangential penalty factor") +
+            " or the pair's option).");
+      };
+      if (pair.lagrange)
+        continue;
+      check(pair.description.normal_penalty, "normal penalty");
+      if (pair.description.friction_coefficient > 0)
+        check(pair.description.tangential_penalty, "tangential penalty");
+    }
+    return warnings;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactHandler<dim>::describe() const
+  {
+    std::vector<std::string> lines;
+    for (const auto &pair : pairs)
+    {
+      double h_min = std::numeric_limits<double>::max(), h_max = 0;
+      for (const auto &node : pair.slave->nodes())
+      {
+        h_min = std::min(h_min, node.size);
+        h_max = std::max(h_max, node.size);
+      }
+      const auto &penalty = pair.description.normal_penalty;
+      lines.push_back(
+        "contact pair <" + pair.description.text +
+        ">: " + pair.description.method + ", " +
+        std::to_string(pair.slave->nodes().size()) +
+        " slave nodes, contact modulus E = " +
+        to_scientific(pair.contact_modulus) + ", h = " + to_scientific(h_min) +
+        " to " + to_scientific(h_max) + ", eps_N = " +
+        to_scientific(penalty.resolve(pair.contact_modulus, h_max)) + " to " +
+        to_scientific(penalty.resolve(pair.contact_modulus, h_min)));
+    }
+    return lines;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactHandler<dim>::run_warnings() const
+  {
+    std::vector<std::string> warnings;
+    for (const auto &pair : pairs)
+      if (Utilities::MPI::max(pair.ever_near ? 1 : 0, mpi_communicator) == 0)
+        warnings.push_back(
+          "contact pair <" + pair.description.text +
+          ">: no slave node came within the search distance of the master "
+          "during the run (Contact/Search distance = " +
+          to_scientific(parameters.search_distance) +
+          "); check the pair's boundary ids and the surfaces' positions.");
+    return warnings;
   }
 
 
@@ -998,8 +1217,7 @@ namespace tribos
                                           -r.traction[1],
                                           -r.traction[2],
                                           r.gap,
-                                          pair.history[k].slip +
-                                            r.slip_increment,
+                                          pair.history[k].slip,
                                           double(int(r.status)),
                                           double(k)};
         rows.insert(rows.end(), values, values + n_columns);
@@ -1051,6 +1269,24 @@ namespace tribos
     std::array<dealii::Vector<double>, 4>      &scalars,
     dealii::Vector<double>                     &shear) const
   {
+    // One physical value per node, also where a node is a slave of several
+    // pairs (two slave surfaces sharing an edge, two masters): CPRESS,
+    // CSHEAR and CSLIP are means over the pairs weighted by the node's
+    // tributary area in each (CPRESS is the node's total normal force over
+    // its total area); CPRESS and CSHEAR over the pairs that hold it
+    // closed, CSLIP over all (slip history outlives contact). CSTATUS is
+    // the status in the pair with the largest normal force, COPEN the
+    // smallest gap.
+    struct NodeValues
+    {
+      double       closed_area = 0, area = 0, pressure = 0, slip = 0;
+      double       largest_force = -1, gap = 0;
+      bool         has_gap = false;
+      int          status  = int(ContactStatus::open);
+      Vec3<double> shear{{0, 0, 0}};
+      const std::array<types::global_dof_index, dim> *dofs = nullptr;
+    };
+    std::map<unsigned int, NodeValues> per_vertex;
     for (const auto &pair : pairs)
       for (unsigned int k = 0; k < pair.owned.size(); ++k)
       {
@@ -1058,14 +1294,42 @@ namespace tribos
           continue;
         const auto &node = pair.slave->nodes()[k];
         const auto &r    = pair.results[k];
-        const auto  dof  = vertex_to_dof[node.vertex];
-        scalars[0][dof] += r.pressure;
-        scalars[1][dof] += std::isfinite(r.gap) ? r.gap : 0.;
-        scalars[2][dof] += pair.history[k].slip + r.slip_increment;
-        scalars[3][dof] += int(r.status);
+        NodeValues &v    = per_vertex[node.vertex];
+        v.dofs           = &node.dofs;
+        // Excluded nodes (area 0) still report their slip with weight 1.
+        const double area = pair.area[k] > 0 ? pair.area[k] : 1e-300;
+        v.area += area;
+        v.slip += area * pair.history[k].slip;
+        if (std::isfinite(r.gap) && (!v.has_gap || r.gap < v.gap))
+        {
+          v.gap     = r.gap;
+          v.has_gap = true;
+        }
+        if (r.status == ContactStatus::open)
+          continue;
+        v.closed_area += area;
+        v.pressure += area * r.pressure;
         for (unsigned int d = 0; d < dim; ++d)
-          shear[node.dofs[d]] -= r.traction[d];
+          v.shear[d] -= area * r.traction[d];
+        if (area * r.pressure > v.largest_force)
+        {
+          v.largest_force = area * r.pressure;
+          v.status        = int(r.status);
+        }
       }
+    for (const auto &[vertex, v] : per_vertex)
+    {
+      const auto dof = vertex_to_dof[vertex];
+      scalars[1][dof] += v.has_gap ? v.gap : 0.;
+      scalars[2][dof] += v.slip / v.area;
+      scalars[3][dof] += v.status;
+      if (v.closed_area > 0)
+      {
+        scalars[0][dof] += v.pressure / v.closed_area;
+        for (unsigned int d = 0; d < dim; ++d)
+          shear[(*v.dofs)[d]] += v.shear[d] / v.closed_area;
+      }
+    }
     for (auto &v : scalars)
       Utilities::MPI::sum(v, mpi_communicator, v);
     Utilities::MPI::sum(shear, mpi_communicator, shear);

@@ -99,13 +99,23 @@ namespace tribos
         for (unsigned int v = 0; v < n_face_nodes; ++v)
         {
           node_list[face.nodes[v]].area += N[v] * jacobian * weight * ring;
-          node_list[face.nodes[v]].size += N[v] * jacobian * weight;
+          // The face's measure (without the ring), shared by its nodes.
+          node_list[face.nodes[v]].size += jacobian * weight;
         }
       }
     }
-    if (dim == 3)
-      for (auto &node : node_list)
+    // Element size at a node: the mean measure of its faces (length in 2D,
+    // the square root of the area in 3D). Inside a uniform surface it is
+    // the tributary length; at the surface's edge it stays the element
+    // size (the tributary length would halve there, and a penalty k E / h
+    // would double: a uniform pressure would no longer give a uniform
+    // penetration).
+    for (auto &node : node_list)
+    {
+      node.size /= node.faces.size();
+      if (dim == 3)
         node.size = std::sqrt(node.size);
+    }
 
     // Local node numbers along each edge: 2D ends; 3D edges of xi_1 = -+1
     // (nodes 0,2 / 1,3) and xi_2 = -+1 (nodes 0,1 / 2,3).

@@ -30,8 +30,14 @@ namespace tribos
     full_residual              = 0;
     const double stabilization = parameters.nonlinear_solver.stabilization;
     if (stabilization > 0)
+    {
       stabilization_forces = 0;
+      external_forces      = 0;
+    }
     dealii::Vector<double> cell_stabilization(
+      stabilization > 0 ? fe->n_dofs_per_cell() : 0);
+    // The applied forces alone (for the stabilization's load ratio).
+    dealii::Vector<double> cell_external(
       stabilization > 0 ? fe->n_dofs_per_cell() : 0);
 
     FEValues<dim> fe_values(*fe,
@@ -97,6 +103,8 @@ namespace tribos
       cell->get_dof_indices(dof_indices);
       cell_matrix = 0;
       cell_rhs    = 0;
+      if (stabilization > 0)
+        cell_external = 0;
 
       fe_values.get_function_gradients(ghosted_solution, gradients);
       if (axisymmetric)
@@ -184,7 +192,12 @@ namespace tribos
             double r =
               P3[ci][0] * grad_i[0] + P3[ci][1] * grad_i[1] + P3[2][2] * hoop_i;
             if (body_force)
+            {
               r -= force[ci] * fe_values.shape_value(i, q);
+              if (stabilization > 0)
+                cell_external(i) +=
+                  force[ci] * fe_values.shape_value(i, q) * JxW;
+            }
             cell_rhs(i) -= r * JxW;
             if (with_matrix)
             {
@@ -254,7 +267,11 @@ namespace tribos
           const Tensor<1, dim> &grad_i = fe_values.shape_grad(i, q);
           double                r      = P[ci] * grad_i;
           if (body_force)
+          {
             r -= force[ci] * fe_values.shape_value(i, q);
+            if (stabilization > 0)
+              cell_external(i) += force[ci] * fe_values.shape_value(i, q) * JxW;
+          }
           cell_rhs(i) -= r * JxW;
 
           if (with_matrix)
@@ -298,9 +315,14 @@ namespace tribos
                   2. * numbers::PI * fe_face_values.quadrature_point(q)[0] :
                   1.;
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                cell_rhs(i) += force[component[i]] *
-                               fe_face_values.shape_value(i, q) *
-                               fe_face_values.JxW(q) * ring;
+              {
+                const double f = force[component[i]] *
+                                 fe_face_values.shape_value(i, q) *
+                                 fe_face_values.JxW(q) * ring;
+                cell_rhs(i) += f;
+                if (stabilization > 0)
+                  cell_external(i) += f;
+              }
             }
           }
 
@@ -313,11 +335,17 @@ namespace tribos
                          (cell->diameter() * cell->diameter());
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
+          // No spring where the motion is prescribed or follows other dofs
+          // (Dirichlet, symmetry, hanging nodes): it would only add to the
+          // reactions.
+          const types::global_dof_index dof = dof_indices[i];
+          cell_stabilization(i)             = 0;
+          if (homogeneous_constraints.is_constrained(dof))
+            continue;
           double weight = 0;
           for (unsigned int q = 0; q < n_q; ++q)
             weight += fe_values.shape_value(i, q) * fe_values.JxW(q);
-          const types::global_dof_index dof = dof_indices[i];
-          const double                  f =
+          const double f =
             k * weight * (ghosted_solution[dof] - ghosted_increment_start[dof]);
           cell_rhs(i) -= f;
           cell_stabilization(i) = f;
@@ -325,6 +353,7 @@ namespace tribos
             cell_matrix(i, i) += k * weight;
         }
         stabilization_forces.add(dof_indices, cell_stabilization);
+        external_forces.add(dof_indices, cell_external);
       }
 
       // The unconstrained residual carries the reactions.
@@ -346,13 +375,16 @@ namespace tribos
     if (contact)
     {
       TimerOutput::Scope contact_timer(timer, "contact assembly");
+      contact_forces = 0;
       contact->assemble(with_matrix,
                         constraints,
                         homogeneous_constraints,
                         system_matrix,
                         system_rhs,
                         free_residual,
-                        full_residual);
+                        full_residual,
+                        contact_forces);
+      contact_forces.compress(VectorOperation::add);
     }
 
     if (with_matrix)
@@ -363,7 +395,10 @@ namespace tribos
     free_residual.compress(VectorOperation::add);
     full_residual.compress(VectorOperation::add);
     if (stabilization > 0)
+    {
       stabilization_forces.compress(VectorOperation::add);
+      external_forces.compress(VectorOperation::add);
+    }
     return free_residual.l2_norm();
   }
 

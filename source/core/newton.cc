@@ -2,11 +2,13 @@
 #include <tribos/core/problem.h>
 
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -141,8 +143,11 @@ namespace tribos
            j >= dof_handler.n_dofs() || j % 7 == 0))
         columns.push_back(j);
 
-    double       error = 0, size = 0;
-    const double h = 1e-7 * std::max(1., solution.linfty_norm());
+    double error = 0, size = 0;
+    // The step relative to the displacement, at least 1e-9 of the model's
+    // diameter: free of the length unit.
+    const double h = 1e-7 * std::max(0.01 * GridTools::diameter(triangulation),
+                                     solution.linfty_norm());
     Vector       unit(system_owned, mpi_communicator);
     Vector       plus(system_owned, mpi_communicator);
     Vector       column(system_owned, mpi_communicator);
@@ -179,6 +184,63 @@ namespace tribos
 
 
   template <int dim>
+  double
+  Problem<dim>::multiplier_norm(const Vector &v) const
+  {
+    double sum = 0;
+    for (types::global_dof_index i = 0; i < n_multipliers; ++i)
+      sum += v[dof_handler.n_dofs() + i] * v[dof_handler.n_dofs() + i];
+    return std::sqrt(sum);
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  Problem<dim>::stabilization_measure() const
+  {
+    // Axisymmetric: radial resultants cancel around the ring; only the
+    // axial component is a force.
+    const unsigned int first = parameters.finite_element.axisymmetric ? 1 : 0;
+    std::vector<Tensor<1, dim>> per_body(materials.size());
+    Tensor<1, dim>              applied;
+    for (const auto i : locally_owned_dofs)
+    {
+      per_body[dof_body[i]][dof_component[i]] += stabilization_forces[i];
+      applied[dof_component[i]] += external_forces[i];
+    }
+    double springs = 0;
+    for (auto &f : per_body)
+    {
+      f = Utilities::MPI::sum(f, mpi_communicator);
+      for (unsigned int d = 0; d < first; ++d)
+        f[d] = 0;
+      springs = std::max(springs, f.norm());
+    }
+    applied = Utilities::MPI::sum(applied, mpi_communicator);
+    for (unsigned int d = 0; d < first; ++d)
+      applied[d] = 0;
+    double     load      = applied.norm();
+    const auto reactions = reaction_forces();
+    for (unsigned int c = 0; c + dim <= reactions.size(); c += dim)
+    {
+      double squared = 0;
+      for (unsigned int d = first; d < dim; ++d)
+        squared += reactions[c + d] * reactions[c + d];
+      load = std::max(load, std::sqrt(squared));
+    }
+    const double floor =
+      parameters.nonlinear_solver.absolute_residual_tolerance;
+    if (springs <= floor)
+      return {springs, 0.};
+    return {springs,
+            load > 0 ? springs / load :
+                       std::numeric_limits<double>::infinity()};
+  }
+
+
+
+  template <int dim>
   IncrementReport
   Problem<dim>::solve_increment(const double       time,
                                 const unsigned int step,
@@ -188,10 +250,15 @@ namespace tribos
 
     const Vector start      = solution;
     ghosted_increment_start = solution;
+    const std::vector<double> start_multipliers =
+      n_multipliers > 0 ? contact->get_multipliers() : std::vector<double>();
     if (contact)
       contact->begin_increment();
-    unsigned int              n_chattering = 0;
-    unsigned int              n_frozen     = 0;
+    unsigned int              n_chattering  = 0;
+    unsigned int              n_frozen      = 0;
+    unsigned int              n_relaxations = 0;
+    unsigned int              relaxed_at    = 0;
+    unsigned int              n_solves      = 0;
     AffineConstraints<double> increment_constraints;
     make_constraints(time, false, increment_constraints);
 
@@ -204,10 +271,13 @@ namespace tribos
     double step_length = std::numeric_limits<double>::quiet_NaN();
     double update_norm = std::numeric_limits<double>::quiet_NaN();
     // The undamped Newton correction: a line search shortens the step
-    // taken, not the distance to the solution.
+    // taken, not the distance to the solution. Displacements and
+    // multipliers (tractions) are measured apart: their units differ.
     double       newton_norm = std::numeric_limits<double>::quiet_NaN();
-    double       previous[2] = {-1, -1};
-    const double nan         = std::numeric_limits<double>::quiet_NaN();
+    double       multiplier_newton_norm = 0;
+    double       multiplier_update_norm = 0;
+    double       previous[2]            = {-1, -1};
+    const double nan = std::numeric_limits<double>::quiet_NaN();
 
     for (unsigned int iteration = 0;; ++iteration)
     {
@@ -274,14 +344,37 @@ namespace tribos
         residual_converged =
           residual <= p.residual_tolerance * std::max(reference, force_scale) +
                         p.absolute_residual_tolerance;
+        // The multipliers' update against their own change in the
+        // increment (or their size, if larger).
+        double multiplier_change = 0;
+        if (n_multipliers > 0)
+        {
+          const std::vector<double> lambda         = contact->get_multipliers();
+          double                    squared_change = 0, squared = 0;
+          for (unsigned int i = 0; i < lambda.size(); ++i)
+          {
+            squared_change += (lambda[i] - start_multipliers[i]) *
+                              (lambda[i] - start_multipliers[i]);
+            squared += lambda[i] * lambda[i];
+          }
+          multiplier_change = std::sqrt(std::max(squared_change, squared));
+        }
         const bool update_converged =
-          update_norm <= p.increment_tolerance * change || change == 0;
+          (update_norm <= p.increment_tolerance * change || change == 0) &&
+          multiplier_update_norm <=
+            p.increment_tolerance * multiplier_change + traction_floor;
         // A Newton correction at round-off level of the solution means the
-        // residual cannot get smaller in floating point: accept it
-        // (e.g. a stress-free rigid motion, whose residual is noise). The
-        // full correction, not the step the line search took: a step cut
-        // to 1/32 on a kink is small without the iterate being converged.
-        const bool stagnated = newton_norm <= 1e-12 * change;
+        // residual cannot get smaller in floating point: accept it, but
+        // only if the residual is itself at a level no stress of physical
+        // meaning leaves (stagnation_residual_bound), so that a small
+        // correction against a large displacement (a body moved far) does
+        // not pass off an unconverged iterate. The full correction, not
+        // the step the line search took: a step cut to 1/32 on a kink is
+        // small without the iterate being converged.
+        const bool stagnated = newton_norm <= 1e-12 * change &&
+                               multiplier_newton_norm <=
+                                 1e-12 * multiplier_change + traction_floor &&
+                               residual <= stagnation_residual_bound;
         if ((residual_converged && update_converged) || stagnated)
         {
           if (n_frozen > 0)
@@ -294,25 +387,41 @@ namespace tribos
                 "the master (Contact/Chattering remedy = freeze): cutting "
                 "the increment");
           }
-          n_total_newton_iterations += iteration;
           IncrementReport report;
-          report.n_iterations = iteration;
-          report.residual     = residual;
-          report.n_chattering = n_chattering;
-          if (parameters.nonlinear_solver.stabilization > 0)
+          if (p.stabilization > 0)
           {
-            // Magnitude of the resultant of the stabilization forces.
-            Tensor<1, dim> resultant;
-            for (const auto i : locally_owned_dofs)
-              resultant[dof_component[i]] += stabilization_forces[i];
-            resultant = Utilities::MPI::sum(resultant, mpi_communicator);
-            report.stabilization_force = resultant.norm();
+            const auto [force, ratio]  = stabilization_measure();
+            report.stabilization_force = force;
+            report.stabilization_ratio = ratio;
+            if (ratio > p.stabilization_limit)
+            {
+              // The springs still carry part of the load: anchor them at
+              // this iterate and go on (pseudo-transient continuation).
+              if (n_relaxations >= p.max_stabilization_relaxations)
+                throw NonConvergence(
+                  "the stabilization springs still carry " +
+                  to_scientific(ratio) + " of the load after " +
+                  std::to_string(n_relaxations) +
+                  " re-anchorings (Nonlinear solver/Stabilization limit = " +
+                  to_scientific(p.stabilization_limit) +
+                  ", Maximum stabilization relaxations)");
+              ++n_relaxations;
+              relaxed_at              = iteration;
+              ghosted_increment_start = solution;
+              reference               = 0;
+              continue;
+            }
           }
+          n_total_newton_iterations += n_solves;
+          report.n_iterations  = n_solves;
+          report.residual      = residual;
+          report.n_chattering  = n_chattering;
+          report.n_relaxations = n_relaxations;
           return report;
         }
-        if (iteration >= p.max_iterations)
+        if (iteration - relaxed_at >= p.max_iterations)
           throw NonConvergence("Newton did not converge in " +
-                               std::to_string(iteration) +
+                               std::to_string(iteration - relaxed_at) +
                                " iterations (|R| = " + to_scientific(residual) +
                                "; Nonlinear solver/Maximum iterations)");
       }
@@ -326,6 +435,8 @@ namespace tribos
       }
 
       newton_update = 0;
+      ++n_linear_solves;
+      ++n_solves;
       solve_linear_system(newton_update);
       constraints.distribute(newton_update);
 
@@ -365,8 +476,10 @@ namespace tribos
         apply_update(newton_update, 1.);
         ghosted_solution = solution;
       }
-      newton_norm = displacement_norm(newton_update);
-      update_norm = step_length * newton_norm;
+      newton_norm            = displacement_norm(newton_update);
+      update_norm            = step_length * newton_norm;
+      multiplier_newton_norm = multiplier_norm(newton_update);
+      multiplier_update_norm = step_length * multiplier_newton_norm;
     }
   }
 

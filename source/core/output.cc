@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 
 namespace tribos
 {
@@ -64,6 +65,7 @@ namespace tribos
                                         "time",
                                         "load_factor",
                                         "newton_iterations",
+                                        "newton_iterations_all",
                                         "residual",
                                         "cutbacks",
                                         "wall_time"};
@@ -110,7 +112,11 @@ namespace tribos
       columns.push_back("chattering_nodes");
     }
     if (parameters.nonlinear_solver.stabilization > 0)
+    {
       columns.push_back("stabilization_force");
+      columns.push_back("stabilization_ratio");
+      columns.push_back("stabilization_relaxations");
+    }
     history_csv =
       std::make_unique<CsvWriter>(dir + "/history.csv", columns, root);
     convergence_csv =
@@ -195,6 +201,7 @@ namespace tribos
                                time,
                                time / parameters.time_stepping.end_time,
                                double(report.n_iterations),
+                               double(report.n_iterations_all),
                                report.residual,
                                double(n_cutbacks),
                                wall_time};
@@ -220,7 +227,11 @@ namespace tribos
       row.push_back(report.n_chattering);
     }
     if (parameters.nonlinear_solver.stabilization > 0)
+    {
       row.push_back(report.stabilization_force);
+      row.push_back(report.stabilization_ratio);
+      row.push_back(report.n_relaxations);
+    }
     history_csv->add_row(row);
   }
 
@@ -396,8 +407,23 @@ namespace tribos
     DoFHandler<dim>                       node_dof_handler(triangulation);
     std::array<dealii::Vector<double>, 4> contact_scalars;
     dealii::Vector<double>                contact_shear;
+    Vector                                contact_force;
     if (contact)
     {
+      // The contact force on every node (slave and master), the nodal
+      // resultant of the contact tractions.
+      Vector owned(locally_owned_dofs, mpi_communicator);
+      for (const auto i : locally_owned_dofs)
+        owned[i] = contact_forces[i];
+      owned.compress(VectorOperation::insert);
+      contact_force.reinit(locally_owned_dofs,
+                           locally_relevant_dofs,
+                           mpi_communicator);
+      contact_force = owned;
+      data_out.add_data_vector(contact_force,
+                               std::vector<std::string>(dim, "contact_force"),
+                               DataOut<dim>::type_dof_data,
+                               interpretation);
       node_dof_handler.distribute_dofs(node_fe);
       std::vector<types::global_dof_index> vertex_to_dof(
         triangulation.n_vertices(),
@@ -469,6 +495,17 @@ namespace tribos
 
   template <int dim>
   void
+  Problem<dim>::warn(const std::string &message)
+  {
+    warnings.push_back(message);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::cerr << "tribos: WARNING: " << message << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
   Problem<dim>::write_summary(const std::string &status)
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
@@ -491,13 +528,19 @@ namespace tribos
             << "contact dofs      "
             << (contact ? contact->contact_dofs().n_elements() : 0) << '\n'
             << "multipliers       " << n_multipliers << '\n'
-            << "bodies            " << materials.size() << '\n'
+            << "bodies            " << n_bodies << '\n'
             << "MPI processes     "
             << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'
             << "increments        " << n_converged_increments << '\n'
             << "newton iterations " << n_total_newton_iterations << '\n'
-            << "cutbacks          " << n_total_cutbacks << "\n\n"
-            << "section               calls    wall [s]  share\n";
+            << "newton iterations (all attempts) " << n_linear_solves << '\n'
+            << "cutbacks          " << n_total_cutbacks << '\n';
+        if (parameters.nonlinear_solver.stabilization > 0)
+          out << "largest stabilization ratio " << largest_stabilization_ratio
+              << '\n';
+        for (const auto &w : warnings)
+          out << "warning           " << w << '\n';
+        out << "\nsection               calls    wall [s]  share\n";
         for (const auto &[section, seconds] : wall)
           out << std::left << std::setw(20) << section << std::right
               << std::setw(8) << static_cast<unsigned int>(calls.at(section))

@@ -3,6 +3,7 @@
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
@@ -129,6 +130,10 @@ namespace tribos
                                  body,
                                  "Linear hardening modulus")}});
     };
+    std::set<types::material_id> bodies;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      bodies.insert(cell->material_id());
+    n_bodies = bodies.size();
     materials.clear();
     axisymmetric_materials.clear();
     for (unsigned int body = 0; body <= max_body; ++body)
@@ -247,6 +252,8 @@ namespace tribos
       // Contact couples this process's slave nodes to master nodes
       // anywhere: their dofs count as relevant (ghosted, constrained).
       locally_relevant_dofs.add_indices(contact->contact_dofs());
+      for (const auto &w : contact->setup_warnings())
+        warn(w);
     }
 
     // The system's unknowns: dofs, then the contact multipliers.
@@ -281,6 +288,7 @@ namespace tribos
     system_rhs.reinit(system_owned, mpi_communicator);
     free_residual.reinit(system_owned, mpi_communicator);
     full_residual.reinit(system_owned, mpi_communicator);
+    contact_forces.reinit(system_owned, mpi_communicator);
     solution.reinit(locally_owned_dofs, mpi_communicator);
     ghosted_solution.reinit(locally_owned_dofs,
                             locally_relevant_dofs,
@@ -289,7 +297,34 @@ namespace tribos
                                    locally_relevant_dofs,
                                    mpi_communicator);
     stabilization_forces.reinit(system_owned, mpi_communicator);
+    external_forces.reinit(system_owned, mpi_communicator);
     dof_component.assign(dof_handler.n_dofs(), 0);
+    dof_body.assign(dof_handler.n_dofs(), 0);
+    {
+      std::vector<types::global_dof_index> indices(fe->n_dofs_per_cell());
+      double                               volume = 0, E_max = 0;
+      FEValues<dim>                        fe_values(*fe,
+                              quadrature,
+                              update_JxW_values | update_quadrature_points);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(indices);
+        for (const auto i : indices)
+          dof_body[i] = cell->material_id();
+        E_max =
+          std::max(E_max, materials[cell->material_id()]->youngs_modulus());
+        fe_values.reinit(cell);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          volume += fe_values.JxW(q) *
+                    (parameters.finite_element.axisymmetric ?
+                       2 * numbers::PI * fe_values.quadrature_point(q)[0] :
+                       1.);
+      }
+      const double exponent =
+        parameters.finite_element.axisymmetric ? 2. / 3. : (dim - 1.) / dim;
+      stagnation_residual_bound = 1e-10 * E_max * std::pow(volume, exponent);
+      traction_floor            = 1e-12 * E_max;
+    }
     for (unsigned int d = 0; d < dim; ++d)
     {
       ComponentMask mask(dim, false);

@@ -3,6 +3,7 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace tribos
@@ -191,6 +192,23 @@ namespace tribos
         prm.parse_input(filename);
       }
       apply_overrides(prm, overrides);
+    }
+
+
+
+    std::vector<std::string>
+    input_file_warnings(const std::string &filename)
+    {
+      std::ifstream in(filename);
+      for (std::string line; std::getline(in, line);)
+      {
+        const auto first = line.find_first_not_of(" \t");
+        if (first != std::string::npos && line.compare(first, 4, "set ") == 0)
+          return {};
+      }
+      return {"parameter file <" + filename +
+              "> sets no entry: every parameter has its default "
+              "(tribos --print-parameters lists them)."};
     }
 
 

@@ -1,6 +1,7 @@
 #include <tribos/base/text.h>
 #include <tribos/parameters/contact.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 
@@ -17,27 +18,56 @@ namespace tribos
         return result;
       result.given = true;
 
-      std::string number = text;
-      const auto  star   = text.find('*');
-      if (text == "E")
+      // Without blanks: '100 * E / h' reads as '100*E/h'.
+      std::string compact;
+      for (const char c : text)
+        if (c != ' ' && c != '\t')
+          compact += c;
+      std::string number    = compact;
+      const auto  ends_with = [&compact](const std::string &tail)
       {
-        result.relative_to_E = true;
-        number               = "1";
+        return compact.size() >= tail.size() &&
+               compact.compare(compact.size() - tail.size(),
+                               tail.size(),
+                               tail) == 0;
+      };
+      const std::string allowed =
+        "Write 'k*E/h' (k times the pair's contact modulus E over the "
+        "slave node's element size h, free of the length unit; e.g. "
+        "'100*E/h') or an absolute value in stress per length (e.g. "
+        "'1e5').";
+      if (compact == "E/h")
+      {
+        result.per_node = true;
+        number          = "1";
       }
-      else if (star != std::string::npos &&
-               Text::trim(text.substr(star + 1)) == "E")
+      else if (ends_with("*E/h"))
       {
-        result.relative_to_E = true;
-        number               = Text::trim(text.substr(0, star));
+        result.per_node = true;
+        number          = compact.substr(0, compact.size() - 4);
+      }
+      else
+      {
+        // A bare number is absolute; anything else naming E lacks the h.
+        char        *end = nullptr;
+        const double v   = std::strtod(compact.c_str(), &end);
+        (void)v;
+        AssertThrow(*end == '\0' || compact.find('E') == std::string::npos,
+                    dealii::ExcMessage(
+                      "Parameter <" + entry + "> = <" + text +
+                      ">: a multiple of E without the element size depends "
+                      "on the length unit (the same model in metres gets a "
+                      "penalty 1000 times softer relative to its mesh than "
+                      "in millimetres) and is no longer accepted. " +
+                      allowed));
       }
       char *end    = nullptr;
       result.value = std::strtod(number.c_str(), &end);
-      AssertThrow(!number.empty() && *end == '\0' && result.value > 0,
-                  dealii::ExcMessage(
-                    "Parameter <" + entry + "> = <" + text +
-                    ">: expected a positive number (absolute penalty) or "
-                    "'factor*E' (a multiple of the smaller Young's modulus "
-                    "of the pair), e.g. '1e5' or '100*E'."));
+      AssertThrow(!number.empty() && *end == '\0' && result.value > 0 &&
+                    std::isfinite(result.value),
+                  dealii::ExcMessage("Parameter <" + entry + "> = <" + text +
+                                     ">: expected a positive number. " +
+                                     allowed));
       return result;
     }
 
@@ -73,12 +103,21 @@ namespace tribos
                         "solver, one MPI process); the active set and "
                         "stick/slip follow from lambda - eps_N g_N inside "
                         "Newton, so eps_N then only affects the iterates.");
-      prm.declare_entry("Penalty factor",
-                        "100*E",
-                        dealii::Patterns::Anything(),
-                        "Normal penalty eps_N: an absolute value (stress per "
-                        "length) or 'factor*E', a multiple of the smaller "
-                        "Young's modulus of the pair (the paper's '10E').");
+      prm.declare_entry(
+        "Penalty factor",
+        "100*E/h",
+        dealii::Patterns::Anything(),
+        "Normal penalty eps_N: 'k*E/h' (per slave node: k times the pair's "
+        "contact modulus E over the node's element size h, its tributary "
+        "length in 2D or the square root of its tributary area in 3D; "
+        "independent of the length unit) or an absolute value in stress per "
+        "length (model units; e.g. the paper's '10E' in mm is 10 x E "
+        "written out). E = E_s E_m / (E_s + E_m) for two deformable bodies "
+        "(the series modulus of the two sides, E/2 for equal materials) and "
+        "E_s against a rigid surface (the limit E_m -> infinity), E_s and "
+        "E_m the smallest Young's modulus of the bodies of each side. k is "
+        "the contact stiffness relative to the element's own: penetration "
+        "is about p h / (k E). 'k*E' without '/h' is refused.");
       prm.declare_entry("Tangential penalty factor",
                         "",
                         dealii::Patterns::Anything(),
@@ -86,15 +125,15 @@ namespace tribos
                         "syntax; empty means equal to the normal penalty.");
       prm.declare_entry(
         "Friction complementarity parameter",
-        "",
+        "E/h",
         dealii::Patterns::Anything(),
         "Lagrange multipliers only: c_T of the semismooth stick/slip "
-        "decision |T + c_T dg_T| <= mu t_N (a solver parameter: it changes "
-        "the iterates, never the converged solution). Same syntax as the "
-        "penalties; empty means E / h of each slave node (h its tributary "
-        "length), the scale of the body's stiffness. Much larger values "
-        "(e.g. 1000*E) let tiny slips flip the stick/slip state and can "
-        "make Newton cycle on 3D frictional contact.");
+        "decision |T + c_T dg_T| <= mu max(0, t_N - c g_N) (a solver "
+        "parameter: it changes the iterates, never the converged solution). "
+        "Same syntax as the penalties; the default E/h is the scale of the "
+        "body's stiffness at the node. Much larger values (e.g. 1000*E/h) "
+        "let tiny slips flip the stick/slip state and can make Newton cycle "
+        "on 3D frictional contact.");
       prm.declare_entry("Friction coefficient",
                         "0",
                         dealii::Patterns::Double(0),
@@ -205,6 +244,10 @@ namespace tribos
       friction_complementarity =
         PenaltyValue::parse(prm.get("Friction complementarity parameter"),
                             "Contact/Friction complementarity parameter");
+      AssertThrow(friction_complementarity.given,
+                  dealii::ExcMessage("Parameter <Contact/Friction "
+                                     "complementarity parameter> must not be "
+                                     "empty (default: E/h)."));
 
       rigid_surfaces.clear();
       const std::string rigid_entry = "Contact/Rigid surfaces";
@@ -354,8 +397,38 @@ namespace tribos
             !PenaltyValue::parse(prm.get("Tangential penalty factor"), "")
                .given)
           pair.tangential_penalty = pair.normal_penalty;
+        pair.text = item;
         pairs.push_back(pair);
       }
+
+      // The same interface written twice with slave and master swapped:
+      // with multipliers both sets of node-to-segment constraints hold the
+      // same gap (a singular saddle-point system). Penalty may sum both.
+      const auto meet =
+        [](const std::set<unsigned int> &a, const std::set<unsigned int> &b)
+      {
+        for (const auto id : a)
+          if (b.count(id) > 0)
+            return true;
+        return false;
+      };
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        for (unsigned int j = i + 1; j < pairs.size(); ++j)
+          AssertThrow(
+            !(pairs[i].rigid_surface.empty() &&
+              pairs[j].rigid_surface.empty() &&
+              meet(pairs[i].slave_boundary, pairs[j].master_boundary) &&
+              meet(pairs[i].master_boundary, pairs[j].slave_boundary) &&
+              (pairs[i].method == "lagrange multiplier" ||
+               pairs[j].method == "lagrange multiplier")),
+            dealii::ExcMessage(
+              "Parameter <" + pair_entry + ">: pairs <" + pairs[i].text +
+              "> and <" + pairs[j].text +
+              "> are the same interface with slave and master swapped. "
+              "With Lagrange multipliers both sets of constraints hold the "
+              "same gap and over-constrain it (singular system): keep one "
+              "of them (penalty may use both, like Contact/Passes = "
+              "two-pass)."));
       prm.leave_subsection();
     }
 

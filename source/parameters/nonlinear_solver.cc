@@ -45,19 +45,36 @@ namespace tribos
                         "(columns of the contact dofs and a sample of the "
                         "others) and print the relative error. Slow; for "
                         "verification and debugging (serial runs).");
-      prm.declare_entry("Stabilization factor",
-                        "0",
-                        dealii::Patterns::Double(0),
-                        "0: off. Otherwise every dof gets a spring to its "
-                        "position at the start of the increment, of "
-                        "stiffness factor * E / h^2 * (integral of its shape "
-                        "function) (E of the body, h the cell diameter): it "
-                        "holds bodies that are free until contact closes "
-                        "(force control, initially apart) and vanishes as "
-                        "the motion stops. The magnitude of the resultant "
-                        "of these forces is written to history.csv "
-                        "(stabilization_force) and must end small against "
-                        "the loads.");
+      prm.declare_entry(
+        "Stabilization factor",
+        "0",
+        dealii::Patterns::Double(0),
+        "0: off. Otherwise every dof gets a spring to an anchor, its "
+        "position at the start of the increment, of stiffness factor * E / "
+        "h^2 * (integral of its shape function) (E of the body, h the cell "
+        "diameter): it holds bodies that are free until contact closes "
+        "(force control, initially apart). An increment is converged only "
+        "when the springs carry at most Stabilization limit of the load; "
+        "until then the anchors are moved to the converged iterate and "
+        "Newton goes on (a pseudo-transient continuation), so the final "
+        "state is an equilibrium of the loads alone up to that fraction. "
+        "The ratio is written to history.csv (stabilization_ratio) and its "
+        "largest value to summary.txt.");
+      prm.declare_entry(
+        "Stabilization limit",
+        "1e-3",
+        dealii::Patterns::Double(0, 1),
+        "Largest accepted ratio of the stabilization forces to the load at "
+        "the end of an increment: the largest magnitude of the springs' "
+        "resultant on one body over the largest of the magnitudes of the "
+        "applied force resultant (tractions and body forces) and of the "
+        "reaction resultant of each Dirichlet condition.");
+      prm.declare_entry("Maximum stabilization relaxations",
+                        "100",
+                        dealii::Patterns::Integer(0),
+                        "Re-anchorings of the springs per increment at "
+                        "most before the increment counts as not converged "
+                        "(cut back).");
       prm.leave_subsection();
     }
 
@@ -76,6 +93,9 @@ namespace tribos
       max_line_search_steps = prm.get_integer("Maximum line search steps");
       check_tangent         = prm.get_bool("Check tangent");
       stabilization         = prm.get_double("Stabilization factor");
+      stabilization_limit   = prm.get_double("Stabilization limit");
+      max_stabilization_relaxations =
+        prm.get_integer("Maximum stabilization relaxations");
       prm.leave_subsection();
     }
   } // namespace Parameters

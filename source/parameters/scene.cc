@@ -191,9 +191,10 @@ namespace tribos
       prm.declare_entry("Refinement radius",
                         "0.25",
                         Patterns::Double(0),
-                        "Cells whose centre lies within this distance of "
-                        "the initial contact point, relative to the radius, "
-                        "are refined in every contact refinement.");
+                        "Cells that reach within this distance of the "
+                        "initial contact point (a vertex or the centre "
+                        "inside it), relative to the radius, are refined "
+                        "in every contact refinement.");
       prm.leave_subsection();
     }
 

@@ -17,17 +17,28 @@ namespace tribos
    *   R_master_a = -N_a(xi) A_k (T - t_N n),
    *
    * with t_N = eps_N <-g_N>, the trial tangential traction
-   * T_trial = P_T T_n + eps_T dg_T, and T = T_trial (stick) or
-   * mu t_N T_trial / |T_trial| (slip). The slip increment of the step is
-   * the tangential part of the motion of the slave relative to the master
-   * material point under it,
-   *   dg_T = P_T [ (x_s - x_s,n) - sum_a N_a(xi) (x_a - x_a,n) ],
-   * (n: last converged step), which for a master at rest is the paper's
-   * a_alpha dxi^alpha of (16) to first order, and which involves only the
-   * element's own nodes: the tangent stays exact when the node crosses to
-   * another master face within a step. The paper's covariant components
-   * t_alpha = T . a_alpha and norm sqrt(t a^ab t) are the same objects
-   * written in the face basis.
+   * T_trial = Q T_n + eps_T dg_T, and T = T_trial (stick) or
+   * mu t_N T_trial / |T_trial| (slip). Both parts are objective: a rigid
+   * rotation of the bodies in contact changes neither.
+   *
+   * The slip increment of the step is the motion of the slave's projection
+   * point relative to the master material point it left,
+   *   dg_T = P_T [ sum_a N_a(xi) x_a,n - xbar_n ],
+   * with xbar_n the committed projection point and x_a,n the master nodes
+   * at the last converged step: the paper's a_alpha dxi^alpha of (16),
+   * measured on the master as it was and tangential to it as it is. It
+   * vanishes under a rigid motion whatever the penetration (the relative
+   * motion of the slave node itself would see the penetration g_N n turn
+   * with the bodies: a spurious slip g_N dtheta per step), and it holds for
+   * a node that crosses to another master face within a step.
+   *
+   * Q turns the committed traction with the surface: the rotation taking
+   * the committed normal to the current one, times (3D, same master face
+   * as at the last step) the spin of the face about its normal, the
+   * rotation of the polar decomposition of the face's in-plane
+   * deformation at the committed local coordinates. A rigid rotation is
+   * reproduced exactly; the paper's covariant components t_alpha = T .
+   * a_alpha do the same to first order.
    *
    * The residual is templated on the number type and differentiated by
    * Sacado forward AD: with Tangent = consistent the local coordinates xi
@@ -47,11 +58,11 @@ namespace tribos
 
     /**
      * Evaluate the element of the slave at @p slave against the face with
-     * nodes @p master and projection @p projection. @p slave_old and
-     * @p master_old are the same nodes at the last converged step,
-     * @p previous_traction the committed T_n. R gets n_dofs entries (slave
-     * dofs first, then master node by node); K, if not null, n_dofs^2
-     * (row-major, K_ij = dR_i/du_j).
+     * nodes @p master and projection @p projection. @p master_old are the
+     * face's nodes at the last converged step, @p history the slave's
+     * committed state; @p same_face whether that state is on this face.
+     * R gets n_dofs entries (slave dofs first, then master node by node);
+     * K, if not null, n_dofs^2 (row-major, K_ij = dR_i/du_j).
      *
      * With @p multiplier (the slave's Lagrange multiplier, a traction
      * vector) the element is the Lagrange multiplier element instead: the
@@ -63,9 +74,9 @@ namespace tribos
     evaluate(const Vec3<double> &slave,
              const Vec3<double> *master,
              const Projection   &projection,
-             const Vec3<double> &slave_old,
              const Vec3<double> *master_old,
-             const Vec3<double> &previous_traction,
+             const SlaveHistory &history,
+             const bool          same_face,
              const ContactLaw   &law,
              const double        area,
              const bool          consistent,
@@ -101,9 +112,8 @@ namespace tribos
              const Vec3<double> *master,
              const bool         *has,
              const double        xi,
-             const Vec3<double> &slave_old,
              const Vec3<double> *master_old,
-             const Vec3<double> &previous_traction,
+             const SlaveHistory &history,
              const ContactLaw   &law,
              const double        area,
              const bool          consistent,
@@ -120,7 +130,7 @@ namespace tribos
 
     /**
      * @p shift and @p shift_old are the surface's translation now and at
-     * the last converged step, @p slave_old the slave's position then.
+     * the last converged step, @p history the slave's committed state.
      * @p multiplier as for NodeToSegment.
      */
     static ContactPointResult
@@ -128,8 +138,7 @@ namespace tribos
              const RigidSurface<dim> &surface,
              const Vec3<double>      &shift,
              const Vec3<double>      &shift_old,
-             const Vec3<double>      &slave_old,
-             const Vec3<double>      &previous_traction,
+             const SlaveHistory      &history,
              const ContactLaw        &law,
              const double             area,
              const bool               consistent,

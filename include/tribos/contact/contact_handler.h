@@ -97,7 +97,9 @@ namespace tribos
     /**
      * Add the contact terms: -R into @p rhs and dR/du into @p matrix with
      * @p constraints (if @p with_matrix), -R into @p free_residual with
-     * @p homogeneous, R into @p full_residual unconstrained.
+     * @p homogeneous, R into @p full_residual unconstrained, and the
+     * contact forces on the nodes (-R on the displacement dofs, slave and
+     * master alike) into @p contact_forces.
      */
     void
     assemble(const bool                       with_matrix,
@@ -106,7 +108,8 @@ namespace tribos
              TrilinosWrappers::SparseMatrix  &matrix,
              TrilinosWrappers::MPI::Vector   &rhs,
              TrilinosWrappers::MPI::Vector   &free_residual,
-             TrilinosWrappers::MPI::Vector   &full_residual);
+             TrilinosWrappers::MPI::Vector   &full_residual,
+             TrilinosWrappers::MPI::Vector   &contact_forces);
 
     /**
      * Number of Lagrange multiplier unknowns: dim per slave node of every
@@ -180,6 +183,29 @@ namespace tribos
     ContactStatistics
     statistics() const;
 
+    /**
+     * Warnings about the input, known after setup: a pair whose normal or
+     * tangential penalty is below 1e-3 E/h or above 1e8 E/h at some slave
+     * node (too soft to keep the bodies apart, or stiffer than round-off
+     * allows). Collective.
+     */
+    std::vector<std::string>
+    setup_warnings() const;
+
+    /**
+     * One line per pair for the log: enforcement, contact modulus, the
+     * range of the slave nodes' element sizes h and of the normal penalty.
+     */
+    std::vector<std::string>
+    describe() const;
+
+    /**
+     * Warnings known at the end of a run: a pair none of whose slave nodes
+     * ever came within Contact/Search distance of its master. Collective.
+     */
+    std::vector<std::string>
+    run_warnings() const;
+
     /** Names of the history.csv columns that statistics() fills. */
     std::vector<std::string>
     column_names() const;
@@ -220,11 +246,18 @@ namespace tribos
       std::shared_ptr<ContactSurface<dim>> slave;
       std::shared_ptr<ContactSurface<dim>> master;
       std::shared_ptr<RigidSurface<dim>>   rigid;
-      ContactLaw                           law;
-      /** The smaller Young's modulus of the pair. */
-      double             youngs_modulus = 0;
-      double             area_factor    = 1;
+      /** The friction coefficient; penalties are per node (node_law()). */
+      ContactLaw law;
+      /** The contact modulus E of the penalties 'k*E/h' (see the
+       * constructor). */
+      double             contact_modulus = 0;
+      double             area_factor     = 1;
       ContactSearch<dim> search;
+      /** Per slave node: tributary area times area_factor, with the areas
+       * of excluded nodes handed to the nodes that carry them. */
+      std::vector<double> area;
+      /** Whether a slave node within the search distance was ever met. */
+      bool ever_near = false;
 
       std::vector<bool> owned;
       /** Status at the last tracked evaluation and changes in the
@@ -232,8 +265,10 @@ namespace tribos
       std::vector<int>          tracked_status;
       std::vector<unsigned int> status_changes;
       std::vector<bool>         frozen;
-      /** Slave nodes left to an earlier pair (see the constructor). */
-      std::vector<bool>   duplicate;
+      /** Lagrange pairs: slave nodes without a multiplier of their own
+       * (hanging nodes, nodes left to an earlier pair), see
+       * exclude_dependent_nodes(). */
+      std::vector<bool>   excluded;
       std::vector<double> multipliers, committed_multipliers;
       /** Lagrange multiplier method: first multiplier number, and per
        * slave node the traction vector Lambda (current and committed). */
@@ -303,6 +338,28 @@ namespace tribos
     pair_smoothed(Pair &pair, const unsigned int k) const;
 
     /**
+     * Lagrange pairs: mark the slave nodes whose constraint rows would
+     * depend on other rows (hanging nodes, from @p hanging_constraints;
+     * nodes that an earlier pair already constrains against the same
+     * master) and hand their tributary areas to the nodes that carry them.
+     */
+    void
+    exclude_dependent_nodes(
+      Pair                            &pair,
+      const AffineConstraints<double> &hanging_constraints);
+
+    /**
+     * The interface law at slave node @p k: the pair's friction, the
+     * penalties resolved at the node's element size, the augmented
+     * multiplier, the chattering hold and (multipliers) the components
+     * fixed by @p homogeneous.
+     */
+    ContactLaw
+    node_law(const Pair                      &pair,
+             const unsigned int               k,
+             const AffineConstraints<double> &homogeneous) const;
+
+    /**
      * Lagrange pairs: replace every constraint row of an element (@p R,
      * @p K with n_displacements + dim rows) that depends on no free
      * unknown by Lambda_d = 0.
@@ -321,10 +378,12 @@ namespace tribos
     bool                       consistent;
     std::vector<Pair>          pairs;
     IndexSet                   all_contact_dofs;
-    types::global_dof_index    n_multiplier_dofs = 0;
-    bool                       outdated          = true;
-    double                     time              = 0;
-    double                     committed_time    = 0;
+    /** Unknowns below this number are displacements (then multipliers). */
+    types::global_dof_index n_displacement_dofs;
+    types::global_dof_index n_multiplier_dofs = 0;
+    bool                    outdated          = true;
+    double                  time              = 0;
+    double                  committed_time    = 0;
   };
 } // namespace tribos
 

@@ -36,25 +36,40 @@ namespace tribos
     bool frozen_closed = false;
   };
 
-  /** Contact status of a slave node, as written to CSTATUS. */
+  /**
+   * Contact status of a slave node, as written to CSTATUS: open, closed and
+   * sticking, closed and slipping (Abaqus' numbers), or closed on a
+   * frictionless interface (no tangential state to stick or slip).
+   */
   enum class ContactStatus : int
   {
-    open  = 0,
-    stick = 1,
-    slip  = 2
+    open   = 0,
+    stick  = 1,
+    slip   = 2,
+    closed = 3
   };
 
   /**
    * History of one slave node, committed only when a step converges (like
    * plastic history): whether it was in contact, its tangential traction
-   * vector T_n and the accumulated slip. (The positions at the last
-   * converged step, which the slip increment needs, are kept per surface.)
+   * vector T_n, the accumulated slip, and where it was: the projection
+   * point and normal on the master (the slave's own position and a zero
+   * normal if it was not paired), the master face and its local
+   * coordinates. The frame lets the next step's trial traction turn with
+   * the surface and measure the slip against the master material point
+   * it left, so that a rigid motion of the bodies in contact changes
+   * neither (objectivity). (The nodes' positions at the last converged
+   * step are kept per surface.)
    */
   struct SlaveHistory
   {
     bool         active = false;
     Vec3<double> traction{{0, 0, 0}};
     double       slip = 0;
+    Vec3<double> point{{0, 0, 0}};
+    Vec3<double> normal{{0, 0, 0}};
+    int          face  = -1;
+    double       xi[2] = {0, 0};
   };
 
   /** What the evaluation of one contact point reports (values only). */

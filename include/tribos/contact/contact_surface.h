@@ -37,8 +37,10 @@ namespace tribos
       /** Tributary area (24): integral of the face shape function of the
        * node over the surface, in the reference configuration. */
       double area = 0;
-      /** Tributary length: the area without the ring factor 2 pi r
-       * (2D) or its square root (3D); the element size at the node. */
+      /** The element size at the node: the mean length (2D) or the
+       * square root of the mean area (3D) of its faces, without the ring
+       * factor 2 pi r. Inside a uniform surface this is the tributary
+       * length; at the surface's edges it is not halved. */
       double size = 0;
       /** Faces this node belongs to. */
       std::vector<unsigned int> faces;

@@ -29,14 +29,22 @@ namespace tribos
   /** Counters of one converged increment, reported and written to CSV. */
   struct IncrementReport
   {
+    /** Newton iterations of the accepted solve(s). */
     unsigned int n_iterations = 0;
-    double       residual     = 0;
+    /** Newton iterations of every attempt at this increment, the failed
+     * ones that were cut back included (= linear solves). */
+    unsigned int n_iterations_all = 0;
+    double       residual         = 0;
     /** Uzawa multiplier updates (augmented Lagrangian). */
     unsigned int n_augmentations = 0;
     /** Most chattering slave nodes seen in an iteration. */
     unsigned int n_chattering = 0;
-    /** l2 norm of the stabilization forces at convergence. */
+    /** Largest magnitude of the stabilization springs' resultant on one
+     * body at convergence, and its ratio to the load. */
     double stabilization_force = 0;
+    double stabilization_ratio = 0;
+    /** Re-anchorings of the stabilization springs. */
+    unsigned int n_relaxations = 0;
   };
 
   /**
@@ -127,6 +135,18 @@ namespace tribos
     displacement_norm(const Vector &v) const;
     double
     tangent_error(const double time);
+    /** l2 norm of the multiplier part of a system vector (0 if none). */
+    double
+    multiplier_norm(const Vector &v) const;
+    /**
+     * The stabilization springs at the last assembly: the largest magnitude
+     * of their resultant on one body, and its ratio to the load (the
+     * largest magnitude of the applied force resultant and of each
+     * Dirichlet condition's reaction resultant). Axisymmetric: axial
+     * components only.
+     */
+    std::pair<double, double>
+    stabilization_measure() const;
 
     /* output.cc */
     void
@@ -178,14 +198,37 @@ namespace tribos
     Vector                         system_rhs;
     Vector                         free_residual;
     Vector                         full_residual;
-    Vector                         solution;
-    Vector                         ghosted_solution;
+    /** The contact forces on the nodes at the last assembly (VTU). */
+    Vector contact_forces;
+    Vector solution;
+    Vector ghosted_solution;
     /** Solution at the start of the increment (stabilization springs). */
     Vector ghosted_increment_start;
     /** The stabilization forces of the last assembly. */
     Vector stabilization_forces;
-    /** Vector component of every dof (indexed by global dof number). */
-    std::vector<unsigned char> dof_component;
+    /** The applied (traction and body) forces of the last assembly, kept
+     * only with stabilization. */
+    Vector external_forces;
+    /** Vector component and body of every dof (by global dof number). */
+    std::vector<unsigned char>      dof_component;
+    std::vector<types::material_id> dof_body;
+    /** Number of distinct bodies (material ids) of the mesh. */
+    unsigned int n_bodies = 0;
+    /**
+     * Newton's round-off stagnation is accepted only below this residual:
+     * 1e-10 E_max A, the force of a stress of 1e-10 times the largest
+     * Young's modulus on the area scale A = V^((d-1)/d) of the model
+     * (axisymmetric: V with the ring factor, A = V^(2/3)).
+     */
+    double stagnation_residual_bound = 0;
+    /** Tractions below 1e-12 E_max are round-off: the floor of the
+     * multipliers' convergence test. */
+    double traction_floor = 0;
+    /** Warnings for the user, printed when found and listed in
+     * summary.txt. */
+    std::vector<std::string> warnings;
+    void
+    warn(const std::string &message);
 
     /** The contact pairs; null when the scene has none. */
     std::unique_ptr<ContactHandler<dim>> contact;
@@ -233,8 +276,12 @@ namespace tribos
     std::vector<std::pair<double, std::string>> pvd_records;
 
     unsigned int n_total_newton_iterations = 0;
-    unsigned int n_total_cutbacks          = 0;
-    unsigned int n_converged_increments    = 0;
+    /** Every Newton iteration (one linear solve each), failed attempts
+     * included. */
+    unsigned int n_linear_solves             = 0;
+    unsigned int n_total_cutbacks            = 0;
+    unsigned int n_converged_increments      = 0;
+    double       largest_stabilization_ratio = 0;
   };
 } // namespace tribos
 

@@ -41,6 +41,10 @@ namespace tribos
       Output             output;
       Verification       verification;
 
+      /** Warnings about the input itself (e.g. a file that sets nothing),
+       * reported by the run with its own. */
+      std::vector<std::string> input_warnings;
+
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
@@ -77,6 +81,13 @@ namespace tribos
      * Read only `Dimension` from the file and the overrides, ignoring every
      * other entry, so that main() can dispatch to the templated code.
      */
+    /**
+     * Warnings about the file @p filename itself: one that sets no entry
+     * (empty, or comments only) runs every default, which is rarely meant.
+     */
+    std::vector<std::string>
+    input_file_warnings(const std::string &filename);
+
     unsigned int
     read_dimension(const std::string              &filename,
                    const std::vector<std::string> &overrides);

@@ -12,25 +12,34 @@ namespace tribos
   namespace Parameters
   {
     /**
-     * A penalty written as `1e5` (absolute) or `100*E` / `E` (a multiple of
-     * the smaller Young's modulus of the bodies of a pair, the paper's
-     * convention; the result has units of stress per model length).
+     * A penalty (or complementarity parameter) written as an absolute value
+     * `1e5` (stress per model length) or as `k*E/h` (also `E/h`): k times
+     * the pair's contact modulus E over the slave node's element size h
+     * (its tributary length in 2D, the square root of its tributary area
+     * in 3D). The relative form is free of the length unit: the same model
+     * in mm or m gets the same penalty relative to its mesh. The old form
+     * `k*E` (no h) is refused, because it is not: the same model in metres
+     * would get a penalty 1000 times softer relative to its elements than
+     * in millimetres.
      */
     struct PenaltyValue
     {
-      double value         = 0;
-      bool   relative_to_E = false;
-      bool   given         = false;
+      double value    = 0;
+      bool   per_node = false;
+      bool   given    = false;
 
       /** Parse @p text for the parameter @p entry (for messages). */
       static PenaltyValue
       parse(const std::string &text, const std::string &entry);
 
-      /** The penalty for a pair whose smaller Young's modulus is @p E. */
+      /**
+       * The penalty at a slave node of element size @p h in a pair whose
+       * contact modulus is @p E.
+       */
       double
-      resolve(const double E) const
+      resolve(const double E, const double h) const
       {
-        return relative_to_E ? value * E : value;
+        return per_node ? value * E / h : value;
       }
     };
 
@@ -65,6 +74,8 @@ namespace tribos
       /** Name of the rigid master surface (empty if deformable). */
       std::string rigid_surface;
 
+      /** The item as written, for messages. */
+      std::string  text;
       std::string  method;
       PenaltyValue normal_penalty;
       PenaltyValue tangential_penalty;
@@ -91,10 +102,7 @@ namespace tribos
       unsigned int chattering_flips;
       /** freeze, cutback or none. */
       std::string chattering_remedy;
-      /**
-       * Lagrange multipliers: the semismooth stick/slip parameter c_T; not
-       * given: E / h of each slave node.
-       */
+      /** Lagrange multipliers: the semismooth stick/slip parameter c_T. */
       PenaltyValue friction_complementarity;
 
       static void

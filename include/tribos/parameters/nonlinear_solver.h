@@ -22,6 +22,10 @@ namespace tribos
       bool         check_tangent;
       /** Stabilization spring factor (0: off). */
       double stabilization;
+      /** Largest accepted ratio of the stabilization forces to the load. */
+      double stabilization_limit;
+      /** Re-anchorings of the springs per increment at most. */
+      unsigned int max_stabilization_relaxations;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,46 @@
+"""Suspicious but legal input runs (exit status 0) and warns on stderr and in
+summary.txt, naming the entry: a parameter file that sets nothing; a
+penalty below 1e-3 E/h or above 1e8 E/h (relative or absolute); a contact
+pair whose slave never comes within the search distance of its master.
+Sensible input warns about nothing."""
+
+import sys
+
+from tribos_test import setup, run, check, finish
+
+tribos, tests, out = setup(sys.argv)
+block = tests + "/sliding_block.prm"
+cases = [
+    ("empty_file", tests + "/bad_input/empty.prm", [],
+     "sets no entry"),
+    ("soft_penalty", block, ["Contact/Penalty factor=1e-4*E/h"],
+     "Contact/Penalty factor"),
+    ("stiff_penalty", block, ["Contact/Penalty factor=1e9*E/h"],
+     "Contact/Penalty factor"),
+    ("stiff_absolute_penalty", block, ["Contact/Penalty factor=1e12"],
+     "outside [1e-3, 1e8] E/h"),
+    ("soft_tangential_penalty", block,
+     ["Contact/Tangential penalty factor=1e-5*E/h"],
+     "Contact/Tangential penalty factor"),
+    ("never_near", block,
+     ["Contact/Rigid surfaces=plane : plane : 0, -1, 0 : 0, 1, 0 : 0, 0",
+      "Contact/Search distance=0.1"],
+     "no slave node came within the search distance"),
+]
+# Only the pressing (t <= 1): a friction drag at 1e9 E/h does not converge
+# (which is the warning's point).
+short = ["Time stepping/End time=1", "Time stepping/Number of steps=2"]
+for name, prm, sets, expected in cases:
+    folder = out + "/" + name
+    result = run(tribos, prm, folder, sets + (short if prm == block else []))
+    summary = open(folder + "/summary.txt").read()
+    warnings = [l for l in result.stderr.splitlines() if "WARNING" in l]
+    check(result.returncode == 0 and any(expected in w for w in warnings) and
+          expected in summary,
+          "%s: runs, warns <%s>" % (name, warnings[0] if warnings else ""))
+
+result = run(tribos, block, out + "/sensible")
+check("WARNING" not in result.stderr and
+      "warning" not in open(out + "/sensible/summary.txt").read(),
+      "sensible input: no warning")
+finish()

@@ -1,0 +1,54 @@
+"""Lagrange multipliers on a locally refined 3D slave surface: the Hertz
+quarter sphere (parameters/hertz_3d.prm, coarsened: 2 contact refinements
+within 0.1 R) pressed 0.03 R so that the contact zone (radius about
+sqrt(R delta) = 0.17 R) crosses the border of the refinement, where the
+slave surface has hanging nodes. A hanging node's constraint row would be
+a combination of its parents' rows (a singular saddle-point system: the
+direct solver failed and the increment was cut back); it carries no
+multiplier of its own and hands its tributary area to its parents.
+Asserted: no failed linear solve or cutback; closed nodes beyond the
+refinement border; the force equals that of a stiff penalty (1e4 E/h,
+whose hanging nodes follow their parents through the constraints) within
+0.5 % and Hertz's P = 4/3 E* sqrt(R) delta^(3/2) within 15 % (this coarse
+mesh)."""
+
+import math
+import sys
+
+from tribos_test import setup, run, read_csv, check, finish
+
+tribos, tests, out = setup(sys.argv)
+prm = tests + "/../parameters/hertz_3d.prm"
+common = ["Linear solver/Type=direct",
+          "Scene/Cylinder over block/Contact refinements=2",
+          "Scene/Cylinder over block/Refinement radius=0.1",
+          "Boundary conditions/Dirichlet=11 : z : -0.03*t",
+          "Output/Write VTU=false"]
+forces = {}
+for name, sets in (("lagrange", ["Contact/Method=lagrange multiplier"]),
+                   ("penalty", ["Contact/Penalty factor=1e4*E/h"])):
+    folder = out + "/" + name
+    run(tribos, prm, folder, common + sets)
+    history = read_csv(folder + "/history.csv")
+    forces[name] = 4 * history[-1]["pair0_normal_force"]
+    if name == "lagrange":
+        check(all(r["cutbacks"] == 0 and
+                  r["newton_iterations_all"] == r["newton_iterations"]
+                  for r in history),
+              "lagrange: no failed solve, no cutback")
+        nodes = read_csv(folder + "/contact-00002.csv")
+        reach = max(math.hypot(n["x"], n["y"]) for n in nodes
+                    if n["CSTATUS"] > 0)
+        check(reach > 0.11, "lagrange: the contact zone (to r = %.3f) "
+              "crosses the refinement border at 0.1" % reach)
+
+delta, R, E_star = 0.03, 1.0, 1.0 / (1 - 0.3 ** 2)
+hertz = 4.0 / 3.0 * E_star * math.sqrt(R) * delta ** 1.5
+difference = abs(forces["lagrange"] - forces["penalty"]) / forces["penalty"]
+check(difference < 0.005, "lagrange force %.6g equals penalty 1e4 E/h's %.6g "
+      "within %.2f %%" % (forces["lagrange"], forces["penalty"],
+                          100 * difference))
+error = abs(forces["lagrange"] - hertz) / hertz
+check(error < 0.15, "lagrange force within %.1f %% of Hertz's %.6g"
+      % (100 * error, hertz))
+finish()
