@@ -1,4 +1,7 @@
-"""Lagrange multipliers on a locally refined 3D slave surface: the Hertz
+"""Constraint rows of Lagrange multipliers that depend on other rows or on
+no free unknown must not reach the solver (a singular saddle point).
+
+(1) Hanging nodes on a locally refined 3D slave surface: the Hertz
 quarter sphere (parameters/hertz_3d.prm, coarsened: 2 contact refinements
 within 0.1 R) pressed 0.03 R so that the contact zone (radius about
 sqrt(R delta) = 0.17 R) crosses the border of the refinement, where the
@@ -10,7 +13,16 @@ Asserted: no failed linear solve or cutback; closed nodes beyond the
 refinement border; the force equals that of a stiff penalty (1e4 E/h,
 whose hanging nodes follow their parents through the constraints) within
 0.5 % and Hertz's P = 4/3 E* sqrt(R) delta^(3/2) within 15 % (this coarse
-mesh)."""
+mesh).
+
+(2) A slave node on an inclined symmetry plane (45 degrees; deal.II
+writes u_x = -u_y) pressed on a rigid plane parallel to it
+(tests/inclined_square.msh): the node moves only along the plane, its gap
+cannot change, and its normal row vanishes once condensed through the
+constraint, although no entry does (c/sqrt 2 on u_x and u_y). The row is
+replaced by Lambda = 0 (the reaction goes to the symmetry plane); before,
+the test looked at the largest entry, kept the row, and the direct solver
+failed at every cutback."""
 
 import math
 import sys
@@ -51,4 +63,23 @@ check(difference < 0.005, "lagrange force %.6g equals penalty 1e4 E/h's %.6g "
 error = abs(forces["lagrange"] - hertz) / hertz
 check(error < 0.15, "lagrange force within %.1f %% of Hertz's %.6g"
       % (100 * error, hertz))
+
+folder = out + "/inclined"
+run(tribos, tests + "/sliding_block.prm", folder, [
+    "Scene/Name=gmsh", "Scene/Mesh file=%s/inclined_square.msh" % tests,
+    "Boundary conditions/Symmetry=1",
+    "Boundary conditions/Dirichlet=3 : xy : -0.00707107*t, -0.00707107*t",
+    "Contact/Pairs=2 : plane",
+    "Contact/Rigid surfaces=plane : plane : 0, 0, 0 : "
+    "0.70710678118654752, 0.70710678118654752, 0 : 0, 0",
+    "Contact/Method=lagrange multiplier", "Contact/Friction coefficient=0",
+    "Time stepping/End time=1", "Time stepping/Number of steps=2"])
+history = read_csv(folder + "/history.csv")
+corner = [n for n in read_csv(folder + "/contact-00002.csv")
+          if abs(n["x"]) < 1e-9 and abs(n["y"]) < 1e-9]
+check(len(history) == 2 and all(r["cutbacks"] == 0 for r in history) and
+      len(corner) == 1 and corner[0]["CSTATUS"] == 3 and
+      corner[0]["CPRESS"] == 0,
+      "inclined symmetry plane: the corner's redundant row holds Lambda = "
+      "0, no cutback")
 finish()
