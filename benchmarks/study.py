@@ -146,7 +146,13 @@ def hertz_errors(dim, e_star, force_scale, radius=1.0):
         with open(os.path.join(folder, "contact-%05d.csv" % step)) as f:
             nodes = [{k: float(v) if v not in ("", "nan") else math.nan
                       for k, v in r.items()} for r in csv.DictReader(f)]
-        p0_h, a_h, points = hertz_fit(nodes, dim)
+        try:
+            p0_h, a_h, points = hertz_fit(nodes, dim)
+        except ValueError:
+            # The pressures are not a Hertz ellipse at all (p^2 has no
+            # positive intercept): no error to report.
+            print("    (no Hertz fit of the pressures of %s)" % folder)
+            return {}
         profile = math.sqrt(sum(
             (p - p0 * math.sqrt(max(0.0, 1 - x * x / (a * a)))) ** 2
             for x, p in points) / sum(p * p for x, p in points))

@@ -132,7 +132,6 @@ namespace tribos
         pair.first_multiplier = dof_handler.n_dofs() + n_multiplier_dofs;
         n_multiplier_dofs += dim * n_slaves;
         pair.lagrange_values.assign(n_slaves, {{0, 0, 0}});
-        pair.committed_lagrange_values = pair.lagrange_values;
       }
       pair.committed_multipliers.assign(n_slaves, 0.);
       pair.pairing.resize(n_slaves);
@@ -259,6 +258,12 @@ namespace tribos
     for (auto &pair : pairs)
     {
       positions(*pair.slave, pair.slave_positions);
+      // The multipliers are unknowns of the system: read them here.
+      if (pair.lagrange)
+        for (unsigned int k = 0; k < pair.owned.size(); ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            pair.lagrange_values[k][d] =
+              solution[pair.first_multiplier + dim * k + d];
       if (pair.rigid)
       {
         for (unsigned int k = 0; k < pair.owned.size(); ++k)
@@ -849,10 +854,9 @@ namespace tribos
           history.face   = -1;
         }
       }
-      pair.old_slave_positions       = pair.slave_positions;
-      pair.old_master_positions      = pair.master_positions;
-      pair.committed_multipliers     = pair.multipliers;
-      pair.committed_lagrange_values = pair.lagrange_values;
+      pair.old_slave_positions   = pair.slave_positions;
+      pair.old_master_positions  = pair.master_positions;
+      pair.committed_multipliers = pair.multipliers;
     }
     committed_time = time;
   }
@@ -864,10 +868,7 @@ namespace tribos
   ContactHandler<dim>::restore()
   {
     for (auto &pair : pairs)
-    {
-      pair.multipliers     = pair.committed_multipliers;
-      pair.lagrange_values = pair.committed_lagrange_values;
-    }
+      pair.multipliers = pair.committed_multipliers;
   }
 
 
@@ -947,34 +948,6 @@ namespace tribos
         }
     }
     return Utilities::MPI::sum(n_chattering, mpi_communicator);
-  }
-
-
-
-  template <int dim>
-  std::vector<double>
-  ContactHandler<dim>::get_multipliers() const
-  {
-    std::vector<double> values;
-    values.reserve(n_multiplier_dofs);
-    for (const auto &pair : pairs)
-      for (const auto &lambda : pair.lagrange_values)
-        values.insert(values.end(), lambda.begin(), lambda.begin() + dim);
-    return values;
-  }
-
-
-
-  template <int dim>
-  void
-  ContactHandler<dim>::set_multipliers(const std::vector<double> &values)
-  {
-    AssertDimension(values.size(), n_multiplier_dofs);
-    auto it = values.begin();
-    for (auto &pair : pairs)
-      for (auto &lambda : pair.lagrange_values)
-        for (unsigned int d = 0; d < dim; ++d)
-          lambda[d] = *it++;
   }
 
 

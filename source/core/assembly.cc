@@ -8,9 +8,9 @@ namespace tribos
 {
   template <int dim>
   double
-  Problem<dim>::assemble(const bool                       with_matrix,
-                         const AffineConstraints<double> &constraints,
-                         const double                     time)
+  Problem<dim>::assemble_system(const bool                       with_matrix,
+                                const AffineConstraints<double> &constraints,
+                                const double                     time)
   {
     if (contact)
     {
@@ -21,10 +21,11 @@ namespace tribos
     }
 
     TimerOutput::Scope t(timer, "assembly");
+    const Vector      &u = ghosted_displacement();
     if (with_matrix)
     {
-      system_matrix = 0;
-      system_rhs    = 0;
+      matrix = 0;
+      rhs    = 0;
     }
     free_residual              = 0;
     full_residual              = 0;
@@ -106,14 +107,13 @@ namespace tribos
       if (stabilization > 0)
         cell_external = 0;
 
-      fe_values.get_function_gradients(ghosted_solution, gradients);
+      fe_values.get_function_gradients(u, gradients);
       if (axisymmetric)
-        fe_values.get_function_values(ghosted_solution, values);
+        fe_values.get_function_values(u, values);
       if (f_bar)
       {
         fe_values_centre.reinit(cell);
-        fe_values_centre.get_function_gradients(ghosted_solution,
-                                                centre_gradients);
+        fe_values_centre.get_function_gradients(u, centre_gradients);
         F0 = unit_symmetric_tensor<dim>();
         for (unsigned int c = 0; c < dim; ++c)
           F0[c] += centre_gradients[0][c];
@@ -121,7 +121,7 @@ namespace tribos
         if (axisymmetric)
         {
           // The volume change of the centre includes its hoop stretch.
-          fe_values_centre.get_function_values(ghosted_solution, centre_values);
+          fe_values_centre.get_function_values(u, centre_values);
           centre_radius = fe_values_centre.quadrature_point(0)[0];
           F3_0          = 0;
           for (unsigned int a = 0; a < 2; ++a)
@@ -346,7 +346,7 @@ namespace tribos
           for (unsigned int q = 0; q < n_q; ++q)
             weight += fe_values.shape_value(i, q) * fe_values.JxW(q);
           const double f =
-            k * weight * (ghosted_solution[dof] - ghosted_increment_start[dof]);
+            k * weight * (ghosted_solution[dof] - ghosted_anchors[dof]);
           cell_rhs(i) -= f;
           cell_stabilization(i) = f;
           if (with_matrix)
@@ -367,8 +367,8 @@ namespace tribos
         constraints.distribute_local_to_global(cell_matrix,
                                                cell_rhs,
                                                dof_indices,
-                                               system_matrix,
-                                               system_rhs);
+                                               matrix,
+                                               rhs);
     }
 
     t.stop();
@@ -379,8 +379,8 @@ namespace tribos
       contact->assemble(with_matrix,
                         constraints,
                         homogeneous_constraints,
-                        system_matrix,
-                        system_rhs,
+                        matrix,
+                        rhs,
                         free_residual,
                         full_residual,
                         contact_forces);
@@ -389,8 +389,8 @@ namespace tribos
 
     if (with_matrix)
     {
-      system_matrix.compress(VectorOperation::add);
-      system_rhs.compress(VectorOperation::add);
+      matrix.compress(VectorOperation::add);
+      rhs.compress(VectorOperation::add);
     }
     free_residual.compress(VectorOperation::add);
     full_residual.compress(VectorOperation::add);

@@ -162,7 +162,7 @@ namespace tribos
     const QGauss<dim> error_quadrature(parameters.finite_element.degree + 3);
     dealii::Vector<float> cellwise(triangulation.n_active_cells());
     VectorTools::integrate_difference(dof_handler,
-                                      ghosted_solution,
+                                      ghosted_displacement(),
                                       *exact_displacement,
                                       cellwise,
                                       error_quadrature,
@@ -171,7 +171,7 @@ namespace tribos
                                                         cellwise,
                                                         VectorTools::L2_norm);
     VectorTools::integrate_difference(dof_handler,
-                                      ghosted_solution,
+                                      ghosted_displacement(),
                                       *exact_displacement,
                                       cellwise,
                                       error_quadrature,
@@ -187,12 +187,12 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::write_history_row(const unsigned int     step,
-                                  const unsigned int     increment,
-                                  const double           time,
-                                  const IncrementReport &report,
-                                  const unsigned int     n_cutbacks,
-                                  const double           wall_time)
+  Problem<dim>::write_increment(const unsigned int     step,
+                                const unsigned int     increment,
+                                const double           time,
+                                const IncrementReport &report,
+                                const unsigned int     n_cutbacks,
+                                const double           wall_time)
   {
     // full_residual holds R at the converged state: the last assembly was
     // the one that found convergence.
@@ -216,7 +216,7 @@ namespace tribos
     for (const auto &dofs : probe_dofs)
       for (const auto dof : dofs)
         row.push_back(Utilities::MPI::sum(locally_owned_dofs.is_element(dof) ?
-                                            double(solution[dof]) :
+                                            double(owned_solution[dof]) :
                                             0.,
                                           mpi_communicator));
     if (contact)
@@ -298,15 +298,15 @@ namespace tribos
       {
         const unsigned int index = cell->active_cell_index();
         fe_values.reinit(cell);
-        fe_values.get_function_gradients(ghosted_solution, gradients);
+        fe_values.get_function_gradients(ghosted_displacement(), gradients);
         if (axisymmetric)
-          fe_values.get_function_values(ghosted_solution, values);
+          fe_values.get_function_values(ghosted_displacement(), values);
         double J0 = 1;
         if (parameters.finite_element.f_bar)
         {
           // The stress of the F-bar element is that of F_bar = s F.
           fe_values_centre.reinit(cell);
-          fe_values_centre.get_function_gradients(ghosted_solution,
+          fe_values_centre.get_function_gradients(ghosted_displacement(),
                                                   centre_gradients);
           Tensor<2, dim> F0 = unit_symmetric_tensor<dim>();
           for (unsigned int c = 0; c < dim; ++c)
@@ -315,7 +315,7 @@ namespace tribos
           if (axisymmetric)
           {
             // With the hoop stretch of the centre (as in assembly).
-            fe_values_centre.get_function_values(ghosted_solution,
+            fe_values_centre.get_function_values(ghosted_displacement(),
                                                  centre_values);
             J0 *= 1. +
                   centre_values[0](0) / fe_values_centre.quadrature_point(0)[0];
@@ -391,7 +391,7 @@ namespace tribos
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
                      DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(ghosted_solution,
+    data_out.add_data_vector(ghosted_displacement(),
                              std::vector<std::string>(dim, "displacement"),
                              DataOut<dim>::type_dof_data,
                              interpretation);
@@ -510,6 +510,7 @@ namespace tribos
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
+    const StepperTotals totals = stepper ? stepper->totals() : StepperTotals();
     const auto wall  = timer.get_summary_data(TimerOutput::total_wall_time);
     const auto calls = timer.get_summary_data(TimerOutput::n_calls);
     double     total = 0;
@@ -531,13 +532,14 @@ namespace tribos
             << "bodies            " << n_bodies << '\n'
             << "MPI processes     "
             << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'
-            << "increments        " << n_converged_increments << '\n'
-            << "newton iterations " << n_total_newton_iterations << '\n'
-            << "newton iterations (all attempts) " << n_linear_solves << '\n'
-            << "cutbacks          " << n_total_cutbacks << '\n';
+            << "increments        " << totals.n_increments << '\n'
+            << "newton iterations " << totals.n_newton_iterations << '\n'
+            << "newton iterations (all attempts) "
+            << (newton ? newton->n_linear_solves() : 0) << '\n'
+            << "cutbacks          " << totals.n_cutbacks << '\n';
         if (parameters.nonlinear_solver.stabilization > 0)
-          out << "largest stabilization ratio " << largest_stabilization_ratio
-              << '\n';
+          out << "largest stabilization ratio "
+              << totals.largest_stabilization_ratio << '\n';
         for (const auto &w : warnings)
           out << "warning           " << w << '\n';
         out << "\nsection               calls    wall [s]  share\n";

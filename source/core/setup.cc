@@ -285,17 +285,18 @@ namespace tribos
     make_constraints(0, true, homogeneous_constraints);
     make_sparsity();
 
-    system_rhs.reinit(system_owned, mpi_communicator);
+    rhs.reinit(system_owned, mpi_communicator);
     free_residual.reinit(system_owned, mpi_communicator);
     full_residual.reinit(system_owned, mpi_communicator);
     contact_forces.reinit(system_owned, mpi_communicator);
-    solution.reinit(locally_owned_dofs, mpi_communicator);
-    ghosted_solution.reinit(locally_owned_dofs,
-                            locally_relevant_dofs,
-                            mpi_communicator);
-    ghosted_increment_start.reinit(locally_owned_dofs,
-                                   locally_relevant_dofs,
-                                   mpi_communicator);
+    owned_solution.reinit(system_owned, mpi_communicator);
+    increment_start.reinit(system_owned, mpi_communicator);
+    ghosted_solution.reinit(system_owned, system_relevant, mpi_communicator);
+    ghosted_anchors.reinit(system_owned, system_relevant, mpi_communicator);
+    if (n_multipliers > 0)
+      displacement.reinit(locally_owned_dofs,
+                          locally_relevant_dofs,
+                          mpi_communicator);
     stabilization_forces.reinit(system_owned, mpi_communicator);
     external_forces.reinit(system_owned, mpi_communicator);
     dof_component.assign(dof_handler.n_dofs(), 0);
@@ -322,8 +323,8 @@ namespace tribos
       }
       const double exponent =
         parameters.finite_element.axisymmetric ? 2. / 3. : (dim - 1.) / dim;
-      stagnation_residual_bound = 1e-10 * E_max * std::pow(volume, exponent);
-      traction_floor            = 1e-12 * E_max;
+      stagnation_bound = 1e-10 * E_max * std::pow(volume, exponent);
+      traction_floor   = 1e-12 * E_max;
     }
     for (unsigned int d = 0; d < dim; ++d)
     {
@@ -367,7 +368,7 @@ namespace tribos
                                                system_owned,
                                                mpi_communicator,
                                                system_relevant);
-    system_matrix.reinit(system_owned, system_owned, dsp, mpi_communicator);
+    matrix.reinit(system_owned, system_owned, dsp, mpi_communicator);
   }
 
 
@@ -436,15 +437,6 @@ namespace tribos
   }
 
 
-
-  template <int dim>
-  void
-  Problem<dim>::commit_history()
-  {
-    history_old = history_new;
-    if (contact)
-      contact->commit();
-  }
 
   template class Problem<2>;
   template class Problem<3>;

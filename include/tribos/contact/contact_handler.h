@@ -69,9 +69,10 @@ namespace tribos
     }
 
     /**
-     * Search at the displacement @p solution (ghosted on contact_dofs())
-     * and time @p time: pair every slave node with a master face (or its
-     * rigid surface). Collective.
+     * Search at the unknowns @p solution (displacements ghosted on
+     * contact_dofs(), then the multipliers) and time @p time: pair every
+     * slave node with a master face (or its rigid surface), and read the
+     * multipliers. Collective.
      */
     void
     update(const TrilinosWrappers::MPI::Vector &solution, const double time);
@@ -123,13 +124,6 @@ namespace tribos
     {
       return n_multiplier_dofs;
     }
-
-    /** The multipliers in the order of their global numbers. */
-    std::vector<double>
-    get_multipliers() const;
-
-    void
-    set_multipliers(const std::vector<double> &values);
 
     /** Start counting status changes for a new increment. */
     void
@@ -272,11 +266,11 @@ namespace tribos
       std::vector<double> multipliers, committed_multipliers;
       /** Lagrange multiplier method: first multiplier number, and per
        * slave node the traction vector Lambda (current and committed). */
-      bool                      lagrange         = false;
-      types::global_dof_index   first_multiplier = 0;
-      std::vector<Vec3<double>> lagrange_values, committed_lagrange_values;
-      std::vector<SlaveHistory> history;
-      std::vector<Pairing>      pairing;
+      bool                            lagrange         = false;
+      types::global_dof_index         first_multiplier = 0;
+      std::vector<Vec3<double>>       lagrange_values;
+      std::vector<SlaveHistory>       history;
+      std::vector<Pairing>            pairing;
       std::vector<ContactPointResult> results;
       std::vector<Vec3<double>>       slave_positions, old_slave_positions;
       std::vector<Vec3<double>>       master_positions, old_master_positions;

@@ -5,6 +5,8 @@
 #include <tribos/material/material.h>
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/postprocess/csv_writer.h>
+#include <tribos/solver/load_stepper.h>
+#include <tribos/solver/nonlinear_problem.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
@@ -26,40 +28,24 @@ namespace tribos
 {
   using namespace dealii;
 
-  /** Counters of one converged increment, reported and written to CSV. */
-  struct IncrementReport
-  {
-    /** Newton iterations of the accepted solve(s). */
-    unsigned int n_iterations = 0;
-    /** Newton iterations of every attempt at this increment, the failed
-     * ones that were cut back included (= linear solves). */
-    unsigned int n_iterations_all = 0;
-    double       residual         = 0;
-    /** Uzawa multiplier updates (augmented Lagrangian). */
-    unsigned int n_augmentations = 0;
-    /** Most chattering slave nodes seen in an iteration. */
-    unsigned int n_chattering = 0;
-    /** Largest magnitude of the stabilization springs' resultant on one
-     * body at convergence, and its ratio to the load. */
-    double stabilization_force = 0;
-    double stabilization_ratio = 0;
-    /** Re-anchorings of the stabilization springs. */
-    unsigned int n_relaxations = 0;
-  };
-
   /**
    * The quasi-static boundary value problem of all bodies of a scene:
    * total Lagrangian displacement formulation, one DoFHandler over one
    * triangulation shared by all bodies, Trilinos distributed linear
    * algebra (parallel::shared::Triangulation, so every process sees the
-   * whole geometry, which the contact search needs), Newton-Raphson with
-   * line search per increment and load stepping with cutback.
+   * whole geometry, which the contact search needs). The unknowns are the
+   * displacement dofs followed by the contact multipliers (if a pair uses
+   * them), in one vector.
    *
-   * The implementation is split by responsibility over several files in
-   * source/core/: setup, assembly, Newton, load stepping and output.
+   * Problem is the physics: it implements IncrementalProblem (residual,
+   * tangent, constraints, commit, restore and the contact and
+   * stabilization policies as hooks), and the generic solvers of solver/
+   * (NewtonSolver, LoadStepper, LinearSolver) drive it. The implementation
+   * is split by responsibility over source/core/: setup, assembly, the
+   * solver hooks (increment.cc), the run and the output.
    */
   template <int dim>
-  class Problem
+  class Problem : public IncrementalProblem
   {
   public:
     Problem(const Parameters::AllParameters &parameters,
@@ -84,12 +70,90 @@ namespace tribos
     const TrilinosWrappers::MPI::Vector &
     get_solution() const
     {
-      return ghosted_solution;
+      return ghosted_displacement();
     }
 
-  private:
-    using Vector = TrilinosWrappers::MPI::Vector;
+    /* IncrementalProblem (increment.cc) */
+    void
+    begin_increment(const double time) override;
+    Residual
+    assemble(const bool with_matrix, const bool first_iteration) override;
+    TrilinosWrappers::SparseMatrix &
+    system_matrix() override
+    {
+      return matrix;
+    }
+    Vector &
+    system_rhs() override
+    {
+      return rhs;
+    }
+    void
+    distribute(Vector &update, const bool first_iteration) const override;
+    Vector &
+    solution() override
+    {
+      return owned_solution;
+    }
+    void
+    solution_changed() override;
+    Norms
+    norms(const Vector &v) const override;
+    Norms
+    change_scale() const override;
+    Norms
+    round_off_floor() const override
+    {
+      return {0, traction_floor};
+    }
+    double
+    stagnation_residual_bound() const override
+    {
+      return stagnation_bound;
+    }
+    void
+    after_assembly(const unsigned int iteration) override;
+    Verdict
+    at_convergence(IncrementReport &report) override;
+    double
+    tangent_error() override;
+    void
+    log_iteration(const unsigned int iteration,
+                  const double       residual,
+                  const double       relative_residual,
+                  const double       update_norm,
+                  const double       step_length,
+                  const double       order) override;
+    void
+    message(const std::string &text) override;
+    void
+    begin_attempt(const unsigned int step,
+                  const unsigned int increment) override
+    {
+      current_step      = step;
+      current_increment = increment;
+    }
+    void
+    commit(const double time) override;
+    void
+    restore() override;
+    bool
+    outer_update(IncrementReport &report) override;
+    void
+    write_increment(const unsigned int     step,
+                    const unsigned int     increment,
+                    const double           time,
+                    const IncrementReport &report,
+                    const unsigned int     n_cutbacks,
+                    const double           wall_time) override;
+    std::string
+    step_status() const override;
+    void
+    end_step(const unsigned int step, const double time) override;
+    void
+    failed(const std::string &message) override;
 
+  private:
     /* setup.cc */
     void
     make_grid();
@@ -103,8 +167,6 @@ namespace tribos
     make_constraints(const double               time,
                      const bool                 homogeneous,
                      AffineConstraints<double> &constraints) const;
-    void
-    commit_history();
 
     /* assembly.cc */
     /**
@@ -115,29 +177,11 @@ namespace tribos
      * full_residual. Returns the l2 norm of the free residual.
      */
     double
-    assemble(const bool                       with_matrix,
-             const AffineConstraints<double> &constraints,
-             const double                     time);
+    assemble_system(const bool                       with_matrix,
+                    const AffineConstraints<double> &constraints,
+                    const double                     time);
 
-    /* newton.cc */
-    IncrementReport
-    solve_increment(const double       time,
-                    const unsigned int step,
-                    const unsigned int increment);
-    void
-    solve_linear_system(Vector &newton_update);
-    /** Add @p step times the system vector @p update to the displacement
-     * and to the multipliers. */
-    void
-    apply_update(const Vector &update, const double step);
-    /** l2 norm of the displacement part of a system vector. */
-    double
-    displacement_norm(const Vector &v) const;
-    double
-    tangent_error(const double time);
-    /** l2 norm of the multiplier part of a system vector (0 if none). */
-    double
-    multiplier_norm(const Vector &v) const;
+    /* increment.cc */
     /**
      * The stabilization springs at the last assembly: the largest magnitude
      * of their resultant on one body, and its ratio to the load (the
@@ -148,18 +192,22 @@ namespace tribos
     std::pair<double, double>
     stabilization_measure() const;
 
+    /**
+     * The displacement with ghost entries: the solution itself, or (with
+     * multipliers, whose unknowns follow the dofs) its first n_dofs
+     * entries, for the finite element evaluations and the output.
+     */
+    const Vector &
+    ghosted_displacement() const
+    {
+      return n_multipliers == 0 ? ghosted_solution : displacement;
+    }
+
     /* output.cc */
     void
     open_output();
     std::vector<double>
     reaction_forces() const;
-    void
-    write_history_row(const unsigned int     step,
-                      const unsigned int     increment,
-                      const double           time,
-                      const IncrementReport &report,
-                      const unsigned int     n_cutbacks,
-                      const double           wall_time);
     void
     write_vtu(const unsigned int step, const double time);
 
@@ -194,16 +242,32 @@ namespace tribos
 
     AffineConstraints<double> homogeneous_constraints;
 
-    TrilinosWrappers::SparseMatrix system_matrix;
-    Vector                         system_rhs;
+    TrilinosWrappers::SparseMatrix matrix;
+    Vector                         rhs;
     Vector                         free_residual;
     Vector                         full_residual;
     /** The contact forces on the nodes at the last assembly (VTU). */
     Vector contact_forces;
-    Vector solution;
+    /** The unknowns: displacement dofs, then the contact multipliers. */
+    Vector owned_solution;
     Vector ghosted_solution;
-    /** Solution at the start of the increment (stabilization springs). */
-    Vector ghosted_increment_start;
+    /** The displacement part, with ghosts (only with multipliers). */
+    Vector displacement;
+    /** The solution at the start of the increment. */
+    Vector increment_start;
+    /** The stabilization springs' anchors: the solution at the start of
+     * the increment, moved on at every re-anchoring. */
+    Vector ghosted_anchors;
+    /** The current increment: its nominal step and number (logs), end
+     * time and constraints. */
+    unsigned int              current_step      = 0;
+    unsigned int              current_increment = 0;
+    double                    time              = 0;
+    AffineConstraints<double> increment_constraints;
+    /** Contact and stabilization bookkeeping of the current increment. */
+    unsigned int n_chattering  = 0;
+    unsigned int n_frozen      = 0;
+    unsigned int n_relaxations = 0;
     /** The stabilization forces of the last assembly. */
     Vector stabilization_forces;
     /** The applied (traction and body) forces of the last assembly, kept
@@ -220,7 +284,7 @@ namespace tribos
      * Young's modulus on the area scale A = V^((d-1)/d) of the model
      * (axisymmetric: V with the ring factor, A = V^(2/3)).
      */
-    double stagnation_residual_bound = 0;
+    double stagnation_bound = 0;
     /** Tractions below 1e-12 E_max are round-off: the floor of the
      * multipliers' convergence test. */
     double traction_floor = 0;
@@ -275,13 +339,10 @@ namespace tribos
     std::unique_ptr<CsvWriter>                  convergence_csv;
     std::vector<std::pair<double, std::string>> pvd_records;
 
-    unsigned int n_total_newton_iterations = 0;
-    /** Every Newton iteration (one linear solve each), failed attempts
-     * included. */
-    unsigned int n_linear_solves             = 0;
-    unsigned int n_total_cutbacks            = 0;
-    unsigned int n_converged_increments      = 0;
-    double       largest_stabilization_ratio = 0;
+    /** The solvers (built by run()). */
+    std::unique_ptr<LinearSolver> linear_solver;
+    std::unique_ptr<NewtonSolver> newton;
+    std::unique_ptr<LoadStepper>  stepper;
   };
 } // namespace tribos
 

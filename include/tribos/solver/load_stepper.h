@@ -1,0 +1,120 @@
+#ifndef tribos_solver_load_stepper_h
+#define tribos_solver_load_stepper_h
+
+#include <tribos/parameters/time_stepping.h>
+#include <tribos/solver/newton_solver.h>
+#include <tribos/solver/nonlinear_problem.h>
+
+#include <functional>
+#include <string>
+
+namespace tribos
+{
+  /**
+   * A NonlinearProblem solved in increments of a pseudo-time: what the load
+   * stepper needs besides Newton's interface.
+   */
+  class IncrementalProblem : public NonlinearProblem
+  {
+  public:
+    /** The next solve is an attempt at increment @p increment (counted
+     * over the run) of nominal step @p step (for the problem's logs). */
+    virtual void
+    begin_attempt(const unsigned int /*step*/, const unsigned int /*increment*/)
+    {
+    }
+
+    /** Make the converged increment ending at @p time the history. */
+    virtual void
+    commit(const double time) = 0;
+
+    /**
+     * Return to the last committed state after a failed attempt (the
+     * stepper has already reset solution()).
+     */
+    virtual void
+    restore() = 0;
+
+    /**
+     * An outer update after a converged increment (the augmented
+     * Lagrangian's Uzawa step): true if the increment must be solved again.
+     * May throw NonConvergence.
+     */
+    virtual bool
+    outer_update(IncrementReport & /*report*/)
+    {
+      return false;
+    }
+
+    /** A converged increment: one row of history.csv. */
+    virtual void
+    write_increment(const unsigned int     step,
+                    const unsigned int     increment,
+                    const double           time,
+                    const IncrementReport &report,
+                    const unsigned int     n_cutbacks,
+                    const double           wall_time) = 0;
+
+    /** Extra text for the console line of a nominal step. */
+    virtual std::string
+    step_status() const
+    {
+      return "";
+    }
+
+    /** The end of nominal @p step at @p time (output). */
+    virtual void
+    end_step(const unsigned int step, const double time) = 0;
+
+    /** The run stops: cutbacks exhausted (@p message says why). */
+    virtual void
+    failed(const std::string &message) = 0;
+  };
+
+
+
+  /** Totals of a run. */
+  struct StepperTotals
+  {
+    unsigned int n_increments                = 0;
+    unsigned int n_newton_iterations         = 0;
+    unsigned int n_cutbacks                  = 0;
+    double       largest_stabilization_ratio = 0;
+  };
+
+
+
+  /**
+   * Load stepping over the nominal steps of Time stepping: each step is
+   * reached by one or more increments; a failed increment (NonConvergence)
+   * is restored and halved, up to Maximum cutbacks in a row; an increment
+   * grows again by Growth factor after an easy one (at most Easy
+   * iterations) or after Growth after converged increments in a row, up to
+   * the nominal step. An increment below 1e-12 of the end time is a
+   * failure. Outer updates (Uzawa) re-solve the same increment.
+   */
+  class LoadStepper
+  {
+  public:
+    LoadStepper(const Parameters::TimeStepping &parameters,
+                NewtonSolver                   &newton);
+
+    /** Run every nominal step; throws NonConvergence when it stops. */
+    void
+    run(IncrementalProblem                             &problem,
+        const std::function<void(const std::string &)> &print);
+
+    const StepperTotals &
+    totals() const
+    {
+      return sums;
+    }
+
+  private:
+    const Parameters::TimeStepping &parameters;
+    NewtonSolver                   &newton;
+    StepperTotals                   sums;
+  };
+} // namespace tribos
+
+#endif

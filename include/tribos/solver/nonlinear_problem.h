@@ -1,0 +1,176 @@
+#ifndef tribos_solver_nonlinear_problem_h
+#define tribos_solver_nonlinear_problem_h
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <string>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  /** Counters of one converged increment, reported and written to CSV. */
+  struct IncrementReport
+  {
+    /** Newton iterations of the accepted solve(s). */
+    unsigned int n_iterations = 0;
+    /** Newton iterations of every attempt at this increment, the failed
+     * ones that were cut back included (= linear solves). */
+    unsigned int n_iterations_all = 0;
+    double       residual         = 0;
+    /** Outer (Uzawa) updates of the augmented Lagrangian. */
+    unsigned int n_augmentations = 0;
+    /** Most chattering slave nodes seen in an iteration. */
+    unsigned int n_chattering = 0;
+    /** Largest magnitude of the stabilization springs' resultant on one
+     * body at convergence, and its ratio to the load. */
+    double stabilization_force = 0;
+    double stabilization_ratio = 0;
+    /** Re-anchorings of the stabilization springs. */
+    unsigned int n_relaxations = 0;
+  };
+
+
+
+  /**
+   * What Newton's method needs of a problem, and nothing of what the problem
+   * is: assemble the residual and tangent at the current iterate, apply the
+   * constraints to an update, measure the unknowns, and the hooks through
+   * which a problem's own policies act (contact chattering, stabilization,
+   * acceptance checks). The unknowns are one distributed vector that may
+   * hold two kinds (displacements and contact multipliers, whose units
+   * differ): norms are returned per kind.
+   *
+   * The interface follows the shape of ExaDG's Newton::Solver and dolfinx's
+   * NewtonSolver: the solver owns the iteration, the problem the physics.
+   */
+  class NonlinearProblem
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /** Residual norms of one assembly. */
+    struct Residual
+    {
+      /** l2 norm of the residual with the constrained rows removed. */
+      double free = 0;
+      /** l2 norm of the unconstrained residual f_int - f_ext (essentially
+       * the reactions): the force scale of the relative test. */
+      double force_scale = 0;
+    };
+
+    /** A norm per kind of unknown. */
+    struct Norms
+    {
+      double displacement = 0;
+      double multipliers  = 0;
+    };
+
+    /** What the problem says at an iterate that passed Newton's tests. */
+    enum class Verdict
+    {
+      /** The increment is converged. */
+      accept,
+      /** Not yet (e.g. the stabilization springs were re-anchored): go on
+       * iterating, with a fresh iteration budget. */
+      iterate
+    };
+
+    virtual ~NonlinearProblem() = default;
+
+    /**
+     * Start solving the increment that ends at @p time from the current
+     * solution: remember it as the increment's start and prepare the
+     * increment's (inhomogeneous) constraints.
+     */
+    virtual void
+    begin_increment(const double time) = 0;
+
+    /**
+     * Assemble at the current iterate: the residual always, the tangent and
+     * right-hand side (-R) if @p with_matrix; with the increment's
+     * constraints on the @p first_iteration (which carries the Dirichlet
+     * increment), else with homogeneous ones. May throw NonConvergence (a
+     * void iterate, e.g. an inverted element).
+     */
+    virtual Residual
+    assemble(const bool with_matrix, const bool first_iteration) = 0;
+
+    virtual TrilinosWrappers::SparseMatrix &
+    system_matrix() = 0;
+
+    virtual Vector &
+    system_rhs() = 0;
+
+    /** Set the constrained entries of a Newton @p update. */
+    virtual void
+    distribute(Vector &update, const bool first_iteration) const = 0;
+
+    /** The unknowns (locally owned entries). */
+    virtual Vector &
+    solution() = 0;
+
+    /** Call after every change of solution(): refreshes ghost values. */
+    virtual void
+    solution_changed() = 0;
+
+    /** Norms of @p v per kind of unknown. */
+    virtual Norms
+    norms(const Vector &v) const = 0;
+
+    /**
+     * The scale of the unknowns for the update test, per kind: the larger
+     * of the change since the start of the increment and the size.
+     */
+    virtual Norms
+    change_scale() const = 0;
+
+    /**
+     * Absolute floors below which a norm is round-off (per kind), and the
+     * residual below which round-off stagnation may be accepted.
+     */
+    virtual Norms
+    round_off_floor() const = 0;
+
+    virtual double
+    stagnation_residual_bound() const = 0;
+
+    /** Called after every assembly with a matrix (e.g. chattering
+     * detection); may throw NonConvergence. */
+    virtual void
+    after_assembly(const unsigned int /*iteration*/)
+    {
+    }
+
+    /**
+     * Called at an iterate that passed Newton's tests. The problem may add to
+     * the @p report, throw NonConvergence, or ask for more iterations.
+     */
+    virtual Verdict
+    at_convergence(IncrementReport & /*report*/)
+    {
+      return Verdict::accept;
+    }
+
+    /** Relative error of the tangent against finite differences of the
+     * residual at the current iterate (Nonlinear solver/Check tangent). */
+    virtual double
+    tangent_error() = 0;
+
+    /** One row of convergence.csv. */
+    virtual void
+    log_iteration(const unsigned int iteration,
+                  const double       residual,
+                  const double       relative_residual,
+                  const double       update_norm,
+                  const double       step_length,
+                  const double       order) = 0;
+
+    /** Print a message to the console (rank 0). */
+    virtual void
+    message(const std::string &text) = 0;
+  };
+} // namespace tribos
+
+#endif

@@ -1,0 +1,150 @@
+#include <tribos/base/exceptions.h>
+#include <tribos/solver/load_stepper.h>
+
+#include <deal.II/base/timer.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace tribos
+{
+  LoadStepper::LoadStepper(const Parameters::TimeStepping &parameters,
+                           NewtonSolver                   &newton)
+    : parameters(parameters)
+    , newton(newton)
+  {
+  }
+
+
+
+  void
+  LoadStepper::run(IncrementalProblem                             &problem,
+                   const std::function<void(const std::string &)> &print)
+  {
+    const auto  &ts           = parameters;
+    const double nominal_step = ts.end_time / ts.n_steps;
+    const double epsilon      = 1e-12 * ts.end_time;
+    Timer        wall_clock;
+
+    double                   time      = 0;
+    double                   increment = nominal_step;
+    NonlinearProblem::Vector converged = problem.solution();
+    // Converged increments since the last growth or cutback, and the
+    // linear solves when the last increment was accepted.
+    unsigned int converged_in_row = 0;
+    unsigned int solves_accepted  = newton.n_linear_solves();
+
+    for (unsigned int step = 1; step <= ts.n_steps; ++step)
+    {
+      const double target           = step * nominal_step;
+      unsigned int n_iterations     = 0;
+      unsigned int n_iterations_all = 0;
+      unsigned int n_cutbacks       = 0;
+      unsigned int cutbacks_in_row  = 0;
+      double       residual         = 0;
+      unsigned int n_increments     = 0;
+
+      while (time < target - epsilon)
+      {
+        const double next = std::min(time + increment, target);
+        Timer        increment_clock;
+        try
+        {
+          problem.begin_attempt(step, sums.n_increments + 1);
+          IncrementReport report = newton.solve(problem, next);
+          // Outer updates (Uzawa), each followed by a new solve of the
+          // same increment.
+          while (problem.outer_update(report))
+          {
+            const IncrementReport again = newton.solve(problem, next);
+            report.n_iterations += again.n_iterations;
+            report.residual = again.residual;
+            report.n_chattering =
+              std::max(report.n_chattering, again.n_chattering);
+            report.stabilization_force = again.stabilization_force;
+            report.stabilization_ratio = again.stabilization_ratio;
+            report.n_relaxations += again.n_relaxations;
+          }
+          problem.commit(next);
+          // Every linear solve since the last accepted increment: this
+          // increment's failed attempts included.
+          report.n_iterations_all = newton.n_linear_solves() - solves_accepted;
+          solves_accepted         = newton.n_linear_solves();
+          sums.n_newton_iterations += report.n_iterations;
+          sums.largest_stabilization_ratio =
+            std::max(sums.largest_stabilization_ratio,
+                     report.stabilization_ratio);
+          converged = problem.solution();
+          time      = next;
+          ++n_increments;
+          ++sums.n_increments;
+          n_iterations += report.n_iterations;
+          n_iterations_all += report.n_iterations_all;
+          residual        = report.residual;
+          cutbacks_in_row = 0;
+          problem.write_increment(step,
+                                  sums.n_increments,
+                                  time,
+                                  report,
+                                  n_cutbacks,
+                                  increment_clock.wall_time());
+          ++converged_in_row;
+          if (report.n_iterations <= ts.easy_iterations ||
+              (ts.growth_after > 0 && converged_in_row >= ts.growth_after))
+          {
+            increment = std::min(increment * ts.growth_factor, nominal_step);
+            converged_in_row = 0;
+          }
+        }
+        catch (const NonConvergence &failure)
+        {
+          problem.solution() = converged;
+          problem.solution_changed();
+          problem.restore();
+          ++n_cutbacks;
+          ++sums.n_cutbacks;
+          ++cutbacks_in_row;
+          converged_in_row = 0;
+          increment *= 0.5;
+          std::string reason;
+          if (cutbacks_in_row > ts.max_cutbacks)
+            reason = "did not converge after " +
+                     std::to_string(ts.max_cutbacks) +
+                     " cutbacks (Time stepping/Maximum cutbacks)";
+          else if (increment < epsilon)
+            reason = "the increment was cut below 1e-12 of the end time";
+          if (!reason.empty())
+          {
+            const std::string message =
+              "step " + std::to_string(step) +
+              " at t = " + to_scientific(next) + " " + reason + ": " +
+              failure.what() + ". Outputs of the converged steps are kept.";
+            problem.failed(message);
+            throw NonConvergence(message);
+          }
+          std::ostringstream line;
+          line << "  cutback " << cutbacks_in_row << " at t = " << next << " ("
+               << failure.what() << "), new increment " << increment;
+          print(line.str());
+        }
+      }
+
+      const double       elapsed = wall_clock.wall_time();
+      const double       eta     = elapsed / time * (ts.end_time - time);
+      std::ostringstream line;
+      line << "step " << std::setw(4) << step << "/" << ts.n_steps
+           << "  t=" << std::setw(9) << std::setprecision(4) << time
+           << "  lf=" << std::fixed << std::setprecision(3)
+           << time / ts.end_time << std::defaultfloat << "  incr "
+           << n_increments << "  newton " << std::setw(3) << n_iterations
+           << " (all " << n_iterations_all << ")"
+           << "  |R|=" << std::scientific << std::setprecision(2) << residual
+           << std::defaultfloat << "  cutbacks " << n_cutbacks
+           << problem.step_status() << "  " << std::setprecision(3) << elapsed
+           << " s  ETA " << eta << " s";
+      print(line.str());
+      problem.end_step(step, time);
+    }
+  }
+} // namespace tribos

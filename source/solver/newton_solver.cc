@@ -1,0 +1,164 @@
+#include <tribos/base/exceptions.h>
+#include <tribos/solver/newton_solver.h>
+
+#include <cmath>
+#include <limits>
+
+namespace tribos
+{
+  NewtonSolver::NewtonSolver(const Parameters::NonlinearSolver &parameters,
+                             LinearSolver                      &linear_solver)
+    : parameters(parameters)
+    , linear_solver(linear_solver)
+  {
+  }
+
+
+
+  double
+  NewtonSolver::line_search(NonlinearProblem               &problem,
+                            const NonlinearProblem::Vector &update,
+                            const double                    residual)
+  {
+    const NonlinearProblem::Vector base = problem.solution();
+    double                         step = 1;
+    for (unsigned int k = 0;; ++k)
+    {
+      problem.solution() = base;
+      problem.solution().add(step, update);
+      problem.solution_changed();
+      double trial = std::numeric_limits<double>::infinity();
+      try
+      {
+        trial = problem.assemble(false, false).free;
+      }
+      catch (const InvertedElement &)
+      {
+      }
+      if (trial <= (1 - 1e-4 * step) * residual ||
+          k >= parameters.max_line_search_steps)
+        return step;
+      step *= 0.5;
+    }
+  }
+
+
+
+  IncrementReport
+  NewtonSolver::solve(NonlinearProblem &problem, const double time)
+  {
+    const auto  &p   = parameters;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    problem.begin_increment(time);
+
+    NonlinearProblem::Vector update(problem.system_rhs());
+    const auto               floor = problem.round_off_floor();
+
+    IncrementReport report;
+    double          reference   = 0;
+    double          step_length = nan;
+    // The undamped Newton correction (a line search shortens the step
+    // taken, not the distance to the solution) and the update taken, per
+    // kind of unknown.
+    NonlinearProblem::Norms correction{nan, 0}, taken{nan, 0};
+    double                  previous[2] = {-1, -1};
+    unsigned int            relaxed_at = 0, n_solves = 0;
+
+    for (unsigned int iteration = 0;; ++iteration)
+    {
+      const bool first = (iteration == 0);
+      const auto r     = problem.assemble(true, first);
+      if (!std::isfinite(r.free))
+        throw NonConvergence("the residual is not finite");
+      problem.after_assembly(iteration);
+
+      // Observed order of convergence from three successive residuals
+      // after the first solve (iteration 0 precedes the Dirichlet
+      // increment and says nothing about the rate).
+      double order = nan;
+      if (iteration >= 3 && previous[0] > 0 && previous[1] > 0 && r.free > 0 &&
+          previous[0] != previous[1])
+        order =
+          std::log(r.free / previous[0]) / std::log(previous[0] / previous[1]);
+      previous[1]        = previous[0];
+      previous[0]        = r.free;
+      const double scale = std::max(std::max(reference, r.free), r.force_scale);
+      problem.log_iteration(iteration,
+                            r.free,
+                            scale > 0 ? r.free / scale : 0.,
+                            taken.displacement,
+                            step_length,
+                            order);
+
+      bool residual_converged = false;
+      if (!first)
+      {
+        residual_converged =
+          r.free <= p.residual_tolerance * std::max(reference, r.force_scale) +
+                      p.absolute_residual_tolerance;
+        const auto change = problem.change_scale();
+        const bool update_converged =
+          (taken.displacement <= p.increment_tolerance * change.displacement ||
+           change.displacement == 0) &&
+          taken.multipliers <=
+            p.increment_tolerance * change.multipliers + floor.multipliers;
+        // Round-off stagnation: accepted only below the stated bound.
+        const bool stagnated =
+          correction.displacement <= 1e-12 * change.displacement &&
+          correction.multipliers <=
+            1e-12 * change.multipliers + floor.multipliers &&
+          r.free <= problem.stagnation_residual_bound();
+        if ((residual_converged && update_converged) || stagnated)
+        {
+          report.residual = r.free;
+          if (problem.at_convergence(report) ==
+              NonlinearProblem::Verdict::accept)
+          {
+            report.n_iterations = n_solves;
+            return report;
+          }
+          relaxed_at = iteration;
+          reference  = 0;
+          continue;
+        }
+        if (iteration - relaxed_at >= p.max_iterations)
+          throw NonConvergence("Newton did not converge in " +
+                               std::to_string(iteration - relaxed_at) +
+                               " iterations (|R| = " + to_scientific(r.free) +
+                               "; Nonlinear solver/Maximum iterations)");
+      }
+      reference = std::max(reference, r.free);
+
+      if (p.check_tangent && !first)
+      {
+        problem.message("  tangent check, iteration " +
+                        std::to_string(iteration) + ": relative error " +
+                        to_scientific(problem.tangent_error()));
+        problem.assemble(true, first);
+      }
+
+      update = 0;
+      ++linear_solves;
+      ++n_solves;
+      linear_solver.solve(problem.system_matrix(),
+                          update,
+                          problem.system_rhs());
+      problem.distribute(update, first);
+
+      // No line search on the first iteration (it carries the Dirichlet
+      // increment) nor once the residual is at its tolerance (only the
+      // update is still too large): there is nothing left to decrease.
+      step_length = 1;
+      if (p.line_search && !first && !residual_converged)
+        step_length = line_search(problem, update, r.free);
+      else
+      {
+        problem.solution().add(1., update);
+        problem.solution_changed();
+      }
+      correction         = problem.norms(update);
+      taken.displacement = step_length * correction.displacement;
+      taken.multipliers  = step_length * correction.multipliers;
+    }
+  }
+} // namespace tribos
