@@ -64,13 +64,14 @@ main(int argc, char **argv)
     tribos::Parameters::ContactPair pair;
     pair.slave_boundary  = {14};
     pair.master_boundary = {5};
-    pair.method          = "penalty";
+    pair.method          = tribos::Parameters::EnforcementMethod::penalty;
     pair.normal_penalty  = tribos::Parameters::PenaltyValue::parse("1e3", "");
     pair.tangential_penalty    = pair.normal_penalty;
     pair.friction_coefficient  = 0;
     parameters.pairs           = {pair};
-    parameters.tangent         = "consistent";
-    parameters.passes          = "one-pass";
+    parameters.tangent         = tribos::Parameters::ContactTangent::consistent;
+    parameters.two_pass        = false;
+    parameters.smoothing       = tribos::Parameters::MasterSmoothing::none;
     parameters.search_distance = std::numeric_limits<double>::infinity();
 
     const IndexSet            owned = dof_handler.locally_owned_dofs();

@@ -18,6 +18,8 @@
  */
 
 #include <tribos/contact/contact_element.h>
+#include <tribos/contact/lagrange_multiplier.h>
+#include <tribos/contact/penalty.h>
 
 #include <cmath>
 #include <iostream>
@@ -25,6 +27,127 @@
 #include <vector>
 
 using namespace tribos;
+
+/** The enforcement of an element: multipliers (with @p unknowns) or
+ * penalty. */
+template <int dim>
+const Enforcement<dim> &
+enforcement(const bool unknowns)
+{
+  static const Parameters::Contact     parameters{};
+  static const Penalty<dim>            penalty;
+  static const LagrangeMultiplier<dim> multipliers(parameters);
+  if (unknowns)
+    return multipliers;
+  return penalty;
+}
+
+SlaveInput
+slave_input(const Vec3<double> &x,
+            const NodeState    &committed,
+            const ContactLaw   &law,
+            const double        area,
+            const bool          consistent,
+            const Vec3<double> *unknowns)
+{
+  SlaveInput slave;
+  slave.position   = x;
+  slave.committed  = &committed;
+  slave.law        = law;
+  slave.area       = area;
+  slave.consistent = consistent;
+  slave.unknowns   = unknowns;
+  return slave;
+}
+
+template <int dim>
+ContactPointResult
+segment_element(const Vec3<double> &x,
+                const Vec3<double> *master,
+                const Projection   &projection,
+                const Vec3<double> *master_old,
+                const NodeState    &committed,
+                const bool          same_face,
+                const ContactLaw   &law,
+                const double        area,
+                const bool          consistent,
+                double             *R,
+                double             *K,
+                const Vec3<double> *unknowns = nullptr)
+{
+  FaceInput<dim> face;
+  for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
+  {
+    face.x[k]     = master[k];
+    face.x_old[k] = master_old[k];
+  }
+  face.projection = projection;
+  face.same_face  = same_face;
+  return NodeToSegment<dim>::evaluate(
+    slave_input(x, committed, law, area, consistent, unknowns),
+    face,
+    enforcement<dim>(unknowns != nullptr),
+    R,
+    K);
+}
+
+ContactPointResult
+smoothed_element(const Vec3<double> &x,
+                 const Vec3<double> *master,
+                 const bool         *has,
+                 const double        xi,
+                 const Vec3<double> *master_old,
+                 const NodeState    &committed,
+                 const ContactLaw   &law,
+                 const double        area,
+                 const bool          consistent,
+                 double             *R,
+                 double             *K,
+                 const Vec3<double> *unknowns = nullptr)
+{
+  SmoothedInput segment;
+  for (unsigned int k = 0; k < 4; ++k)
+    segment.x[k] = master[k];
+  segment.x_old[0] = master_old[0];
+  segment.x_old[1] = master_old[1];
+  segment.has[0]   = has[0];
+  segment.has[1]   = has[1];
+  segment.xi       = xi;
+  return NodeToSmoothedSegment::evaluate(
+    slave_input(x, committed, law, area, consistent, unknowns),
+    segment,
+    enforcement<2>(unknowns != nullptr),
+    R,
+    K);
+}
+
+template <int dim>
+ContactPointResult
+rigid_element(const Vec3<double>      &x,
+              const RigidSurface<dim> &surface,
+              const Vec3<double>      &shift,
+              const Vec3<double>      &shift_old,
+              const NodeState         &committed,
+              const ContactLaw        &law,
+              const double             area,
+              const bool               consistent,
+              double                  *R,
+              double                  *K,
+              const Vec3<double>      *unknowns = nullptr)
+{
+  RigidInput<dim> input;
+  input.surface   = &surface;
+  input.shift     = shift;
+  input.shift_old = shift_old;
+  return NodeToRigid<dim>::evaluate(
+    slave_input(x, committed, law, area, consistent, unknowns),
+    input,
+    enforcement<dim>(unknowns != nullptr),
+    R,
+    K);
+}
+
+
 
 struct Tally
 {
@@ -156,29 +279,30 @@ check_segment(std::mt19937 &random,
     }
     // The committed state: on this face (at other coordinates) or on
     // another one, its traction tangent to the committed normal.
-    SlaveHistory history;
-    history.active = true;
+    NodeState history;
+    history.result.status = ContactStatus::stick;
     {
       // Near where the slave projects on the old face: small slips.
       const Projection old = project<dim>(slave, master_old, false);
-      history.xi[0]        = old.xi[0] + 0.05 * u(random);
-      history.xi[1]        = dim == 3 ? old.xi[1] + 0.05 * u(random) : 0.;
+      history.result.xi[0] = old.xi[0] + 0.05 * u(random);
+      history.result.xi[1] = dim == 3 ? old.xi[1] + 0.05 * u(random) : 0.;
     }
     const bool same = sample % 2 == 0;
     history.face    = same ? 0 : 1;
     {
       Vec3<double> a[2];
       MasterFace<dim>::geometry(master_old,
-                                history.xi,
+                                history.result.xi,
                                 history.point,
                                 a,
-                                history.normal);
+                                history.result.normal);
     }
     const Vec3<double> traction{{3 * u(random), 3 * u(random), 3 * u(random)}};
-    history.traction =
-      traction - scale(dot(traction, history.normal), history.normal);
+    history.result.traction =
+      traction -
+      scale(dot(traction, history.result.normal), history.result.normal);
     if (dim == 2)
-      history.traction[2] = 0;
+      history.result.traction[2] = 0;
     const Vec3<double> lambda = random_multiplier(random, dim);
 
     const auto residual = [&](const std::vector<double> &x, double *R)
@@ -195,46 +319,46 @@ check_segment(std::mt19937 &random,
           l[d] += x[Element::n_dofs + d];
       }
       const Projection p = project<dim>(s, m, !extended);
-      return Element::evaluate(s,
-                               m,
-                               p,
-                               master_old,
-                               history,
-                               same,
-                               law,
-                               0.7,
-                               true,
-                               R,
-                               nullptr,
-                               multipliers ? &l : nullptr);
+      return segment_element<dim>(s,
+                                  m,
+                                  p,
+                                  master_old,
+                                  history,
+                                  same,
+                                  law,
+                                  0.7,
+                                  true,
+                                  R,
+                                  nullptr,
+                                  multipliers ? &l : nullptr);
     };
 
     std::vector<double> R(n), K(n * n), Kp(n * n);
     const Projection    p      = project<dim>(slave, master, !extended);
-    const auto          result = Element::evaluate(slave,
-                                          master,
-                                          p,
-                                          master_old,
-                                          history,
-                                          same,
-                                          law,
-                                          0.7,
-                                          true,
-                                          R.data(),
-                                          K.data(),
-                                          multipliers ? &lambda : nullptr);
-    Element::evaluate(slave,
-                      master,
-                      p,
-                      master_old,
-                      history,
-                      same,
-                      law,
-                      0.7,
-                      false,
-                      R.data(),
-                      Kp.data(),
-                      multipliers ? &lambda : nullptr);
+    const auto          result = segment_element<dim>(slave,
+                                             master,
+                                             p,
+                                             master_old,
+                                             history,
+                                             same,
+                                             law,
+                                             0.7,
+                                             true,
+                                             R.data(),
+                                             K.data(),
+                                             multipliers ? &lambda : nullptr);
+    segment_element<dim>(slave,
+                         master,
+                         p,
+                         master_old,
+                         history,
+                         same,
+                         law,
+                         0.7,
+                         false,
+                         R.data(),
+                         Kp.data(),
+                         multipliers ? &lambda : nullptr);
 
     const bool compared = compare_with_differences(
       n,
@@ -296,15 +420,15 @@ check_smoothed(std::mt19937 &random,
     }
     // Committed: a point of the old segment, its chord normal, a
     // tangential traction.
-    SlaveHistory history;
-    history.active      = true;
-    const double xi_old = 2 * (slave[0] - 0.5) + 0.05 * u(random);
-    history.point       = scale(0.5 * (1 - xi_old), master_old[0]) +
+    NodeState history;
+    history.result.status = ContactStatus::stick;
+    const double xi_old   = 2 * (slave[0] - 0.5) + 0.05 * u(random);
+    history.point         = scale(0.5 * (1 - xi_old), master_old[0]) +
                     scale(0.5 * (1 + xi_old), master_old[1]);
     const Vec3<double> chord = master_old[1] - master_old[0];
-    history.normal =
+    history.result.normal =
       scale(1. / norm(chord), Vec3<double>{{-chord[1], chord[0], 0}});
-    history.traction = scale(3 * u(random) / norm(chord), chord);
+    history.result.traction = scale(3 * u(random) / norm(chord), chord);
 
     // Positions from the element's dof vector (absent neighbours skipped).
     const auto positions =
@@ -337,18 +461,18 @@ check_smoothed(std::mt19937 &random,
           l[d] += x[n_displacements + d];
       double xi = 0;
       projected = SmoothedSegment::project(s, m, has, xi) && std::abs(xi) <= 1;
-      return Element::evaluate(s,
-                               m,
-                               has,
-                               xi,
-                               master_old,
-                               history,
-                               law,
-                               0.7,
-                               consistent,
-                               R,
-                               K,
-                               multipliers ? &l : nullptr);
+      return smoothed_element(s,
+                              m,
+                              has,
+                              xi,
+                              master_old,
+                              history,
+                              law,
+                              0.7,
+                              consistent,
+                              R,
+                              K,
+                              multipliers ? &l : nullptr);
     };
 
     std::vector<double> zero(n, 0.), R(n), K(n * n), Kp(n * n);
@@ -414,20 +538,21 @@ check_rigid(const std::string &type,
         {3e-4 * u(random), 3e-4 * u(random), dim == 3 ? 3e-4 * u(random) : 0.}};
     // Committed: the closest point at the last step, its normal, a
     // tangential traction.
-    SlaveHistory history;
-    history.active = true;
+    NodeState history;
+    history.result.status = ContactStatus::stick;
     {
       double old_gap;
       surface.closest_point(slave_old,
                             shift_old,
                             history.point,
-                            history.normal,
+                            history.result.normal,
                             old_gap);
     }
     const Vec3<double> traction{
       {u(random), u(random), dim == 3 ? u(random) : 0.}};
-    history.traction =
-      traction - scale(dot(traction, history.normal), history.normal);
+    history.result.traction =
+      traction -
+      scale(dot(traction, history.result.normal), history.result.normal);
     ContactLaw law;
     law.normal_penalty       = 1e3;
     law.tangential_penalty   = 1e3;
@@ -440,17 +565,17 @@ check_rigid(const std::string &type,
     const auto evaluate =
       [&](const Vec3<double> &x, const Vec3<double> &l, double *R, double *K)
     {
-      return NodeToRigid<dim>::evaluate(x,
-                                        surface,
-                                        shift,
-                                        shift_old,
-                                        history,
-                                        law,
-                                        1.3,
-                                        true,
-                                        R,
-                                        K,
-                                        multipliers ? &l : nullptr);
+      return rigid_element<dim>(x,
+                                surface,
+                                shift,
+                                shift_old,
+                                history,
+                                law,
+                                1.3,
+                                true,
+                                R,
+                                K,
+                                multipliers ? &l : nullptr);
     };
     std::vector<double> R(n), K(n * n);
     const auto          result = evaluate(slave, lambda, R.data(), K.data());
@@ -502,20 +627,11 @@ check_tensile_multiplier()
   const double       t_N = -0.5, gap = 3 * t_N / law.normal_penalty;
   const Vec3<double> lambda{{0.2, -t_N, 0}}; // Lambda . n = -t_N
   const Vec3<double> slave{{0, gap, 0}};
-  SlaveHistory       history; // was at x = -0.01 on the plane, open
+  NodeState          history; // was at x = -0.01 on the plane, open
   history.point = {{-0.01, 0, 0}};
   double     R[4], K[16];
-  const auto result = NodeToRigid<2>::evaluate(slave,
-                                               plane,
-                                               zero,
-                                               zero,
-                                               history,
-                                               law,
-                                               1.,
-                                               true,
-                                               R,
-                                               K,
-                                               &lambda);
+  const auto result = rigid_element<
+    2>(slave, plane, zero, zero, history, law, 1., true, R, K, &lambda);
   // trial = T + c_T dg_T = 0.2 + 50 * 0.01 = 0.7 along +x; the bound is
   // mu (t_N - c g_N) = 0.3 * (-0.5 + 1.5) = 0.3.
   const double trial = 0.2 + 50 * 0.01, bound = 0.3 * (t_N - 100 * gap);
@@ -563,22 +679,21 @@ check_fixed_tangents()
       law.frozen_closed        = pressure < 0;
       const Vec3<double> slave{{0, 0, -pressure / 100}},
         lambda{{0, 0, pressure}};
-      double       R[6], K[36];
-      SlaveHistory history;
-      history.point = {{0, 0, 0}};
-      const auto result =
-        NodeToRigid<3>::evaluate(slave,
-                                 plate,
-                                 zero,
-                                 zero,
-                                 history,
-                                 law,
-                                 1.,
-                                 true,
-                                 R,
-                                 K,
-                                 multipliers ? &lambda : nullptr);
-      bool finite = true;
+      double    R[6], K[36];
+      NodeState history;
+      history.point     = {{0, 0, 0}};
+      const auto result = rigid_element<3>(slave,
+                                           plate,
+                                           zero,
+                                           zero,
+                                           history,
+                                           law,
+                                           1.,
+                                           true,
+                                           R,
+                                           K,
+                                           multipliers ? &lambda : nullptr);
+      bool       finite = true;
       for (unsigned int i = 0; i < (multipliers ? 6u : 3u); ++i)
         finite = finite && std::isfinite(R[i]);
       for (unsigned int i = 0; i < (multipliers ? 36u : 9u); ++i)

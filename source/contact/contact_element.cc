@@ -1,152 +1,10 @@
 #include <tribos/contact/contact_element.h>
 
-#include <Sacado.hpp>
-
 namespace tribos
 {
   namespace
   {
-    /**
-     * Forward AD number with at most 18 derivatives (3D: 5 nodes x 3 plus
-     * the slave's 3 multipliers).
-     */
-    using AD = Sacado::Fad::SLFad<double, 18>;
-
-    double
-    value(const AD &x)
-    {
-      return x.val();
-    }
-
-    /**
-     * |v|, with a zero derivative at v = 0 instead of the NaN of d sqrt(x)
-     * at 0 (a node whose tangential motion is fixed in every direction,
-     * e.g. on the axis of a symmetric model, has a zero trial traction).
-     */
-    template <typename Number>
-    Number
-    safe_norm(const Vec3<Number> &v)
-    {
-      if (value(dot(v, v)) == 0)
-        return Number(0.);
-      return norm(v);
-    }
-
-    /**
-     * The slip indicator |T_trial| > mu t_N, with equality to round-off
-     * (relative 1e-12) counted as stick.
-     */
-    template <typename Number>
-    bool
-    slips(const Number &magnitude, const Number &limit)
-    {
-      return value(magnitude) > value(limit) * (1. + 1e-12);
-    }
-
-    /** max(0, x) with the derivative of the branch taken. */
-    template <typename Number>
-    Number
-    positive_part(const Number &x)
-    {
-      return value(x) > 0 ? x : Number(0.);
-    }
-
-    /**
-     * The interface law shared by all element types: normal penalty and
-     * Coulomb return mapping. @p committed is the committed traction T_n
-     * turned with the surface (Q T_n). Fills @p force = T - t_N n (the
-     * residual of the slave per unit area) and the reported values.
-     */
-    template <typename Number>
-    void
-    interface_law(const Number       &gap,
-                  const Vec3<Number> &normal,
-                  const Vec3<Number> &slip_increment,
-                  const Vec3<Number> &committed,
-                  const ContactLaw   &law,
-                  Vec3<Number>       &force,
-                  ContactPointResult &result)
-    {
-      result.gap = value(gap);
-      for (unsigned int d = 0; d < 3; ++d)
-        result.normal[d] = value(normal[d]);
-
-      force = {{Number(0.), Number(0.), Number(0.)}};
-      // Closed for lambda - eps_N g_N >= 0 (g_N <= 0 for pure penalty): a
-      // node that just touches carries no pressure but gives the Newton
-      // matrix its contact stiffness, so that the first iteration of a step
-      // does not push it deep into the master.
-      if (!law.frozen_closed &&
-          law.multiplier - law.normal_penalty * value(gap) < 0)
-        return;
-
-      const Number pressure = law.multiplier - law.normal_penalty * gap;
-      result.pressure       = value(pressure);
-      result.status         = ContactStatus::closed;
-      force                 = scale(-pressure, normal);
-
-      if (law.friction_coefficient > 0)
-      {
-        result.status = ContactStatus::stick;
-        // Stick trial (16): the committed traction, turned with the
-        // surface (tangent to it), plus the elastic part of the slip
-        // increment.
-        const Vec3<Number> trial =
-          committed + scale(law.tangential_penalty, slip_increment);
-        const Number magnitude = safe_norm(trial);
-        // A node held closed by the chattering remedy may carry a tensile
-        // pressure: the Coulomb bound is never negative.
-        const Number limit = law.friction_coefficient * positive_part(pressure);
-        Vec3<Number> traction = trial;
-        // Slip indicator (17) and return mapping (18)-(19). At equality
-        // the node sticks: a node that slipped in the last step starts
-        // the next one on the stick branch (paper, Table 1). Equality to
-        // round-off: its trial is then its committed traction, mu t_N up
-        // to the last digit, and the last digit must not decide.
-        if (slips(magnitude, limit))
-        {
-          traction      = scale(limit / magnitude, trial);
-          result.status = ContactStatus::slip;
-          result.slip_increment =
-            value((magnitude - limit) / law.tangential_penalty);
-        }
-        force = force + traction;
-        for (unsigned int d = 0; d < 3; ++d)
-          result.traction[d] = value(traction[d]);
-      }
-    }
-
-
-
-    /**
-     * An orthonormal tangent frame of the unit normal @p n: t_0 from the
-     * coordinate axis least aligned with n (fixed while n varies, so the
-     * frame is differentiable), t_1 = n x t_0. In 2D (n in the plane
-     * z = 0) t_0 lies in the plane and t_1 = +-e_z is unused.
-     */
-    template <typename Number>
-    void
-    tangent_frame(const Vec3<Number> &n, Vec3<Number> (&t)[2])
-    {
-      unsigned int axis = 0;
-      for (unsigned int d = 1; d < 3; ++d)
-        if (std::abs(value(n[d])) < std::abs(value(n[axis])))
-          axis = d;
-      if (value(n[2]) == 0 && axis == 2)
-      {
-        // 2D: the in-plane tangent.
-        t[0] = {{Number(-n[1]), Number(n[0]), Number(0.)}};
-        t[1] = {{Number(0.), Number(0.), Number(1.)}};
-        return;
-      }
-      Vec3<Number> e = {{Number(0.), Number(0.), Number(0.)}};
-      e[axis]        = 1.;
-      t[0]           = e - scale(n[axis], n);
-      t[0]           = scale(1. / norm(t[0]), t[0]);
-      t[1]           = cross(n, t[0]);
-    }
-
-
+    using AD = ContactAD;
 
     /**
      * R v for the rotation R that takes the unit vector @p from to the unit
@@ -219,128 +77,6 @@ namespace tribos
 
 
 
-    /**
-     * The Lagrange multiplier form of the same interface law. The unknown
-     * @p multiplier is the slave's contact traction vector Lambda (force per
-     * unit area on the slave, so t_N = -Lambda . n and T = P_T Lambda), and
-     * @p constraint receives the node's equations: while open the
-     * multiplier itself, while closed the normal condition (component 0)
-     * and the tangential one in the frame t_1, t_2 (components 1, 2):
-     *
-     *   open  (t_N - c g_N < 0):    C = Lambda                 (no traction)
-     *   closed, normal:             C_0 = c g_N                (g_N = 0)
-     *   frictionless:               C_a = t_a . T              (T = 0)
-     *   stick (|T + c_T dg_T| <= mu t_N):  C_a = t_a . c_T dg_T  (no slip)
-     *   slip:   C_a = t_a . (T - mu t_N (T + c_T dg_T)/|T + c_T dg_T|)  (22)
-     *
-     * This is the primal-dual active set strategy written as a semismooth
-     * Newton method (Alart and Curnier's augmented form): the contact and
-     * stick/slip status follow from the current multipliers and gaps at
-     * every evaluation, so the active set is updated inside Newton, and the
-     * derivative of C is the generalized Jacobian on each branch. The slip
-     * branch couples T to the normal multiplier non-symmetrically, as in
-     * the paper's (22) and (35). c = eps_N and c_T (Contact/Friction
-     * complementarity parameter, by default E / h of the node) change the
-     * iterates (which branch a node takes) and the row scaling only, never
-     * the converged solution. c_T must not be much stiffer than the body:
-     * with c_T = 1000 E a slip of 1e-6 h already decides the branch, and
-     * the iteration cycled between stick and slip on the 3D upsetting.
-     */
-    template <typename Number>
-    void
-    multiplier_law(const Number       &gap,
-                   const Vec3<Number> &normal,
-                   const Vec3<Number> &slip_increment,
-                   const Vec3<Number> &multiplier,
-                   const ContactLaw   &law,
-                   Vec3<Number>       &force,
-                   Vec3<Number>       &constraint,
-                   ContactPointResult &result)
-    {
-      result.gap = value(gap);
-      for (unsigned int d = 0; d < 3; ++d)
-        result.normal[d] = value(normal[d]);
-
-      force                       = multiplier;
-      const Number       pressure = -dot(multiplier, normal);
-      const Vec3<Number> tau      = multiplier + scale(pressure, normal);
-      if (!law.frozen_closed &&
-          value(pressure) - law.normal_penalty * value(gap) < 0)
-      {
-        constraint    = multiplier;
-        result.status = ContactStatus::open;
-        return;
-      }
-      result.pressure = value(pressure);
-      result.status   = law.friction_coefficient > 0 ? ContactStatus::stick :
-                                                       ContactStatus::closed;
-
-      // Tangents in which the slave cannot move (symmetry planes,
-      // Dirichlet): there the condition is T . t = 0 (what symmetry
-      // implies); a stick condition would be singular. The friction law
-      // acts in the remaining tangent directions.
-      Vec3<Number> fixed[2];
-      unsigned int n_fixed = 0;
-      for (unsigned int d = 0; d < 3 && n_fixed < 2; ++d)
-        if (law.fixed_components & (1u << d))
-        {
-          Vec3<Number> t = {{Number(0.), Number(0.), Number(0.)}};
-          t[d]           = 1.;
-          t              = t - scale(normal[d], normal);
-          for (unsigned int i = 0; i < n_fixed; ++i)
-            t = t - scale(dot(t, fixed[i]), fixed[i]);
-          const Number length = norm(t);
-          if (value(length) >= 0.5)
-            fixed[n_fixed++] = scale(1. / length, t);
-        }
-      const auto free_part = [&](const Vec3<Number> &v)
-      {
-        Vec3<Number> result = v;
-        for (unsigned int i = 0; i < n_fixed; ++i)
-          result = result - scale(dot(v, fixed[i]), fixed[i]);
-        return result;
-      };
-      const Vec3<Number> tau_free = free_part(tau);
-
-      Vec3<Number> tangential = tau_free;
-      if (law.friction_coefficient > 0)
-      {
-        const Vec3<Number> slip = free_part(slip_increment);
-        const Vec3<Number> trial =
-          tau_free + scale(law.tangential_penalty, slip);
-        const Number magnitude = safe_norm(trial);
-        // The Coulomb bound of the augmented (Alart-Curnier) form, on
-        // max(0, t_N - c g_N): never negative, also in iterates whose
-        // multiplier is tensile; equal to mu t_N at convergence (g_N = 0).
-        const Number limit =
-          law.friction_coefficient *
-          positive_part(Number(pressure - law.normal_penalty * gap));
-        if (slips(magnitude, limit))
-        {
-          tangential            = tau_free - scale(limit / magnitude, trial);
-          result.status         = ContactStatus::slip;
-          result.slip_increment = value(norm(slip));
-        }
-        else
-          tangential = scale(law.tangential_penalty, slip);
-      }
-      tangential = tangential + (tau - tau_free);
-
-      // Rows in the local frame (n, t_1, t_2): the normal row must not
-      // see the tangential rows' geometry. (As one global vector
-      // c g n + P_T C, the term c g dn/du of a penetrating node would put
-      // spurious tangential forces into every iterate.)
-      Vec3<Number> t[2];
-      tangent_frame(normal, t);
-      constraint[0] = law.normal_penalty * gap;
-      constraint[1] = dot(tangential, t[0]);
-      constraint[2] = dot(tangential, t[1]);
-      for (unsigned int d = 0; d < 3; ++d)
-        result.traction[d] = value(tau[d]);
-    }
-
-
-
     /** Seed @p n_values entries of @p x as independent AD variables. */
     template <int dim>
     Vec3<AD>
@@ -352,45 +88,81 @@ namespace tribos
       return result;
     }
 
+
+
     /**
-     * The interface law at one slave node (penalty form, or the multiplier
-     * form with @p multiplier) and the element residual it gives, with its
-     * AD derivative: A force on the slave's dim rows, -N_a A force on the
-     * rows of the @p n_master_nodes master nodes that carry it, and A times
-     * the constraint on the dim multiplier rows after the @p
-     * n_displacements displacement rows. Every element type ends with this
-     * (a rigid master carries no nodes).
+     * The slip increment of the step, written once for every element: the
+     * tangential part (at the current @p normal) of @p moved - xbar_n,
+     * @p moved being where the master material point under the slave's
+     * projection point was at the last converged step (a face: sum N_a(xi)
+     * x_a,n; a rigid surface: the projection point less the surface's
+     * translation in the step) and xbar_n the committed projection point.
+     */
+    Vec3<AD>
+    slip_increment(const Vec3<AD>  &moved,
+                   const NodeState &committed,
+                   const Vec3<AD>  &normal)
+    {
+      const Vec3<AD> relative = moved - to<AD>(committed.point);
+      return relative - scale(dot(relative, normal), normal);
+    }
+
+
+
+    /** The committed traction turned with the normal (zero if the node was
+     * open, or if the normal turned over). */
+    Vec3<AD>
+    committed_traction(const NodeState &committed, const Vec3<AD> &normal)
+    {
+      Vec3<AD> turned = {{AD(0.), AD(0.), AD(0.)}};
+      if (committed.closed() &&
+          value_of(dot(to<AD>(committed.result.normal), normal)) > 0)
+        turned = turn(committed.result.normal,
+                      normal,
+                      to<AD>(committed.result.traction));
+      return turned;
+    }
+
+
+
+    /**
+     * Every element type ends here: the enforcement's local law at the
+     * point of @p kinematics gives the force on the slave (per unit area)
+     * and, with unknowns, the node's conditions; the residual is A force on
+     * the slave's dim rows, -N_a A force on the rows of the
+     * @p n_master_nodes master nodes that carry it, A times the conditions
+     * on the unknowns' rows after the @p n_displacements displacement rows,
+     * and its AD derivative the tangent.
      */
     template <int dim>
     void
-    apply_law(const AD           &gap,
-              const Vec3<AD>     &normal,
-              const Vec3<AD>     &slip,
-              const AD           *N,
-              const unsigned int  n_master_nodes,
-              const unsigned int  n_displacements,
-              const Vec3<double> *multiplier,
-              const Vec3<AD>     &committed,
-              const ContactLaw   &law,
-              const double        area,
-              double             *R,
-              double             *K,
-              ContactPointResult &result)
+    finish(const PointKinematics  &kinematics,
+           const AD               *N,
+           const unsigned int      n_master_nodes,
+           const unsigned int      n_displacements,
+           const SlaveInput       &slave,
+           const Enforcement<dim> &enforcement,
+           double                 *R,
+           double                 *K,
+           ContactPointResult     &result)
     {
-      const unsigned int n_out = n_displacements + (multiplier ? dim : 0);
-      Vec3<AD>           force, constraint;
-      if (multiplier)
-        multiplier_law(gap,
-                       normal,
-                       slip,
-                       seed<dim>(*multiplier, n_displacements, n_out),
-                       law,
-                       force,
-                       constraint,
-                       result);
-      else
-        interface_law(gap, normal, slip, committed, law, force, result);
+      result.gap = value_of(kinematics.gap);
+      for (unsigned int d = 0; d < 3; ++d)
+        result.normal[d] = value_of(kinematics.normal[d]);
 
+      const unsigned int n_unknowns = enforcement.n_node_unknowns();
+      const unsigned int n_out      = n_displacements + n_unknowns;
+      Vec3<AD>           unknowns, force, constraint;
+      if (n_unknowns > 0)
+        unknowns = seed<dim>(*slave.unknowns, n_displacements, n_out);
+      enforcement.local_law(kinematics,
+                            slave.law,
+                            n_unknowns > 0 ? &unknowns : nullptr,
+                            force,
+                            constraint,
+                            result);
+
+      const double area = slave.area;
       for (unsigned int i = 0; i < n_out; ++i)
       {
         AD residual = 0.;
@@ -412,61 +184,50 @@ namespace tribos
 
   template <int dim>
   ContactPointResult
-  NodeToSegment<dim>::evaluate(const Vec3<double> &slave,
-                               const Vec3<double> *master,
-                               const Projection   &projection,
-                               const Vec3<double> *master_old,
-                               const SlaveHistory &history,
-                               const bool          same_face,
-                               const ContactLaw   &law,
-                               const double        area,
-                               const bool          consistent,
-                               double             *R,
-                               double             *K,
-                               const Vec3<double> *multiplier)
+  NodeToSegment<dim>::evaluate(const SlaveInput       &slave,
+                               const FaceInput<dim>   &face,
+                               const Enforcement<dim> &enforcement,
+                               double                 *R,
+                               double                 *K)
   {
     using Face = MasterFace<dim>;
     ContactPointResult result;
-    result.face  = -1;
-    result.xi[0] = projection.xi[0];
-    result.xi[1] = projection.xi[1];
-
-    const unsigned int n_out = n_dofs + (multiplier ? dim : 0);
-    Vec3<AD>           xs    = seed<dim>(slave, 0, n_out);
+    const unsigned int n_out = n_dofs + enforcement.n_node_unknowns();
+    Vec3<AD>           xs    = seed<dim>(slave.position, 0, n_out);
     Vec3<AD>           xm[n_nodes];
     for (unsigned int k = 0; k < n_nodes; ++k)
-      xm[k] = seed<dim>(master[k], dim * (1 + k), n_out);
+      xm[k] = seed<dim>(face.x[k], dim * (1 + k), n_out);
 
     // Geometry at the converged projection, in double, for the update.
     Vec3<double> xbar0, a0[2], n0;
-    Face::geometry(master, projection.xi, xbar0, a0, n0);
+    Face::geometry(face.x, face.projection.xi, xbar0, a0, n0);
 
     // xi as a function of the positions (see the class documentation).
-    AD xi[2] = {AD(projection.xi[0]), AD(projection.xi[1])};
+    AD xi[2] = {AD(face.projection.xi[0]), AD(face.projection.xi[1])};
     {
       Vec3<AD> xbar_fixed_xi, a_ad[2], n_ad;
-      Face::geometry(xm, projection.xi, xbar_fixed_xi, a_ad, n_ad);
+      Face::geometry(xm, face.projection.xi, xbar_fixed_xi, a_ad, n_ad);
       const Vec3<AD> r = xs - xbar_fixed_xi;
       AD             residual[2];
       double         J[2][2] = {{0, 0}, {0, 0}};
       for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
       {
         residual[alpha] =
-          consistent ? dot(r, a_ad[alpha]) : dot(r, to<AD>(a0[alpha]));
+          slave.consistent ? dot(r, a_ad[alpha]) : dot(r, to<AD>(a0[alpha]));
         for (unsigned int beta = 0; beta < Face::n_coords; ++beta)
           J[alpha][beta] = dot(a0[alpha], a0[beta]);
       }
       if constexpr (dim == 3)
-        if (consistent)
+        if (slave.consistent)
         {
           Vec3<double> a12{{0, 0, 0}};
           for (unsigned int k = 0; k < 4; ++k)
-            a12 = a12 + scale(Face::mixed_derivative(k), master[k]);
-          const double curvature = dot(slave - xbar0, a12);
+            a12 = a12 + scale(Face::mixed_derivative(k), face.x[k]);
+          const double curvature = dot(slave.position - xbar0, a12);
           J[0][1] -= curvature;
           J[1][0] -= curvature;
         }
-      if (projection.inside())
+      if (face.projection.inside())
       {
         if constexpr (dim == 2)
           xi[0] += residual[0] / J[0][0];
@@ -479,13 +240,13 @@ namespace tribos
       }
       else
         for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-          if (projection.clamped[alpha] == 0)
+          if (face.projection.clamped[alpha] == 0)
             xi[alpha] += residual[alpha] / J[alpha][alpha];
     }
 
     Vec3<AD> xbar, a[2], normal;
     Face::geometry(xm, xi, xbar, a, normal);
-    if (!consistent)
+    if (!slave.consistent)
     {
       normal = to<AD>(n0);
       for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
@@ -496,55 +257,55 @@ namespace tribos
     AD N[n_nodes], dN[n_nodes][2];
     Face::shape(xi, N, dN);
 
+    PointKinematics kinematics;
+    kinematics.gap    = gap;
+    kinematics.normal = normal;
     // Slip: the projection point's motion relative to the master material
     // point it left, measured on the master as it was.
-    Vec3<AD> relative = to<AD>(scale(-1., history.point));
+    Vec3<AD> moved = {{AD(0.), AD(0.), AD(0.)}};
     for (unsigned int k = 0; k < n_nodes; ++k)
-      relative = relative + scale(N[k], to<AD>(master_old[k]));
-    const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
+      moved = moved + scale(N[k], to<AD>(face.x_old[k]));
+    const NodeState &committed = *slave.committed;
+    kinematics.slip            = slip_increment(moved, committed, normal);
 
-    // The committed traction turned with the face (the same face at the
-    // committed coordinates: its spin too), else with the normal.
-    Vec3<AD> committed = {{AD(0.), AD(0.), AD(0.)}};
-    if (history.active && dot(history.normal, n0) > 0)
+    // The committed traction turned with the face (on the same face, at
+    // the committed coordinates: its spin about the normal too), else with
+    // the normal.
+    kinematics.committed = committed_traction(committed, normal);
+    if (face.same_face && committed.closed() &&
+        dot(committed.result.normal, n0) > 0)
     {
-      if (same_face)
-      {
-        Vec3<double> xbar_old, a_old[2], n_old;
-        Face::geometry(master_old, history.xi, xbar_old, a_old, n_old);
-        Vec3<AD> xbar_now, a_now[2], n_now;
-        if (consistent)
-          Face::geometry(xm, history.xi, xbar_now, a_now, n_now);
-        else
-        {
-          Vec3<double> x_value, a_value[2], n_value;
-          Face::geometry(master, history.xi, x_value, a_value, n_value);
-          n_now = to<AD>(n_value);
-          for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-            a_now[alpha] = to<AD>(a_value[alpha]);
-        }
-        committed =
-          turn_with_face<dim>(a_old, n_old, a_now, n_now, history.traction);
-      }
+      Vec3<double> xbar_old, a_old[2], n_old;
+      Face::geometry(face.x_old, committed.result.xi, xbar_old, a_old, n_old);
+      Vec3<AD> xbar_now, a_now[2], n_now;
+      if (slave.consistent)
+        Face::geometry(xm, committed.result.xi, xbar_now, a_now, n_now);
       else
-        committed = turn(history.normal, normal, to<AD>(history.traction));
+      {
+        Vec3<double> x_value, a_value[2], n_value;
+        Face::geometry(face.x, committed.result.xi, x_value, a_value, n_value);
+        n_now = to<AD>(n_value);
+        for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
+          a_now[alpha] = to<AD>(a_value[alpha]);
+      }
+      kinematics.committed = turn_with_face<dim>(a_old,
+                                                 n_old,
+                                                 a_now,
+                                                 n_now,
+                                                 committed.result.traction);
     }
 
-    apply_law<dim>(gap,
-                   normal,
-                   slip,
-                   N,
-                   n_nodes,
-                   n_dofs,
-                   multiplier,
-                   committed,
-                   law,
-                   area,
-                   R,
-                   K,
-                   result);
-    result.xi[0] = value(xi[0]);
-    result.xi[1] = value(xi[1]);
+    finish<dim>(kinematics,
+                N,
+                n_nodes,
+                n_dofs,
+                slave,
+                enforcement,
+                R,
+                K,
+                result);
+    result.xi[0] = value_of(xi[0]);
+    result.xi[1] = value_of(xi[1]);
     return result;
   }
 
@@ -552,26 +313,20 @@ namespace tribos
 
   template <int dim>
   ContactPointResult
-  NodeToRigid<dim>::evaluate(const Vec3<double>      &slave,
-                             const RigidSurface<dim> &surface,
-                             const Vec3<double>      &shift,
-                             const Vec3<double>      &shift_old,
-                             const SlaveHistory      &history,
-                             const ContactLaw        &law,
-                             const double             area,
-                             const bool               consistent,
-                             double                  *R,
-                             double                  *K,
-                             const Vec3<double>      *multiplier)
+  NodeToRigid<dim>::evaluate(const SlaveInput       &slave,
+                             const RigidInput<dim>  &surface,
+                             const Enforcement<dim> &enforcement,
+                             double                 *R,
+                             double                 *K)
   {
     ContactPointResult result;
-    const unsigned int n_out = n_dofs + (multiplier ? dim : 0);
-    const Vec3<AD>     xs    = seed<dim>(slave, 0, n_out);
+    const unsigned int n_out = n_dofs + enforcement.n_node_unknowns();
+    const Vec3<AD>     xs    = seed<dim>(slave.position, 0, n_out);
 
     Vec3<AD> xbar, normal;
     AD       gap;
-    surface.closest_point(xs, shift, xbar, normal, gap);
-    if (!consistent)
+    surface.surface->closest_point(xs, surface.shift, xbar, normal, gap);
+    if (!slave.consistent)
     {
       // Hold the closest point's normal fixed: the small-deformation
       // linearization.
@@ -586,74 +341,67 @@ namespace tribos
       xbar   = xs - scale(gap, normal);
     }
 
-    // Slip: the projection point's motion relative to the surface (which
-    // translates) during the step, tangential part.
-    const Vec3<AD> relative =
-      (xbar - to<AD>(history.point)) - to<AD>(shift - shift_old);
-    const Vec3<AD> slip = relative - scale(dot(relative, normal), normal);
-    // The committed traction turned with the normal (a curved surface).
-    Vec3<AD> committed = {{AD(0.), AD(0.), AD(0.)}};
-    if (history.active && value(dot(to<AD>(history.normal), normal)) > 0)
-      committed = turn(history.normal, normal, to<AD>(history.traction));
+    PointKinematics kinematics;
+    kinematics.gap    = gap;
+    kinematics.normal = normal;
+    // Slip: the projection point's motion relative to the surface, which
+    // translates; the committed traction turned with the normal (a curved
+    // surface).
+    kinematics.slip =
+      slip_increment(xbar - to<AD>(surface.shift - surface.shift_old),
+                     *slave.committed,
+                     normal);
+    kinematics.committed = committed_traction(*slave.committed, normal);
 
-    apply_law<dim>(gap,
-                   normal,
-                   slip,
-                   nullptr,
-                   0,
-                   n_dofs,
-                   multiplier,
-                   committed,
-                   law,
-                   area,
-                   R,
-                   K,
-                   result);
+    finish<dim>(kinematics,
+                nullptr,
+                0,
+                n_dofs,
+                slave,
+                enforcement,
+                R,
+                K,
+                result);
     return result;
   }
 
+
+
   ContactPointResult
-  NodeToSmoothedSegment::evaluate(const Vec3<double> &slave,
-                                  const Vec3<double> *master,
-                                  const bool         *has,
-                                  const double        xi_value,
-                                  const Vec3<double> *master_old,
-                                  const SlaveHistory &history,
-                                  const ContactLaw   &law,
-                                  const double        area,
-                                  const bool          consistent,
-                                  double             *R,
-                                  double             *K,
-                                  const Vec3<double> *multiplier)
+  NodeToSmoothedSegment::evaluate(const SlaveInput     &slave,
+                                  const SmoothedInput  &segment,
+                                  const Enforcement<2> &enforcement,
+                                  double               *R,
+                                  double               *K)
   {
     constexpr unsigned int dim = 2;
     ContactPointResult     result;
-    result.face = -1;
+    const double           xi_value = segment.xi;
 
     // Seed the present nodes: slave, x_0, x_1, then the neighbours.
     const unsigned int n_displacements =
-      dim * (3 + (has[0] ? 1 : 0) + (has[1] ? 1 : 0));
-    const unsigned int n_out = n_displacements + (multiplier ? dim : 0);
-    const Vec3<AD>     xs    = seed<dim>(slave, 0, n_out);
+      dim * (3 + (segment.has[0] ? 1 : 0) + (segment.has[1] ? 1 : 0));
+    const unsigned int n_out = n_displacements + enforcement.n_node_unknowns();
+    const Vec3<AD>     xs    = seed<dim>(slave.position, 0, n_out);
     Vec3<AD>           xm[4];
     unsigned int       next = dim;
     for (unsigned int k = 0; k < 4; ++k)
-      if (k < 2 || has[k - 2])
+      if (k < 2 || segment.has[k - 2])
       {
-        xm[k] = seed<dim>(master[k], next, n_out);
+        xm[k] = seed<dim>(segment.x[k], next, n_out);
         next += dim;
       }
       else
-        xm[k] = to<AD>(master[k]);
+        xm[k] = to<AD>(segment.x[k]);
 
     Vec3<AD> n0, n1;
-    if (consistent)
-      SmoothedSegment::nodal_normals(xm, has, n0, n1);
+    if (slave.consistent)
+      SmoothedSegment::nodal_normals(xm, segment.has, n0, n1);
     else
     {
       // Paper tangent: the normal field held fixed.
       Vec3<double> m0, m1;
-      SmoothedSegment::nodal_normals(master, has, m0, m1);
+      SmoothedSegment::nodal_normals(segment.x, segment.has, m0, m1);
       n0 = to<AD>(m0);
       n1 = to<AD>(m1);
     }
@@ -661,7 +409,10 @@ namespace tribos
     // xi: one Newton step in AD from the converged root is the implicit
     // derivative of the projection condition.
     const double derivative =
-      SmoothedSegment::condition_derivative(slave, master, has, xi_value);
+      SmoothedSegment::condition_derivative(slave.position,
+                                            segment.x,
+                                            segment.has,
+                                            xi_value);
     AD xi = xi_value;
     {
       const AD       N0 = 0.5 * (1. - xi_value), N1 = 0.5 * (1. + xi_value);
@@ -677,28 +428,25 @@ namespace tribos
 
     // Slip and committed traction as for NodeToSegment (2D: the turn with
     // the normal is the whole rotation).
-    Vec3<AD> relative = to<AD>(scale(-1., history.point));
+    PointKinematics kinematics;
+    kinematics.gap    = gap;
+    kinematics.normal = normal;
+    Vec3<AD> moved    = {{AD(0.), AD(0.), AD(0.)}};
     for (unsigned int k = 0; k < 2; ++k)
-      relative = relative + scale(N[k], to<AD>(master_old[k]));
-    const Vec3<AD> slip      = relative - scale(dot(relative, normal), normal);
-    Vec3<AD>       committed = {{AD(0.), AD(0.), AD(0.)}};
-    if (history.active && value(dot(to<AD>(history.normal), normal)) > 0)
-      committed = turn(history.normal, normal, to<AD>(history.traction));
+      moved = moved + scale(N[k], to<AD>(segment.x_old[k]));
+    kinematics.slip      = slip_increment(moved, *slave.committed, normal);
+    kinematics.committed = committed_traction(*slave.committed, normal);
 
-    apply_law<dim>(gap,
-                   normal,
-                   slip,
-                   N,
-                   2,
-                   n_displacements,
-                   multiplier,
-                   committed,
-                   law,
-                   area,
-                   R,
-                   K,
-                   result);
-    result.xi[0] = value(xi);
+    finish<dim>(kinematics,
+                N,
+                2,
+                n_displacements,
+                slave,
+                enforcement,
+                R,
+                K,
+                result);
+    result.xi[0] = value_of(xi);
     return result;
   }
 

@@ -114,10 +114,11 @@ namespace tribos
       " slave node(s) changed contact status more than " +
       std::to_string(cp.chattering_flips) +
       " times in this increment (Contact/Chattering flips)";
-    if (n > 0 && cp.chattering_remedy == "cutback")
+    if (n > 0 && cp.chattering_remedy == Parameters::ChatteringRemedy::cutback)
       throw NonConvergence(what + "; remedy: cut the increment "
                                   "(Contact/Chattering remedy = cutback)");
-    if (n > 0 && cp.chattering_remedy == "freeze" && n > n_frozen)
+    if (n > 0 && cp.chattering_remedy == Parameters::ChatteringRemedy::freeze &&
+        n > n_frozen)
     {
       n_frozen = contact->freeze_chattering(cp.chattering_flips);
       message("  " + what +
@@ -363,7 +364,7 @@ namespace tribos
   {
     if (!contact)
       return "";
-    const ContactStatistics s = contact->statistics();
+    const ContactStatistics s = contact_output->statistics();
     return "  active/stick/slip " + std::to_string(s.n_active) + "/" +
            std::to_string(s.n_stick) + "/" + std::to_string(s.n_slip);
   }

@@ -106,7 +106,7 @@ namespace tribos
     }
     if (contact)
     {
-      for (const auto &name : contact->column_names())
+      for (const auto &name : contact_output->column_names())
         columns.push_back(name);
       columns.push_back("augmentations");
       columns.push_back("chattering_nodes");
@@ -221,7 +221,7 @@ namespace tribos
                                           mpi_communicator));
     if (contact)
     {
-      for (const double value : contact->columns())
+      for (const double value : contact_output->columns())
         row.push_back(value);
       row.push_back(report.n_augmentations);
       row.push_back(report.n_chattering);
@@ -244,8 +244,8 @@ namespace tribos
     TimerOutput::Scope t(timer, "output");
     const std::string  dir = parameters.output.directory + "/";
     if (contact)
-      contact->write_csv(dir + "contact-" + Utilities::int_to_string(step, 5) +
-                         ".csv");
+      contact_output->write_csv(dir + "contact-" +
+                                Utilities::int_to_string(step, 5) + ".csv");
     if (!parameters.output.write_vtu)
       return;
 
@@ -434,7 +434,9 @@ namespace tribos
       for (auto &v : contact_scalars)
         v.reinit(node_dof_handler.n_dofs());
       contact_shear.reinit(dof_handler.n_dofs());
-      contact->nodal_fields(vertex_to_dof, contact_scalars, contact_shear);
+      contact_output->nodal_fields(vertex_to_dof,
+                                   contact_scalars,
+                                   contact_shear);
       const char *names[4] = {"CPRESS", "COPEN", "CSLIP", "CSTATUS"};
       for (unsigned int i = 0; i < 4; ++i)
         data_out.add_data_vector(node_dof_handler,

@@ -252,12 +252,13 @@ namespace tribos
       // Contact couples this process's slave nodes to master nodes
       // anywhere: their dofs count as relevant (ghosted, constrained).
       locally_relevant_dofs.add_indices(contact->contact_dofs());
+      contact_output = std::make_unique<ContactOutput<dim>>(*contact);
       for (const auto &w : contact->setup_warnings())
         warn(w);
     }
 
     // The system's unknowns: dofs, then the contact multipliers.
-    n_multipliers = contact ? contact->n_multipliers() : 0;
+    n_multipliers = contact ? contact->n_unknowns() : 0;
     const types::global_dof_index n_system =
       dof_handler.n_dofs() + n_multipliers;
     system_owned = IndexSet(n_system);
@@ -270,12 +271,11 @@ namespace tribos
                   ExcMessage("Contact/Method = lagrange multiplier runs on "
                              "one MPI process; use penalty or augmented "
                              "lagrangian with MPI."));
-      AssertThrow(parameters.linear_solver.type == "direct",
+      AssertThrow(parameters.linear_solver.direct,
                   ExcMessage("Contact/Method = lagrange multiplier gives an "
                              "indefinite saddle-point system: it needs "
                              "Linear solver/Type = direct (a pivoting sparse "
-                             "direct solver), not <" +
-                             parameters.linear_solver.type + ">."));
+                             "direct solver), not <iterative>."));
       system_owned.add_range(dof_handler.n_dofs(), n_system);
       system_relevant.add_range(dof_handler.n_dofs(), n_system);
     }

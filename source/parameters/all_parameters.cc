@@ -46,12 +46,12 @@ namespace tribos
       boundary_conditions.check(dimension);
       contact.parse_parameters(prm);
       contact.check(dimension);
-      AssertThrow(contact.smoothing == "none" || dimension == 2,
+      AssertThrow(contact.smoothing == Parameters::MasterSmoothing::none ||
+                    dimension == 2,
                   dealii::ExcMessage(
-                    "Parameter <Contact/Master smoothing> = <" +
-                    contact.smoothing +
-                    "> is available in Dimension = 2 only; allowed in 3D: "
-                    "none."));
+                    "Parameter <Contact/Master smoothing> = <averaged "
+                    "normals> is available in Dimension = 2 only; allowed in "
+                    "3D: none."));
       nonlinear_solver.parse_parameters(prm);
       time_stepping.parse_parameters(prm);
       linear_solver.parse_parameters(prm);

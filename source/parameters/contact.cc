@@ -9,6 +9,41 @@ namespace tribos
 {
   namespace Parameters
   {
+    std::string
+    to_string(const EnforcementMethod method)
+    {
+      switch (method)
+      {
+        case EnforcementMethod::penalty:
+          return "penalty";
+        case EnforcementMethod::lagrange_multiplier:
+          return "lagrange multiplier";
+        case EnforcementMethod::augmented_lagrangian:
+          return "augmented lagrangian";
+      }
+      return "";
+    }
+
+
+
+    EnforcementMethod
+    parse_method(const std::string &text, const std::string &entry)
+    {
+      for (const auto method : {EnforcementMethod::penalty,
+                                EnforcementMethod::lagrange_multiplier,
+                                EnforcementMethod::augmented_lagrangian})
+        if (text == to_string(method))
+          return method;
+      AssertThrow(false,
+                  dealii::ExcMessage("Parameter <" + entry + ">: method <" +
+                                     text +
+                                     "> unknown. Allowed: penalty, lagrange "
+                                     "multiplier, augmented lagrangian."));
+      return EnforcementMethod::penalty;
+    }
+
+
+
     PenaltyValue
     PenaltyValue::parse(const std::string &input, const std::string &entry)
     {
@@ -218,18 +253,27 @@ namespace tribos
     Contact::parse_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      tangent                = prm.get("Tangent");
-      passes                 = prm.get("Passes");
-      search_distance        = prm.get_double("Search distance");
-      smoothing              = prm.get("Master smoothing");
+      tangent         = prm.get("Tangent") == "paper" ? ContactTangent::paper :
+                                                        ContactTangent::consistent;
+      two_pass        = prm.get("Passes") == "two-pass";
+      search_distance = prm.get_double("Search distance");
+      smoothing       = prm.get("Master smoothing") == "none" ?
+                          MasterSmoothing::none :
+                          MasterSmoothing::averaged_normals;
       augmentation_tolerance = prm.get_double("Augmentation tolerance");
       max_augmentations      = prm.get_integer("Maximum augmentations");
       chattering_flips       = prm.get_integer("Chattering flips");
-      chattering_remedy      = prm.get("Chattering remedy");
+      {
+        const std::string remedy = prm.get("Chattering remedy");
+        chattering_remedy = remedy == "freeze"  ? ChatteringRemedy::freeze :
+                            remedy == "cutback" ? ChatteringRemedy::cutback :
+                                                  ChatteringRemedy::none;
+      }
       if (search_distance == 0)
         search_distance = std::numeric_limits<double>::infinity();
 
-      const std::string default_method = prm.get("Method");
+      const EnforcementMethod default_method =
+        parse_method(prm.get("Method"), "Contact/Method");
       const auto default_normal = PenaltyValue::parse(prm.get("Penalty factor"),
                                                       "Contact/Penalty factor");
       AssertThrow(default_normal.given,
@@ -358,14 +402,7 @@ namespace tribos
             const std::string value = Text::trim(option.substr(equal + 1));
             if (key == "method")
             {
-              AssertThrow(value == "penalty" ||
-                            value == "lagrange multiplier" ||
-                            value == "augmented lagrangian",
-                          dealii::ExcMessage(
-                            "Parameter <" + pair_entry + ">: method <" + value +
-                            "> unknown. Allowed: penalty, lagrange "
-                            "multiplier, augmented lagrangian."));
-              pair.method = value;
+              pair.method = parse_method(value, pair_entry);
             }
             else if (key == "penalty")
               pair.normal_penalty = PenaltyValue::parse(value, pair_entry);
@@ -419,8 +456,8 @@ namespace tribos
               pairs[j].rigid_surface.empty() &&
               meet(pairs[i].slave_boundary, pairs[j].master_boundary) &&
               meet(pairs[i].master_boundary, pairs[j].slave_boundary) &&
-              (pairs[i].method == "lagrange multiplier" ||
-               pairs[j].method == "lagrange multiplier")),
+              (pairs[i].method == EnforcementMethod::lagrange_multiplier ||
+               pairs[j].method == EnforcementMethod::lagrange_multiplier)),
             dealii::ExcMessage(
               "Parameter <" + pair_entry + ">: pairs <" + pairs[i].text +
               "> and <" + pairs[j].text +

@@ -36,11 +36,23 @@ namespace tribos
 
 
 
+    std::string
+    LinearSolver::amesos_solver(const unsigned long n) const
+    {
+      // KLU's left-looking LU costs least for small systems; the
+      // multifrontal MUMPS wins once fill-in dominates (doc/benchmarks.md).
+      if (direct_solver != "auto")
+        return direct_solver;
+      return n > 5000 ? "Amesos_Mumps" : "Amesos_Klu";
+    }
+
+
+
     void
     LinearSolver::parse_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      type           = prm.get("Type");
+      direct         = prm.get("Type") == "direct";
       direct_solver  = prm.get("Direct solver");
       tolerance      = prm.get_double("Tolerance");
       max_iterations = prm.get_integer("Maximum iterations");

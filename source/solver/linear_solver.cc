@@ -31,13 +31,9 @@ namespace tribos
                       const Vector                         &rhs)
   {
     const auto &p = parameters;
-    if (p.type == "direct")
+    if (p.direct)
     {
-      // KLU's left-looking LU costs least for small systems; the
-      // multifrontal MUMPS wins once fill-in dominates (doc/benchmarks.md).
-      const std::string name = (p.direct_solver != "auto" ? p.direct_solver :
-                                matrix.m() > 5000         ? "Amesos_Mumps" :
-                                                            "Amesos_Klu");
+      const std::string name = p.amesos_solver(matrix.m());
       SolverControl     control(1, 0);
       TrilinosWrappers::SolverDirect solver(
         control,

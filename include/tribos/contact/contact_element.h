@@ -1,13 +1,62 @@
 #ifndef tribos_contact_contact_element_h
 #define tribos_contact_contact_element_h
 
-#include <tribos/contact/contact_point.h>
+#include <tribos/contact/enforcement.h>
 #include <tribos/contact/master_face.h>
+#include <tribos/contact/node_state.h>
 #include <tribos/contact/rigid_surface.h>
 #include <tribos/contact/smoothed_segment.h>
 
 namespace tribos
 {
+  /**
+   * What the contact elements need of one slave node: its position, its
+   * committed state (the frame and traction of the last converged step),
+   * the law's parameters and its tributary area; with an enforcement that
+   * owns unknowns, their values (@p unknowns).
+   */
+  struct SlaveInput
+  {
+    Vec3<double>        position;
+    const NodeState    *committed = nullptr;
+    ContactLaw          law;
+    double              area     = 0;
+    const Vec3<double> *unknowns = nullptr;
+    /** Tangent = consistent (else the paper's (29)-(31)). */
+    bool consistent = true;
+  };
+
+  /** A face of a deformable master: its nodes now and at the last
+   * converged step, the slave's projection onto it, and whether the
+   * committed state lies on this face. */
+  template <int dim>
+  struct FaceInput
+  {
+    Vec3<double> x[4], x_old[4];
+    Projection   projection;
+    bool         same_face = false;
+  };
+
+  /** A segment of a smoothed 2D master: x_0, x_1, the node before, the
+   * node after (SmoothedSegment), which neighbours exist, the segment's
+   * nodes at the last converged step, and the slave's smoothed projection
+   * coordinate. */
+  struct SmoothedInput
+  {
+    Vec3<double> x[4], x_old[2];
+    bool         has[2] = {false, false};
+    double       xi     = 0;
+  };
+
+  /** A rigid surface and its translation now and at the last converged
+   * step. */
+  template <int dim>
+  struct RigidInput
+  {
+    const RigidSurface<dim> *surface = nullptr;
+    Vec3<double>             shift, shift_old;
+  };
+
   /**
    * The residual of one contact element and its derivative. The residual
    * of a slave node k with tributary area A_k is (paper (24)-(27), written
@@ -57,33 +106,21 @@ namespace tribos
     static constexpr unsigned int n_dofs  = dim * (1 + n_nodes);
 
     /**
-     * Evaluate the element of the slave at @p slave against the face with
-     * nodes @p master and projection @p projection. @p master_old are the
-     * face's nodes at the last converged step, @p history the slave's
-     * committed state; @p same_face whether that state is on this face.
-     * R gets n_dofs entries (slave dofs first, then master node by node);
-     * K, if not null, n_dofs^2 (row-major, K_ij = dR_i/du_j).
-     *
-     * With @p multiplier (the slave's Lagrange multiplier, a traction
-     * vector) the element is the Lagrange multiplier element instead: the
-     * force on the nodes is the multiplier, R and K get dim more entries
-     * (rows: the node's constraint equations; columns: the multiplier
-     * components), see multiplier_law() in the source.
+     * Evaluate the element of @p slave against @p face with the law of
+     * @p enforcement. R gets n_dofs entries (slave dofs first, then master
+     * node by node) plus the enforcement's unknowns per node (rows: the
+     * node's conditions); K, if not null, their square (row-major, K_ij =
+     * dR_i/du_j).
      */
     static ContactPointResult
-    evaluate(const Vec3<double> &slave,
-             const Vec3<double> *master,
-             const Projection   &projection,
-             const Vec3<double> *master_old,
-             const SlaveHistory &history,
-             const bool          same_face,
-             const ContactLaw   &law,
-             const double        area,
-             const bool          consistent,
-             double             *R,
-             double             *K,
-             const Vec3<double> *multiplier = nullptr);
+    evaluate(const SlaveInput       &slave,
+             const FaceInput<dim>   &face,
+             const Enforcement<dim> &enforcement,
+             double                 *R,
+             double                 *K);
   };
+
+
 
   /**
    * The 2D element against a master whose normal field is smoothed by
@@ -101,26 +138,17 @@ namespace tribos
     /** Displacement dofs at most: slave and four master nodes. */
     static constexpr unsigned int max_dofs = 2 * 5;
 
-    /**
-     * @p master: x_0, x_1, node before, node after (SmoothedSegment);
-     * @p xi from SmoothedSegment::project at the current positions;
-     * @p master_old the segment's two nodes at the last converged step.
-     * Other arguments as for NodeToSegment.
-     */
+    /** As NodeToSegment::evaluate(); dofs: slave, x_0, x_1, then the
+     * existing neighbours, then the enforcement's unknowns. */
     static ContactPointResult
-    evaluate(const Vec3<double> &slave,
-             const Vec3<double> *master,
-             const bool         *has,
-             const double        xi,
-             const Vec3<double> *master_old,
-             const SlaveHistory &history,
-             const ContactLaw   &law,
-             const double        area,
-             const bool          consistent,
-             double             *R,
-             double             *K,
-             const Vec3<double> *multiplier = nullptr);
+    evaluate(const SlaveInput     &slave,
+             const SmoothedInput  &segment,
+             const Enforcement<2> &enforcement,
+             double               *R,
+             double               *K);
   };
+
+
 
   /** The same element against a rigid surface: only the slave's dofs. */
   template <int dim>
@@ -128,23 +156,14 @@ namespace tribos
   {
     static constexpr unsigned int n_dofs = dim;
 
-    /**
-     * @p shift and @p shift_old are the surface's translation now and at
-     * the last converged step, @p history the slave's committed state.
-     * @p multiplier as for NodeToSegment.
-     */
+    /** As NodeToSegment::evaluate(); dofs: the slave's, then the
+     * enforcement's unknowns. */
     static ContactPointResult
-    evaluate(const Vec3<double>      &slave,
-             const RigidSurface<dim> &surface,
-             const Vec3<double>      &shift,
-             const Vec3<double>      &shift_old,
-             const SlaveHistory      &history,
-             const ContactLaw        &law,
-             const double             area,
-             const bool               consistent,
-             double                  *R,
-             double                  *K,
-             const Vec3<double>      *multiplier = nullptr);
+    evaluate(const SlaveInput       &slave,
+             const RigidInput<dim>  &surface,
+             const Enforcement<dim> &enforcement,
+             double                 *R,
+             double                 *K);
   };
 } // namespace tribos
 

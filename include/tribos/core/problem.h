@@ -4,6 +4,7 @@
 #include <tribos/contact/contact_handler.h>
 #include <tribos/material/material.h>
 #include <tribos/parameters/all_parameters.h>
+#include <tribos/postprocess/contact_output.h>
 #include <tribos/postprocess/csv_writer.h>
 #include <tribos/solver/load_stepper.h>
 #include <tribos/solver/nonlinear_problem.h>
@@ -294,8 +295,9 @@ namespace tribos
     void
     warn(const std::string &message);
 
-    /** The contact pairs; null when the scene has none. */
+    /** The contact pairs and their output; null when the scene has none. */
     std::unique_ptr<ContactHandler<dim>> contact;
+    std::unique_ptr<ContactOutput<dim>>  contact_output;
 
     /** One material per body id (index = material_id). */
     std::vector<std::unique_ptr<Material<dim>>> materials;

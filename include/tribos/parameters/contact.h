@@ -43,6 +43,45 @@ namespace tribos
       }
     };
 
+    /** How a pair enforces contact (Contact/Method). */
+    enum class EnforcementMethod
+    {
+      penalty,
+      lagrange_multiplier,
+      augmented_lagrangian
+    };
+
+    /** The parameter file's name of @p method. */
+    std::string
+    to_string(const EnforcementMethod method);
+
+    /** @p text as a method (as written in the parameter file); throws
+     * with a message naming @p entry if it is none. */
+    EnforcementMethod
+    parse_method(const std::string &text, const std::string &entry);
+
+    /** Contact/Tangent. */
+    enum class ContactTangent
+    {
+      consistent,
+      paper
+    };
+
+    /** Contact/Master smoothing. */
+    enum class MasterSmoothing
+    {
+      none,
+      averaged_normals
+    };
+
+    /** Contact/Chattering remedy. */
+    enum class ChatteringRemedy
+    {
+      freeze,
+      cutback,
+      none
+    };
+
     /** A rigid analytic surface: plane, sphere or cylinder, moving in t. */
     struct RigidSurface
     {
@@ -75,11 +114,11 @@ namespace tribos
       std::string rigid_surface;
 
       /** The item as written, for messages. */
-      std::string  text;
-      std::string  method;
-      PenaltyValue normal_penalty;
-      PenaltyValue tangential_penalty;
-      double       friction_coefficient;
+      std::string       text;
+      EnforcementMethod method;
+      PenaltyValue      normal_penalty;
+      PenaltyValue      tangential_penalty;
+      double            friction_coefficient;
     };
 
     /**
@@ -91,17 +130,16 @@ namespace tribos
     {
       std::vector<ContactPair>  pairs;
       std::vector<RigidSurface> rigid_surfaces;
-      std::string               tangent;
-      std::string               passes;
-      double                    search_distance;
-      /** Master smoothing: "none" or "averaged normals" (2D). */
-      std::string  smoothing;
-      double       augmentation_tolerance;
-      unsigned int max_augmentations;
+      ContactTangent            tangent;
+      /** Contact/Passes = two-pass. */
+      bool            two_pass;
+      double          search_distance;
+      MasterSmoothing smoothing;
+      double          augmentation_tolerance;
+      unsigned int    max_augmentations;
       /** Status changes per increment beyond which a node chatters. */
-      unsigned int chattering_flips;
-      /** freeze, cutback or none. */
-      std::string chattering_remedy;
+      unsigned int     chattering_flips;
+      ChatteringRemedy chattering_remedy;
       /** Lagrange multipliers: the semismooth stick/slip parameter c_T. */
       PenaltyValue friction_complementarity;
 

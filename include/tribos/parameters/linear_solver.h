@@ -13,10 +13,17 @@ namespace tribos
     /** Subsection `Linear solver`: direct (Amesos) or GMRES with AMG. */
     struct LinearSolver
     {
-      std::string  type;
+      /** Type = direct (else iterative). */
+      bool direct;
+      /** Direct solver as written: auto or an Amesos solver's name. */
       std::string  direct_solver;
       double       tolerance;
       unsigned int max_iterations;
+
+      /** The Amesos solver for a system of @p n unknowns: the one named,
+       * or (auto) KLU up to 5000 unknowns, MUMPS above. */
+      std::string
+      amesos_solver(const unsigned long n) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

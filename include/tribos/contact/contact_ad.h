@@ -1,0 +1,89 @@
+#ifndef tribos_contact_contact_ad_h
+#define tribos_contact_contact_ad_h
+
+#include <tribos/contact/vec3.h>
+
+#include <Sacado.hpp>
+
+namespace tribos
+{
+  /**
+   * The forward AD number of the contact elements: at most 18 derivatives
+   * (3D: the slave and a bilinear face, 5 nodes x 3, plus the slave's 3
+   * multipliers). The element residual is written once in this type and
+   * its derivative is the consistent tangent.
+   */
+  using ContactAD = Sacado::Fad::SLFad<double, 18>;
+
+  /** The value of a number (AD or double). */
+  inline double
+  value_of(const ContactAD &x)
+  {
+    return x.val();
+  }
+
+  inline double
+  value_of(const double x)
+  {
+    return x;
+  }
+
+  /**
+   * The kinematics of one contact point, functions of the element's
+   * unknowns: the normal gap g_N (negative: penetration), the unit normal
+   * n of the master, the slip increment dg_T of the step (tangential) and
+   * the committed tangential traction turned with the surface (Q T_n).
+   */
+  struct PointKinematics
+  {
+    ContactAD       gap;
+    Vec3<ContactAD> normal;
+    Vec3<ContactAD> slip;
+    Vec3<ContactAD> committed;
+  };
+
+  /** |v|, with a zero derivative at v = 0 (not the NaN of d sqrt at 0). */
+  template <typename Number>
+  Number
+  safe_norm(const Vec3<Number> &v)
+  {
+    if (value_of(dot(v, v)) == 0)
+      return Number(0.);
+    return norm(v);
+  }
+
+  /** max(0, x) with the derivative of the branch taken. */
+  template <typename Number>
+  Number
+  positive_part(const Number &x)
+  {
+    return value_of(x) > 0 ? x : Number(0.);
+  }
+
+  /**
+   * The Coulomb return map (17)-(19), written once for every method: the
+   * trial traction @p trial inside the cone of radius @p limit >= 0 is
+   * kept (stick; equality to round-off, relative 1e-12, sticks as in the
+   * paper's Table 1), outside it is brought back to the cone,
+   * limit trial / |trial| (slip). Returns whether the point slips;
+   * @p magnitude gets |trial|.
+   */
+  template <typename Number>
+  bool
+  coulomb_return(const Vec3<Number> &trial,
+                 const Number       &limit,
+                 Vec3<Number>       &traction,
+                 Number             &magnitude)
+  {
+    magnitude = safe_norm(trial);
+    if (value_of(magnitude) > value_of(limit) * (1. + 1e-12))
+    {
+      traction = scale(limit / magnitude, trial);
+      return true;
+    }
+    traction = trial;
+    return false;
+  }
+} // namespace tribos
+
+#endif

@@ -1,0 +1,141 @@
+#ifndef tribos_contact_contact_pair_h
+#define tribos_contact_contact_pair_h
+
+#include <tribos/contact/contact_search.h>
+#include <tribos/contact/contact_surface.h>
+#include <tribos/contact/enforcement.h>
+#include <tribos/contact/node_state.h>
+#include <tribos/contact/rigid_surface.h>
+#include <tribos/parameters/contact.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/dofs/dof_handler.h>
+
+#include <functional>
+#include <memory>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  /**
+   * One contact pair: a slave surface, its master (a deformable surface or
+   * a rigid one), its enforcement, and per slave node its tributary area,
+   * its state (current and committed) and positions. Built once by
+   * make_contact_pairs(); the search (Pairing), the elements, the
+   * enforcement and the output all work on it.
+   */
+  template <int dim>
+  struct ContactPair
+  {
+    Parameters::ContactPair                 description;
+    std::shared_ptr<ContactSurface<dim>>    slave;
+    std::shared_ptr<ContactSurface<dim>>    master;
+    std::shared_ptr<RigidSurface<dim>>      rigid;
+    std::shared_ptr<const Enforcement<dim>> enforcement;
+    /**
+     * The contact modulus E of the penalties 'k*E/h': the series modulus
+     * E_s E_m / (E_s + E_m) of the two sides, E_s against a rigid surface
+     * (its limit). It is continuous at that limit and, like Hertz's E*,
+     * set by the softer side when the moduli differ much (a penalty on the
+     * stiffer side's scale would make soft-on-hard contact
+     * ill-conditioned).
+     */
+    double contact_modulus = 0;
+    /** 1/2 with two passes (each pass carries half the area), else 1. */
+    double area_factor = 1;
+    /** The master is smoothed by averaged normals (2D). */
+    bool smoothed = false;
+    /** The number of the first of the enforcement's unknowns (if any):
+     * node k's are first_unknown + n_node_unknowns k + d. */
+    types::global_dof_index first_unknown = 0;
+
+    /** Per slave node: whether this process evaluates it (it owns its
+     * dofs); whether it is excluded from its own constraint rows (see
+     * make_contact_pairs()); its tributary area times area_factor, with
+     * the areas of excluded nodes handed to the nodes that carry them. */
+    std::vector<bool>   owned, excluded;
+    std::vector<double> area;
+
+    /** Per slave node: the state at the last evaluation and at the last
+     * converged increment. */
+    std::vector<NodeState> current, committed;
+    /** Node positions, now and at the last converged increment. */
+    std::vector<Vec3<double>> slave_positions, old_slave_positions;
+    std::vector<Vec3<double>> master_positions, old_master_positions;
+
+    /** The master's search tree (deformable masters). */
+    ContactSearch<dim> search;
+    /** (slave node, master face) pairs coupled in the sparsity pattern. */
+    std::set<std::pair<unsigned int, unsigned int>> couplings;
+    /** Whether a slave node within the search distance was ever met. */
+    bool ever_near = false;
+
+    unsigned int
+    n_nodes() const
+    {
+      return owned.size();
+    }
+
+    /**
+     * The dofs of the element of slave node @p k against master @p face
+     * (-1: none): the slave's, then the face's nodes' (with a smoothed
+     * master also the segment's neighbour nodes), then the node's
+     * unknowns.
+     */
+    void
+    element_dofs(const unsigned int                    k,
+                 const int                             face,
+                 std::vector<types::global_dof_index> &dofs) const;
+  };
+
+
+
+  /**
+   * The pairs of Contact/Pairs (two-pass: with the swapped ones), their
+   * surfaces, moduli and enforcements, on @p dof_handler; @p youngs_modulus
+   * gives each body's E. The enforcements' unknowns are numbered from
+   * dof_handler.n_dofs() on; @p n_unknowns gets their number and
+   * @p contact_dofs every dof of a contact surface.
+   *
+   * With unknowns per node (multipliers), a slave node whose rows would
+   * depend on other rows carries none of its own (it is excluded, with a
+   * Lambda = 0 row): a hanging node on a refinement border (its position
+   * follows its parents), whose tributary area goes to its parents with
+   * the constraint's weights, and a node that an earlier pair already
+   * constrains against the same master (an edge shared by two slave
+   * surfaces), whose area goes to that pair's node.
+   */
+  template <int dim>
+  std::vector<ContactPair<dim>>
+  make_contact_pairs(
+    const Parameters::Contact                       &parameters,
+    const DoFHandler<dim>                           &dof_handler,
+    const std::function<double(types::material_id)> &youngs_modulus,
+    const IndexSet                                  &locally_owned_dofs,
+    const bool                                       axisymmetric,
+    types::global_dof_index                         &n_unknowns,
+    IndexSet                                        &contact_dofs);
+
+  /**
+   * Warnings about @p pairs known after setup: a normal or tangential
+   * penalty below 1e-3 E/h or above 1e8 E/h at some slave node.
+   */
+  template <int dim>
+  std::vector<std::string>
+  penalty_warnings(const std::vector<ContactPair<dim>> &pairs);
+
+  /**
+   * One line per pair for the log: enforcement, slave nodes, contact
+   * modulus, range of element sizes and of the normal penalty.
+   */
+  template <int dim>
+  std::vector<std::string>
+  describe(const std::vector<ContactPair<dim>> &pairs);
+} // namespace tribos
+
+#endif

@@ -1,0 +1,141 @@
+#ifndef tribos_contact_enforcement_h
+#define tribos_contact_enforcement_h
+
+#include <tribos/contact/contact_ad.h>
+#include <tribos/contact/node_state.h>
+#include <tribos/parameters/contact.h>
+
+#include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  template <int dim>
+  struct ContactPair;
+
+  /**
+   * How a pair enforces contact: one object per pair, chosen once from
+   * Contact/Method, and the only place that knows the method. The contact
+   * elements compute the kinematics of a point (gap, normal, slip, the
+   * committed traction turned with the surface); the enforcement turns them
+   * into the force on the slave and, if it owns unknowns, the rows of its
+   * node; Newton and the load stepping see only the resulting residual and
+   * tangent, the unknowns it adds and its outer update.
+   *
+   * To add a method: derive from this class (penalty.h is the smallest
+   * example), implement law() and local_law(), and register it in
+   * create_enforcement() (enforcement.cc) and in Contact/Method.
+   */
+  template <int dim>
+  class Enforcement
+  {
+  public:
+    virtual ~Enforcement() = default;
+
+    /** The method, as in the parameter file. */
+    virtual Parameters::EnforcementMethod
+    method() const = 0;
+
+    /** Unknowns of the system the method adds per slave node: dim (a
+     * traction vector) or none. */
+    virtual unsigned int
+    n_node_unknowns() const
+    {
+      return 0;
+    }
+
+    /**
+     * The law's parameters at slave node @p k of @p pair (penalties or
+     * complementarity parameters resolved at the node's element size, its
+     * current @p state's multiplier, components fixed by @p homogeneous).
+     */
+    virtual ContactLaw
+    law(const ContactPair<dim>          &pair,
+        const unsigned int               k,
+        const NodeState                 &state,
+        const AffineConstraints<double> &homogeneous) const = 0;
+
+    /**
+     * The local law at one point: @p force (on the slave, per unit area)
+     * and, with unknowns (@p unknowns, seeded for AD), the node's
+     * @p constraint rows, from the point's @p kinematics; fills the
+     * reported values of @p result.
+     */
+    virtual void
+    local_law(const PointKinematics &kinematics,
+              const ContactLaw      &law,
+              const Vec3<ContactAD> *unknowns,
+              Vec3<ContactAD>       &force,
+              Vec3<ContactAD>       &constraint,
+              ContactPointResult    &result) const = 0;
+
+    /**
+     * The rows of the node's unknowns where it has no master point (off
+     * the master, or excluded): none without unknowns. @p scale is the
+     * node's own tributary area (the row scaling).
+     */
+    virtual void
+    unpaired_rows(const NodeState & /*state*/,
+                  const double /*scale*/,
+                  double * /*R*/,
+                  double * /*K*/) const
+    {
+    }
+
+    /**
+     * A last look at an element's rows (@p n_displacements displacement
+     * rows, then the node's unknowns) before they are assembled, e.g. to
+     * replace a row that no free unknown moves.
+     */
+    virtual void
+    finish_rows(const std::vector<types::global_dof_index> & /*dofs*/,
+                const unsigned int /*n_displacements*/,
+                const AffineConstraints<double> & /*homogeneous*/,
+                const double /*area*/,
+                const NodeState & /*state*/,
+                double * /*R*/,
+                double * /*K*/) const
+    {
+    }
+
+    /** Whether the method has an outer update (Uzawa). */
+    virtual bool
+    has_outer_update() const
+    {
+      return false;
+    }
+
+    /**
+     * The outer update's measure at the converged state of the owned nodes
+     * of @p pair: the largest violation (|g_N| of a closed node over its
+     * element size).
+     */
+    virtual double
+    violation(const ContactPair<dim> & /*pair*/) const
+    {
+      return 0;
+    }
+
+    /** The outer update of @p pair's nodes (lambda <- t_N). */
+    virtual void
+    outer_update(ContactPair<dim> & /*pair*/) const
+    {
+    }
+  };
+
+
+
+  /** The enforcement of @p method with the pair-independent @p parameters. */
+  template <int dim>
+  std::shared_ptr<const Enforcement<dim>>
+  create_enforcement(const Parameters::EnforcementMethod method,
+                     const Parameters::Contact          &parameters);
+} // namespace tribos
+
+#endif

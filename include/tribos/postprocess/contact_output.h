@@ -1,0 +1,72 @@
+#ifndef tribos_postprocess_contact_output_h
+#define tribos_postprocess_contact_output_h
+
+#include <tribos/contact/contact_handler.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  /** Totals of the contact state, summed over all processes. */
+  struct ContactStatistics
+  {
+    /** Per pair: sum of A t_N, sum of A |T|, and the resultant force
+     * on the slave body (x, y, z). */
+    std::vector<std::array<double, 5>> pair_forces;
+    double                             max_penetration = 0;
+    unsigned int                       n_active        = 0;
+    unsigned int                       n_stick         = 0;
+    unsigned int                       n_slip          = 0;
+  };
+
+  /**
+   * The contact results as output: totals for history.csv and the console,
+   * contact-NNNNN.csv, and the nodal fields of the VTU. Reads the pairs'
+   * current states (after a converged increment, the committed ones).
+   */
+  template <int dim>
+  class ContactOutput
+  {
+  public:
+    explicit ContactOutput(const ContactHandler<dim> &contact);
+
+    /** Collective. */
+    ContactStatistics
+    statistics() const;
+
+    /** Names of the history.csv columns that columns() fills. */
+    std::vector<std::string>
+    column_names() const;
+
+    /** The statistics as a row matching column_names(). Collective. */
+    std::vector<double>
+    columns() const;
+
+    /** Write contact-NNNNN.csv: one row per slave node and pair, sorted by
+     * pair and node (rank 0 gathers). Collective. */
+    void
+    write_csv(const std::string &filename) const;
+
+    /**
+     * Nodal fields for the VTU: CPRESS, COPEN, CSLIP, CSTATUS on a scalar
+     * Q1 numbering (@p vertex_to_dof), CSHEAR on the displacement
+     * numbering; one physical value per node where a node is a slave of
+     * several pairs (see the source). Summed over processes. Collective.
+     */
+    void
+    nodal_fields(const std::vector<types::global_dof_index> &vertex_to_dof,
+                 std::array<dealii::Vector<double>, 4>      &scalars,
+                 dealii::Vector<double>                     &shear) const;
+
+  private:
+    const ContactHandler<dim> &contact;
+  };
+} // namespace tribos
+
+#endif

@@ -1,0 +1,347 @@
+#include <tribos/base/exceptions.h>
+#include <tribos/contact/contact_pair.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace tribos
+{
+  namespace
+  {
+    /**
+     * Exclude the slave nodes of @p pair (whose enforcement has unknowns)
+     * whose rows would depend on other rows, and hand their areas over
+     * (see make_contact_pairs()); @p earlier are the pairs made before.
+     */
+    template <int dim>
+    void
+    exclude_dependent_nodes(ContactPair<dim>                &pair,
+                            std::vector<ContactPair<dim>>   &earlier,
+                            const AffineConstraints<double> &hanging)
+    {
+      const auto        &nodes    = pair.slave->nodes();
+      const unsigned int n_slaves = nodes.size();
+      std::map<types::global_dof_index, unsigned int> node_of_dof;
+      for (unsigned int k = 0; k < n_slaves; ++k)
+        node_of_dof[nodes[k].dofs[0]] = k;
+
+      // A hanging slave node: its row would be the combination of its
+      // parents' rows. Its area goes to its parents with the constraint's
+      // weights, so that the multipliers stay tractions.
+      for (unsigned int k = 0; k < n_slaves; ++k)
+      {
+        const auto dof = nodes[k].dofs[0];
+        if (!hanging.is_constrained(dof))
+          continue;
+        const auto *entries = hanging.get_constraint_entries(dof);
+        if (entries == nullptr || entries->empty())
+          continue;
+        pair.excluded[k] = true;
+        double moved     = 0;
+        for (const auto &[parent_dof, weight] : *entries)
+        {
+          const auto parent = node_of_dof.find(parent_dof);
+          if (parent != node_of_dof.end())
+          {
+            pair.area[parent->second] += weight * pair.area[k];
+            moved += weight;
+          }
+        }
+        AssertThrow(std::abs(moved - 1.) < 1e-8,
+                    ExcMessage("Contact pair <" + pair.description.text +
+                               ">: a hanging slave node whose parents are "
+                               "not on the slave surface; refine the slave "
+                               "surface as a whole."));
+        pair.area[k] = 0;
+      }
+
+      // A node that an earlier pair with unknowns already constrains
+      // against the same master would get a second, identical row. Writing
+      // both surfaces as one ('3, 4 : plate') avoids the duplicate.
+      for (auto &other : earlier)
+      {
+        if (other.enforcement->n_node_unknowns() == 0 ||
+            other.description.rigid_surface != pair.description.rigid_surface ||
+            other.description.master_boundary !=
+              pair.description.master_boundary)
+          continue;
+        std::map<unsigned int, unsigned int> other_node_of_vertex;
+        for (unsigned int j = 0; j < other.slave->nodes().size(); ++j)
+          other_node_of_vertex[other.slave->nodes()[j].vertex] = j;
+        for (unsigned int k = 0; k < n_slaves; ++k)
+        {
+          const auto j = other_node_of_vertex.find(nodes[k].vertex);
+          if (j == other_node_of_vertex.end() || pair.excluded[k])
+            continue;
+          pair.excluded[k] = true;
+          if (!other.excluded[j->second])
+            other.area[j->second] += pair.area[k];
+          pair.area[k] = 0;
+        }
+      }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  ContactPair<dim>::element_dofs(
+    const unsigned int                    k,
+    const int                             face,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    const auto &slave_dofs = slave->nodes()[k].dofs;
+    dofs.assign(slave_dofs.begin(), slave_dofs.end());
+    if (master && face >= 0)
+    {
+      for (const unsigned int m : master->faces()[face].nodes)
+        for (const auto dof : master->nodes()[m].dofs)
+          dofs.push_back(dof);
+      if (smoothed)
+        for (const int m : master->faces()[face].beyond)
+          if (m >= 0)
+            for (const auto dof : master->nodes()[m].dofs)
+              dofs.push_back(dof);
+    }
+    const unsigned int n = enforcement->n_node_unknowns();
+    for (unsigned int d = 0; d < n; ++d)
+      dofs.push_back(first_unknown + n * k + d);
+  }
+
+
+
+  template <int dim>
+  std::vector<ContactPair<dim>>
+  make_contact_pairs(
+    const Parameters::Contact                       &parameters,
+    const DoFHandler<dim>                           &dof_handler,
+    const std::function<double(types::material_id)> &youngs_modulus,
+    const IndexSet                                  &locally_owned_dofs,
+    const bool                                       axisymmetric,
+    types::global_dof_index                         &n_unknowns,
+    IndexSet                                        &contact_dofs)
+  {
+    std::set<types::boundary_id> existing;
+    for (const auto &face :
+         dof_handler.get_triangulation().active_face_iterators())
+      if (face->at_boundary())
+        existing.insert(face->boundary_id());
+
+    // Surfaces are shared between pairs (and passes).
+    std::map<std::set<types::boundary_id>, std::shared_ptr<ContactSurface<dim>>>
+               surfaces;
+    const auto surface = [&](const std::set<unsigned int> &ids)
+    {
+      std::set<types::boundary_id> boundary_ids;
+      for (const auto id : ids)
+      {
+        AssertThrow(existing.count(id) == 1,
+                    ExcMessage("Parameter <Contact/Pairs> names boundary id " +
+                               std::to_string(id) +
+                               ", which the scene does not have. Its "
+                               "boundary ids are listed in the README."));
+        boundary_ids.insert(id);
+      }
+      auto &s = surfaces[boundary_ids];
+      if (!s)
+        s = std::make_shared<ContactSurface<dim>>(dof_handler,
+                                                  boundary_ids,
+                                                  axisymmetric);
+      return s;
+    };
+    std::map<std::string, std::shared_ptr<RigidSurface<dim>>> rigid_surfaces;
+    for (const auto &description : parameters.rigid_surfaces)
+      rigid_surfaces[description.name] =
+        std::make_shared<RigidSurface<dim>>(description);
+
+    std::vector<Parameters::ContactPair> descriptions = parameters.pairs;
+    if (parameters.two_pass)
+      for (const auto &p : parameters.pairs)
+        if (p.rigid_surface.empty())
+        {
+          auto swapped            = p;
+          swapped.slave_boundary  = p.master_boundary;
+          swapped.master_boundary = p.slave_boundary;
+          swapped.text            = p.text + " (second pass)";
+          descriptions.push_back(swapped);
+        }
+
+    AffineConstraints<double> hanging;
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging);
+    hanging.close();
+
+    std::vector<ContactPair<dim>> pairs;
+    n_unknowns = 0;
+    for (const auto &description : descriptions)
+    {
+      ContactPair<dim> pair;
+      pair.description = description;
+      pair.enforcement =
+        create_enforcement<dim>(description.method, parameters);
+      AssertThrow(pair.enforcement->n_node_unknowns() == 0 ||
+                    !parameters.two_pass,
+                  ExcMessage("Contact/Passes = two-pass with Contact/Method "
+                             "= lagrange multiplier: node-to-segment "
+                             "constraints of both passes over-constrain the "
+                             "interface (singular system). Use one-pass."));
+      pair.slave = surface(description.slave_boundary);
+      double E_s = std::numeric_limits<double>::max();
+      for (const auto body : pair.slave->bodies())
+        E_s = std::min(E_s, youngs_modulus(body));
+      pair.contact_modulus = E_s;
+      if (description.rigid_surface.empty())
+      {
+        pair.master = surface(description.master_boundary);
+        double E_m  = std::numeric_limits<double>::max();
+        for (const auto body : pair.master->bodies())
+          E_m = std::min(E_m, youngs_modulus(body));
+        pair.contact_modulus = E_s * E_m / (E_s + E_m);
+        pair.area_factor     = parameters.two_pass ? 0.5 : 1.;
+        pair.smoothed =
+          dim == 2 && parameters.smoothing != Parameters::MasterSmoothing::none;
+      }
+      else
+        pair.rigid = rigid_surfaces.at(description.rigid_surface);
+
+      const auto        &nodes    = pair.slave->nodes();
+      const unsigned int n_slaves = nodes.size();
+      pair.owned.resize(n_slaves);
+      pair.area.resize(n_slaves);
+      pair.excluded.assign(n_slaves, false);
+      pair.current.resize(n_slaves);
+      for (unsigned int k = 0; k < n_slaves; ++k)
+      {
+        pair.owned[k]         = locally_owned_dofs.is_element(nodes[k].dofs[0]);
+        pair.area[k]          = nodes[k].area * pair.area_factor;
+        pair.current[k].point = nodes[k].reference;
+        pair.slave_positions.push_back(nodes[k].reference);
+      }
+      if (pair.enforcement->n_node_unknowns() > 0)
+        exclude_dependent_nodes(pair, pairs, hanging);
+      pair.first_unknown = dof_handler.n_dofs() + n_unknowns;
+      n_unknowns += pair.enforcement->n_node_unknowns() * n_slaves;
+      pair.committed           = pair.current;
+      pair.old_slave_positions = pair.slave_positions;
+      if (pair.master)
+        for (const auto &node : pair.master->nodes())
+          pair.master_positions.push_back(node.reference);
+      pair.old_master_positions = pair.master_positions;
+      pairs.push_back(std::move(pair));
+    }
+
+    contact_dofs = IndexSet(dof_handler.n_dofs());
+    for (const auto &[ids, s] : surfaces)
+      for (const auto &node : s->nodes())
+        for (const auto dof : node.dofs)
+          contact_dofs.add_index(dof);
+    contact_dofs.compress();
+    return pairs;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  penalty_warnings(const std::vector<ContactPair<dim>> &pairs)
+  {
+    std::vector<std::string> warnings;
+    for (const auto &pair : pairs)
+    {
+      if (pair.enforcement->n_node_unknowns() > 0)
+        continue;
+      const auto check = [&](const Parameters::PenaltyValue &penalty,
+                             const std::string              &what,
+                             const std::string              &entry)
+      {
+        // k = eps h / E at every slave node.
+        double k_min = std::numeric_limits<double>::max(), k_max = 0;
+        for (const auto &node : pair.slave->nodes())
+        {
+          const double k = penalty.resolve(pair.contact_modulus, node.size) *
+                           node.size / pair.contact_modulus;
+          k_min = std::min(k_min, k);
+          k_max = std::max(k_max, k);
+        }
+        if (k_min < 1e-3 || k_max > 1e8)
+          warnings.push_back(
+            "contact pair <" + pair.description.text + ">: the " + what +
+            " is " + to_scientific(k_min) + " to " + to_scientific(k_max) +
+            " E/h over its slave nodes, outside [1e-3, 1e8] E/h (E = " +
+            to_scientific(pair.contact_modulus) + "): " +
+            (k_min < 1e-3 ? "too soft to keep the bodies apart" :
+                            "stiffer than round-off allows Newton to "
+                            "resolve") +
+            " (Contact/" + entry + " or the pair's option).");
+      };
+      check(pair.description.normal_penalty,
+            "normal penalty",
+            "Penalty factor");
+      if (pair.description.friction_coefficient > 0)
+        check(pair.description.tangential_penalty,
+              "tangential penalty",
+              "Tangential penalty factor");
+    }
+    return warnings;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  describe(const std::vector<ContactPair<dim>> &pairs)
+  {
+    std::vector<std::string> lines;
+    for (const auto &pair : pairs)
+    {
+      double h_min = std::numeric_limits<double>::max(), h_max = 0;
+      for (const auto &node : pair.slave->nodes())
+      {
+        h_min = std::min(h_min, node.size);
+        h_max = std::max(h_max, node.size);
+      }
+      const auto  &penalty = pair.description.normal_penalty;
+      const double E       = pair.contact_modulus;
+      lines.push_back("contact pair <" + pair.description.text +
+                      ">: " + Parameters::to_string(pair.description.method) +
+                      ", " + std::to_string(pair.n_nodes()) +
+                      " slave nodes, contact modulus E = " + to_scientific(E) +
+                      ", h = " + to_scientific(h_min) + " to " +
+                      to_scientific(h_max) +
+                      ", eps_N = " + to_scientific(penalty.resolve(E, h_max)) +
+                      " to " + to_scientific(penalty.resolve(E, h_min)));
+    }
+    return lines;
+  }
+
+  template struct ContactPair<2>;
+  template struct ContactPair<3>;
+  template std::vector<ContactPair<2>>
+  make_contact_pairs(const Parameters::Contact &,
+                     const DoFHandler<2> &,
+                     const std::function<double(types::material_id)> &,
+                     const IndexSet &,
+                     const bool,
+                     types::global_dof_index &,
+                     IndexSet &);
+  template std::vector<ContactPair<3>>
+  make_contact_pairs(const Parameters::Contact &,
+                     const DoFHandler<3> &,
+                     const std::function<double(types::material_id)> &,
+                     const IndexSet &,
+                     const bool,
+                     types::global_dof_index &,
+                     IndexSet &);
+  template std::vector<std::string>
+  penalty_warnings(const std::vector<ContactPair<2>> &);
+  template std::vector<std::string>
+  penalty_warnings(const std::vector<ContactPair<3>> &);
+  template std::vector<std::string>
+  describe(const std::vector<ContactPair<2>> &);
+  template std::vector<std::string>
+  describe(const std::vector<ContactPair<3>> &);
+} // namespace tribos

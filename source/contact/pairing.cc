@@ -1,0 +1,291 @@
+#include <tribos/contact/pairing.h>
+#include <tribos/contact/smoothed_segment.h>
+
+#include <cmath>
+#include <limits>
+
+namespace tribos
+{
+  namespace
+  {
+    /**
+     * Width, in local coordinates, of the band beyond the end of a master
+     * surface in which a slave node still sees the end face's extension.
+     */
+    constexpr double edge_band = 0.1;
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  smoothed_stencil(const ContactPair<dim>          &pair,
+                   const unsigned int               face,
+                   const std::vector<Vec3<double>> &positions,
+                   Vec3<double>                    *x,
+                   bool                            *has)
+  {
+    const auto &f = pair.master->faces()[face];
+    x[0]          = positions[f.nodes[0]];
+    x[1]          = positions[f.nodes[1]];
+    for (unsigned int side = 0; side < 2; ++side)
+    {
+      has[side]   = f.beyond[side] >= 0;
+      x[2 + side] = has[side] ? positions[f.beyond[side]] : x[side];
+    }
+  }
+
+
+
+  template <int dim>
+  Pairing<dim>::Pairing(const Parameters::Contact &parameters)
+    : parameters(parameters)
+  {
+  }
+
+
+
+  template <int dim>
+  bool
+  Pairing<dim>::update(ContactPair<dim>                    &pair,
+                       const TrilinosWrappers::MPI::Vector &solution) const
+  {
+    const auto positions =
+      [&solution](const auto &surface, std::vector<Vec3<double>> &x)
+    {
+      const auto &nodes = surface.nodes();
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+      {
+        x[k] = nodes[k].reference;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[k][d] += solution[nodes[k].dofs[d]];
+      }
+    };
+    positions(*pair.slave, pair.slave_positions);
+    // The enforcement's unknowns are unknowns of the system: read them.
+    const unsigned int n_unknowns = pair.enforcement->n_node_unknowns();
+    if (n_unknowns > 0)
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        for (unsigned int d = 0; d < n_unknowns; ++d)
+          pair.current[k].lambda[d] =
+            solution[pair.first_unknown + n_unknowns * k + d];
+
+    if (pair.rigid)
+    {
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        pair.current[k].paired = pair.owned[k] && !pair.excluded[k];
+      return false;
+    }
+    positions(*pair.master, pair.master_positions);
+    pair.search.build(*pair.master, pair.master_positions);
+
+    bool        new_coupling = false;
+    const auto &faces        = pair.master->faces();
+    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+    {
+      if (!pair.owned[k] || pair.excluded[k])
+        continue;
+      if (pair.smoothed)
+        pair_smoothed(pair, k);
+      else
+        pair_faceted(pair, k);
+
+      const int face = pair.current[k].face;
+      if (face >= 0 && pair.couplings.count({k, face}) == 0)
+      {
+        new_coupling = true;
+        pair.couplings.insert({k, face});
+        for (const unsigned int g : faces[face].neighbours)
+          pair.couplings.insert({k, g});
+      }
+    }
+    return new_coupling;
+  }
+
+
+
+  template <int dim>
+  void
+  Pairing<dim>::pair_faceted(ContactPair<dim> &pair, const unsigned int k) const
+  {
+    NodeState          &state = pair.current[k];
+    const Vec3<double> &x     = pair.slave_positions[k];
+    const auto         &faces = pair.master->faces();
+    const auto project_onto   = [&](const unsigned int f, const bool clamp)
+    {
+      Vec3<double> xm[4];
+      for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+        xm[v] = pair.master_positions[faces[f].nodes[v]];
+      return project<dim>(x, xm, clamp);
+    };
+
+    // Keep the face of the last evaluation while the node projects onto it
+    // or onto its extension within a small band: over a master vertex (a
+    // concave kink of the deformed master) the closest face would otherwise
+    // flip between iterations and Newton would cycle between two smooth
+    // residuals.
+    if (state.paired)
+    {
+      const Projection kept = project_onto(state.face, false);
+      bool             near = kept.distance <= parameters.search_distance;
+      for (unsigned int c = 0; c < dim - 1; ++c)
+        near = near && std::abs(kept.xi[c]) <= 1. + edge_band;
+      if (near)
+      {
+        state.projection = kept;
+        return;
+      }
+    }
+    state.paired   = false;
+    state.face     = -1;
+    state.distance = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<unsigned int> candidates =
+      candidate_faces(pair, x, state);
+    if (candidates.empty())
+      return;
+
+    // Exact projection on the candidate and its neighbours: prefer a
+    // projection inside a face (the closest such), else the closest clamped
+    // one.
+    bool   best_inside   = false;
+    double best_distance = std::numeric_limits<double>::max();
+    for (const unsigned int f : candidates)
+    {
+      const Projection p      = project_onto(f, true);
+      const bool       inside = p.inside();
+      if ((inside && !best_inside) ||
+          (inside == best_inside && p.distance < best_distance))
+      {
+        best_inside      = inside;
+        best_distance    = p.distance;
+        state.face       = f;
+        state.projection = p;
+      }
+    }
+    // A projection clamped at an edge where the master surface ends: within
+    // a small band beyond the edge the node sees the face's extension (a
+    // smooth residual for nodes flush with the end of the master); farther
+    // out it has slid off: no contact.
+    state.paired = true;
+    bool at_end  = false;
+    for (unsigned int c = 0; c < dim - 1; ++c)
+      if (state.projection.clamped[c] != 0 &&
+          !faces[state.face].continues[c][state.projection.clamped[c] > 0])
+        at_end = true;
+    if (at_end)
+    {
+      const Projection extended = project_onto(state.face, false);
+      for (unsigned int c = 0; c < dim - 1; ++c)
+        if (std::abs(extended.xi[c]) > 1. + edge_band)
+          state.paired = false;
+      state.projection = extended;
+    }
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  Pairing<dim>::candidate_faces(const ContactPair<dim> &pair,
+                                const Vec3<double>     &x,
+                                NodeState              &state) const
+  {
+    unsigned int closest;
+    double       squared_distance;
+    if (!pair.search.closest_face(x, closest, squared_distance))
+      return {};
+    state.distance = std::sqrt(squared_distance);
+    if (state.distance > parameters.search_distance)
+      return {};
+    std::vector<unsigned int> candidates =
+      pair.master->faces()[closest].neighbours;
+    candidates.insert(candidates.begin(), closest);
+    return candidates;
+  }
+
+
+
+  template <int dim>
+  void
+  Pairing<dim>::pair_smoothed(ContactPair<dim>  &pair,
+                              const unsigned int k) const
+  {
+    NodeState          &state = pair.current[k];
+    const Vec3<double> &x     = pair.slave_positions[k];
+    const auto         &faces = pair.master->faces();
+
+    // The smoothed projection onto one face: inside, or on the extension
+    // beyond a free end of the master within the edge band.
+    const auto try_face = [&](const unsigned int f, Projection &p) -> int
+    {
+      Vec3<double> xm[4];
+      bool         has[2];
+      smoothed_stencil(pair, f, pair.master_positions, xm, has);
+      double xi;
+      if (!SmoothedSegment::project(x, xm, has, xi))
+        return 0;
+      const double xbar[2] = {0.5 * (1 - xi) * xm[0][0] +
+                                0.5 * (1 + xi) * xm[1][0],
+                              0.5 * (1 - xi) * xm[0][1] +
+                                0.5 * (1 + xi) * xm[1][1]};
+      p                    = Projection();
+      p.xi[0]              = xi;
+      p.distance           = std::hypot(x[0] - xbar[0], x[1] - xbar[1]);
+      if (std::abs(xi) <= 1.)
+        return 2;
+      const int side = xi > 0 ? 1 : 0;
+      p.clamped[0]   = xi > 0 ? 1 : -1;
+      if (!faces[f].continues[0][side] && std::abs(xi) <= 1. + edge_band)
+        return 1;
+      return 0;
+    };
+
+    // The face of the last evaluation while the node still projects onto
+    // it: the projection is continuous across vertices, so this only saves
+    // the search.
+    if (state.paired)
+    {
+      Projection p;
+      const int  kind = try_face(state.face, p);
+      if (kind > 0 && p.distance <= parameters.search_distance)
+      {
+        state.projection = p;
+        return;
+      }
+    }
+    state.paired         = false;
+    state.face           = -1;
+    state.distance       = std::numeric_limits<double>::quiet_NaN();
+    int    best_kind     = 0;
+    double best_distance = std::numeric_limits<double>::max();
+    for (const unsigned int f : candidate_faces(pair, x, state))
+    {
+      Projection p;
+      const int  kind = try_face(f, p);
+      if (kind > best_kind ||
+          (kind == best_kind && kind > 0 && p.distance < best_distance))
+      {
+        best_kind        = kind;
+        best_distance    = p.distance;
+        state.face       = f;
+        state.projection = p;
+      }
+    }
+    state.paired = best_kind > 0;
+  }
+
+  template class Pairing<2>;
+  template class Pairing<3>;
+  template void
+  smoothed_stencil(const ContactPair<2> &,
+                   const unsigned int,
+                   const std::vector<Vec3<double>> &,
+                   Vec3<double> *,
+                   bool *);
+  template void
+  smoothed_stencil(const ContactPair<3> &,
+                   const unsigned int,
+                   const std::vector<Vec3<double>> &,
+                   Vec3<double> *,
+                   bool *);
+} // namespace tribos

@@ -1,0 +1,125 @@
+#include <tribos/contact/augmented_lagrangian.h>
+#include <tribos/contact/contact_pair.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+
+namespace tribos
+{
+  template <int dim>
+  ContactLaw
+  Penalty<dim>::law(const ContactPair<dim> &pair,
+                    const unsigned int      k,
+                    const NodeState &,
+                    const AffineConstraints<double> &) const
+  {
+    const double h = pair.slave->nodes()[k].size;
+    const double E = pair.contact_modulus;
+    ContactLaw   law;
+    law.friction_coefficient = pair.description.friction_coefficient;
+    law.normal_penalty       = pair.description.normal_penalty.resolve(E, h);
+    law.tangential_penalty = pair.description.tangential_penalty.resolve(E, h);
+    return law;
+  }
+
+
+
+  template <int dim>
+  void
+  Penalty<dim>::local_law(const PointKinematics &kinematics,
+                          const ContactLaw      &law,
+                          const Vec3<ContactAD> *,
+                          Vec3<ContactAD> &force,
+                          Vec3<ContactAD> &,
+                          ContactPointResult &result) const
+  {
+    using AD            = ContactAD;
+    const AD      &gap  = kinematics.gap;
+    const auto    &n    = kinematics.normal;
+    const Vec3<AD> zero = {{AD(0.), AD(0.), AD(0.)}};
+    force               = zero;
+    // Closed for lambda - eps_N g_N >= 0 (g_N <= 0 for pure penalty): a
+    // node that just touches carries no pressure but gives the Newton
+    // matrix its contact stiffness, so that the first iteration of a step
+    // does not push it deep into the master.
+    if (!law.frozen_closed &&
+        law.multiplier - law.normal_penalty * value_of(gap) < 0)
+      return;
+
+    const AD pressure = law.multiplier - law.normal_penalty * gap;
+    result.pressure   = value_of(pressure);
+    result.status     = ContactStatus::closed;
+    force             = scale(-pressure, n);
+    if (law.friction_coefficient == 0)
+      return;
+
+    // Stick trial (16): the committed traction, turned with the surface,
+    // plus the elastic part of the slip increment; slip indicator (17)
+    // and return map (18)-(19). A node held closed by the chattering
+    // remedy may carry a tensile pressure: the bound is never negative.
+    const Vec3<AD> trial =
+      kinematics.committed + scale(law.tangential_penalty, kinematics.slip);
+    const AD limit = law.friction_coefficient * positive_part(pressure);
+    Vec3<AD> traction;
+    AD       magnitude;
+    result.status = ContactStatus::stick;
+    if (coulomb_return(trial, limit, traction, magnitude))
+    {
+      result.status = ContactStatus::slip;
+      result.slip_increment =
+        value_of((magnitude - limit) / law.tangential_penalty);
+    }
+    force = force + traction;
+    for (unsigned int d = 0; d < 3; ++d)
+      result.traction[d] = value_of(traction[d]);
+  }
+
+
+
+  template <int dim>
+  ContactLaw
+  AugmentedLagrangian<dim>::law(
+    const ContactPair<dim>          &pair,
+    const unsigned int               k,
+    const NodeState                 &state,
+    const AffineConstraints<double> &homogeneous) const
+  {
+    ContactLaw law = Penalty<dim>::law(pair, k, state, homogeneous);
+    law.multiplier = state.multiplier;
+    return law;
+  }
+
+
+
+  template <int dim>
+  double
+  AugmentedLagrangian<dim>::violation(const ContactPair<dim> &pair) const
+  {
+    double violation = 0;
+    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      if (pair.owned[k] && pair.current[k].closed())
+        // Closed nodes must touch: a gap of either sign is a violation (a
+        // positive one means the warm-started multiplier of an unloading
+        // node is too large).
+        violation = std::max(violation,
+                             std::abs(pair.current[k].result.gap) /
+                               pair.slave->nodes()[k].size);
+    return violation;
+  }
+
+
+
+  template <int dim>
+  void
+  AugmentedLagrangian<dim>::outer_update(ContactPair<dim> &pair) const
+  {
+    for (auto &state : pair.current)
+      state.multiplier = state.result.pressure;
+  }
+
+  template class Penalty<2>;
+  template class Penalty<3>;
+  template class AugmentedLagrangian<2>;
+  template class AugmentedLagrangian<3>;
+} // namespace tribos

@@ -1,0 +1,251 @@
+#include <tribos/postprocess/contact_output.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <map>
+
+namespace tribos
+{
+  template <int dim>
+  ContactOutput<dim>::ContactOutput(const ContactHandler<dim> &contact)
+    : contact(contact)
+  {
+  }
+
+
+
+  template <int dim>
+  ContactStatistics
+  ContactOutput<dim>::statistics() const
+  {
+    ContactStatistics s;
+    for (const auto &pair : contact.pairs())
+    {
+      std::array<double, 5> forces = {{0, 0, 0, 0, 0}};
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      {
+        const auto &r = pair.current[k].result;
+        if (!pair.owned[k] || r.status == ContactStatus::open)
+          continue;
+        const double area = pair.area[k];
+        forces[0] += area * r.pressure;
+        forces[1] += area * norm(r.traction);
+        for (unsigned int d = 0; d < 3; ++d)
+          forces[2 + d] += area * (r.pressure * r.normal[d] - r.traction[d]);
+        s.max_penetration = std::max(s.max_penetration, -r.gap);
+        ++s.n_active;
+        if (r.status == ContactStatus::stick)
+          ++s.n_stick;
+        else if (r.status == ContactStatus::slip)
+          ++s.n_slip;
+      }
+      for (auto &f : forces)
+        f = Utilities::MPI::sum(f, contact.communicator());
+      s.pair_forces.push_back(forces);
+    }
+    s.max_penetration =
+      Utilities::MPI::max(s.max_penetration, contact.communicator());
+    s.n_active = Utilities::MPI::sum(s.n_active, contact.communicator());
+    s.n_stick  = Utilities::MPI::sum(s.n_stick, contact.communicator());
+    s.n_slip   = Utilities::MPI::sum(s.n_slip, contact.communicator());
+    return s;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactOutput<dim>::column_names() const
+  {
+    std::vector<std::string> names;
+    const char              *axis = "xyz";
+    for (unsigned int p = 0; p < contact.pairs().size(); ++p)
+    {
+      const std::string prefix = "pair" + std::to_string(p) + "_";
+      names.push_back(prefix + "normal_force");
+      names.push_back(prefix + "tangential_force");
+      for (unsigned int d = 0; d < dim; ++d)
+        names.push_back(prefix + "F" + axis[d]);
+    }
+    for (const std::string name :
+         {"max_penetration", "n_active", "n_stick", "n_slip"})
+      names.push_back(name);
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ContactOutput<dim>::columns() const
+  {
+    const ContactStatistics s = statistics();
+    std::vector<double>     values;
+    for (const auto &forces : s.pair_forces)
+      for (unsigned int i = 0; i < 2 + dim; ++i)
+        values.push_back(forces[i]);
+    values.push_back(s.max_penetration);
+    values.push_back(s.n_active);
+    values.push_back(s.n_stick);
+    values.push_back(s.n_slip);
+    return values;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOutput<dim>::write_csv(const std::string &filename) const
+  {
+    // One row per slave node: pair, body, x, y, z, CPRESS, CSHEAR (3),
+    // COPEN, CSLIP, CSTATUS.
+    constexpr unsigned int n_columns = 13;
+    std::vector<double>    rows;
+    for (unsigned int p = 0; p < contact.pairs().size(); ++p)
+    {
+      const auto &pair = contact.pairs()[p];
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      {
+        if (!pair.owned[k])
+          continue;
+        const auto  &r    = pair.current[k].result;
+        const auto  &x    = pair.slave_positions[k];
+        const auto  &node = pair.slave->nodes()[k];
+        const auto   body = pair.slave->faces()[node.faces[0]].body;
+        const double values[n_columns] = {double(p),
+                                          double(body),
+                                          x[0],
+                                          x[1],
+                                          x[2],
+                                          r.pressure,
+                                          -r.traction[0],
+                                          -r.traction[1],
+                                          -r.traction[2],
+                                          r.gap,
+                                          pair.current[k].slip,
+                                          double(int(r.status)),
+                                          double(k)};
+        rows.insert(rows.end(), values, values + n_columns);
+      }
+    }
+    const auto gathered =
+      Utilities::MPI::gather(contact.communicator(), rows, 0);
+    if (Utilities::MPI::this_mpi_process(contact.communicator()) != 0)
+      return;
+
+    // Sort by pair and node so that the file does not depend on the
+    // partition.
+    std::vector<std::array<double, n_columns>> all;
+    for (const auto &part : gathered)
+      for (unsigned int i = 0; i < part.size(); i += n_columns)
+      {
+        std::array<double, n_columns> row;
+        std::copy(part.begin() + i, part.begin() + i + n_columns, row.begin());
+        all.push_back(row);
+      }
+    std::sort(all.begin(),
+              all.end(),
+              [](const auto &a, const auto &b)
+              { return a[0] != b[0] ? a[0] < b[0] : a[12] < b[12]; });
+
+    const std::string temporary = filename + ".part";
+    {
+      std::ofstream out(temporary);
+      AssertThrow(out, ExcMessage("Cannot write <" + temporary + ">."));
+      out << "pair,body,x,y,z,CPRESS,CSHEAR_x,CSHEAR_y,CSHEAR_z,COPEN,CSLIP,"
+             "CSTATUS\n"
+          << std::setprecision(10);
+      for (const auto &row : all)
+      {
+        out << int(row[0]) << ',' << int(row[1]);
+        for (unsigned int c = 2; c < 11; ++c)
+          out << ',' << row[c];
+        out << ',' << int(row[11]) << '\n';
+      }
+    }
+    std::rename(temporary.c_str(), filename.c_str());
+  }
+
+
+
+  template <int dim>
+  void
+  ContactOutput<dim>::nodal_fields(
+    const std::vector<types::global_dof_index> &vertex_to_dof,
+    std::array<dealii::Vector<double>, 4>      &scalars,
+    dealii::Vector<double>                     &shear) const
+  {
+    // One physical value per node, also where a node is a slave of several
+    // pairs (two slave surfaces sharing an edge, two masters): CPRESS,
+    // CSHEAR and CSLIP are means over the pairs weighted by the node's
+    // tributary area in each (CPRESS is the node's total normal force over
+    // its total area); CPRESS and CSHEAR over the pairs that hold it
+    // closed, CSLIP over all (slip history outlives contact). CSTATUS is
+    // the status in the pair with the largest normal force, COPEN the
+    // smallest gap.
+    struct NodeValues
+    {
+      double       closed_area = 0, area = 0, pressure = 0, slip = 0;
+      double       largest_force = -1, gap = 0;
+      bool         has_gap = false;
+      int          status  = int(ContactStatus::open);
+      Vec3<double> shear{{0, 0, 0}};
+      const std::array<types::global_dof_index, dim> *dofs = nullptr;
+    };
+    std::map<unsigned int, NodeValues> per_vertex;
+    for (const auto &pair : contact.pairs())
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      {
+        if (!pair.owned[k])
+          continue;
+        const auto &node = pair.slave->nodes()[k];
+        const auto &r    = pair.current[k].result;
+        NodeValues &v    = per_vertex[node.vertex];
+        v.dofs           = &node.dofs;
+        // Excluded nodes (area 0) still report their slip with weight 1.
+        const double area = pair.area[k] > 0 ? pair.area[k] : 1e-300;
+        v.area += area;
+        v.slip += area * pair.current[k].slip;
+        if (std::isfinite(r.gap) && (!v.has_gap || r.gap < v.gap))
+        {
+          v.gap     = r.gap;
+          v.has_gap = true;
+        }
+        if (r.status == ContactStatus::open)
+          continue;
+        v.closed_area += area;
+        v.pressure += area * r.pressure;
+        for (unsigned int d = 0; d < dim; ++d)
+          v.shear[d] -= area * r.traction[d];
+        if (area * r.pressure > v.largest_force)
+        {
+          v.largest_force = area * r.pressure;
+          v.status        = int(r.status);
+        }
+      }
+    for (const auto &[vertex, v] : per_vertex)
+    {
+      const auto dof = vertex_to_dof[vertex];
+      scalars[1][dof] += v.has_gap ? v.gap : 0.;
+      scalars[2][dof] += v.slip / v.area;
+      scalars[3][dof] += v.status;
+      if (v.closed_area > 0)
+      {
+        scalars[0][dof] += v.pressure / v.closed_area;
+        for (unsigned int d = 0; d < dim; ++d)
+          shear[(*v.dofs)[d]] += v.shear[d] / v.closed_area;
+      }
+    }
+    for (auto &v : scalars)
+      Utilities::MPI::sum(v, contact.communicator(), v);
+    Utilities::MPI::sum(shear, contact.communicator(), shear);
+  }
+
+  template class ContactOutput<2>;
+  template class ContactOutput<3>;
+} // namespace tribos
