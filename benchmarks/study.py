@@ -40,7 +40,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from tribos_test import cylinder_analytic_force, hertz_fit  # noqa: E402
+from analytic import cylinder_force, hertz, polygon_section  # noqa: E402
+from tribos_test import hertz_fit  # noqa: E402
 
 COLUMNS = ["scene", "variant", "method", "penalty_factor", "tangent", "level",
            "dofs", "contact_dofs", "multipliers", "load_steps", "increments",
@@ -136,12 +137,7 @@ def record(rows, scene, variant, prm, folder, sets, error_of, level="",
 def hertz_errors(dim, e_star, force_scale, radius=1.0):
     def errors(folder, h):
         P = h[-1]["pair0_normal_force"] * force_scale
-        if dim == 2:
-            a = math.sqrt(4 * P * radius / (math.pi * e_star))
-            p0 = 2 * P / (math.pi * a)
-        else:
-            a = (3 * P * radius / (4 * e_star)) ** (1.0 / 3.0)
-            p0 = 3 * P / (2 * math.pi * a * a)
+        a, p0 = hertz(P, radius, e_star, dim)
         step = int(h[-1]["step"])
         with open(os.path.join(folder, "contact-%05d.csv" % step)) as f:
             nodes = [{k: float(v) if v not in ("", "nan") else math.nan
@@ -164,8 +160,7 @@ def hertz_errors(dim, e_star, force_scale, radius=1.0):
 
 def cylinder_analytic(k):
     """Force on the 1/8 model (8-chord section) after k steps of 0.2 mm."""
-    r = 6.35
-    return cylinder_analytic_force(k, 4 * r * r * math.sin(math.pi / 16))
+    return cylinder_force(k, polygon_section(6.35, 8))
 
 
 def cylinder_errors(axisymmetric=False):

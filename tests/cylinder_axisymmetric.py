@@ -13,8 +13,8 @@ import math
 import sys
 import time
 
-from tribos_test import (setup, run, read_csv, check, finish,
-                         cylinder_analytic_force)
+from analytic import cylinder_force
+from tribos_test import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 r = 6.35
@@ -22,7 +22,7 @@ r = 6.35
 
 def analytic(k):
     """Full-section plate force after k steps of 0.2 mm."""
-    return cylinder_analytic_force(k, math.pi * r * r)
+    return cylinder_force(k, math.pi * r * r)
 
 
 prm2 = tests + "/../parameters/cylinder_compression_axisymmetric.prm"

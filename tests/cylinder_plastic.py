@@ -12,31 +12,17 @@ with eps_N; writes the force-vs-displacement table doc-style to stdout."""
 import math
 import sys
 
+from analytic import j2_forces, polygon_section
 from tribos_test import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
-E, s0, sinf, delta, H = 206.9, 0.45, 0.715, 16.93, 0.12924
 r = 6.35
-chords = 8
-area = chords / 2 * r * r * math.sin(math.pi / (2 * chords))
+area = polygon_section(r, 8)
 
 
 def forces(stretches):
     """Nominal forces of monotonic compression through the stretches."""
-    eps_p, alpha, result = 0.0, 0.0, []
-    for stretch in stretches:
-        eps = math.log(stretch)
-        trial = E * (eps - eps_p)
-        if abs(trial) > s0 + (sinf - s0) * (1 - math.exp(-delta * alpha)) + H * alpha:
-            da = 0.0
-            for _ in range(60):
-                y = s0 + (sinf - s0) * (1 - math.exp(-delta * (alpha + da))) + H * (alpha + da)
-                slope = E + (sinf - s0) * delta * math.exp(-delta * (alpha + da)) + H
-                da += (abs(trial) - E * da - y) / slope
-            eps_p += math.copysign(da, trial)
-            alpha += da
-        result.append(E * (eps - eps_p) / stretch * area)
-    return result
+    return j2_forces(stretches, area)
 
 
 prm = tests + "/../parameters/cylinder_compression.prm"

@@ -1,6 +1,7 @@
 """Helpers shared by the test drivers: run tribos, read its CSV output,
 compare with references through numdiff. Standard library only."""
 
+import analytic
 import csv
 import math
 import os
@@ -72,12 +73,7 @@ def hertz_compare(folder, dim, e_star, radius, force_scale, step=2):
     p0 = 3 P / (2 pi a^2)."""
     history = read_csv(folder + "/history.csv")[-1]
     P = history["pair0_normal_force"] * force_scale
-    if dim == 2:
-        a = math.sqrt(4 * P * radius / (math.pi * e_star))
-        p0 = 2 * P / (math.pi * a)
-    else:
-        a = (3 * P * radius / (4 * e_star)) ** (1.0 / 3.0)
-        p0 = 3 * P / (2 * math.pi * a * a)
+    a, p0 = analytic.hertz(P, radius, e_star, dim)
     p0_h, a_h, points = hertz_fit(
         read_csv(folder + "/contact-%05d.csv" % step), dim)
     profile = math.sqrt(
@@ -103,29 +99,6 @@ def hertz_fit(rows, dim):
     slope = (n * sxy - sx * sy) / (n * sxx - sx * sx)
     intercept = (sy - slope * sx) / n
     return math.sqrt(intercept), math.sqrt(-intercept / slope), points
-
-
-def cylinder_analytic_force(k, area):
-    """Plate force on a cylinder section of `area` after k steps of 0.2 mm
-    of parameters/cylinder_compression.prm (r = 6.35, half height 6.35):
-    homogeneous compression, backward-Euler 1D integration of the J2 law
-    (36) in logarithmic strain, Kirchhoff stress / stretch x area."""
-    E, s0, sinf, delta, H, r = 206.9, 0.45, 0.715, 16.93, 0.12924, 6.35
-    eps_p = alpha = 0.0
-    stretch = 1.0
-    for step in range(1, k + 1):
-        stretch = (r - 0.2 * step) / r
-        trial = E * (math.log(stretch) - eps_p)
-        y = lambda a: s0 + (sinf - s0) * (1 - math.exp(-delta * a)) + H * a
-        if abs(trial) > y(alpha):
-            da = 0.0
-            for _ in range(60):
-                da += (abs(trial) - E * da - y(alpha + da)) / (
-                    E + (sinf - s0) * delta * math.exp(-delta * (alpha + da))
-                    + H)
-            eps_p += math.copysign(da, trial)
-            alpha += da
-    return abs(E * (math.log(stretch) - eps_p) / stretch) * area
 
 
 def check(condition, message):

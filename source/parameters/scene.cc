@@ -1,5 +1,6 @@
 #include <tribos/base/text.h>
 #include <tribos/parameters/scene.h>
+#include <tribos/scene/scene.h>
 
 namespace tribos
 {
@@ -341,11 +342,14 @@ namespace tribos
     Scene::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Scene");
+      // The scenes that registered themselves (source/scene/).
+      std::string names;
+      for (const auto &name : scene_names())
+        names += (names.empty() ? "" : "|") + name;
       prm.declare_entry(
         "Name",
         "block",
-        Patterns::Selection("block|two blocks|cylinder over block|"
-                            "cylinder compression|ring on foundation|gmsh"),
+        Patterns::Selection(names),
         "The geometry generator. Body (material) and boundary ids of each "
         "are listed in the README.");
       prm.declare_entry("Refinement",

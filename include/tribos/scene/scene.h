@@ -5,11 +5,35 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <string>
 #include <vector>
 
 namespace tribos
 {
   using namespace dealii;
+
+  /** A scene generator: builds the scene of @p parameters into an empty
+   * triangulation. */
+  template <int dim>
+  using SceneGenerator = void (*)(const Parameters::Scene &parameters,
+                                  Triangulation<dim>      &triangulation);
+
+  /**
+   * Registers a scene under its Scene/Name: every scene file defines one
+   * such object (static), so adding a scene touches its own file and its
+   * parameters (a subsection in parameters/scene.h), nothing else. A null
+   * generator: the scene does not exist in that dimension.
+   */
+  struct SceneRegistration
+  {
+    SceneRegistration(const std::string      &name,
+                      const SceneGenerator<2> two,
+                      const SceneGenerator<3> three);
+  };
+
+  /** The registered scenes' names, sorted. */
+  std::vector<std::string>
+  scene_names();
 
   /**
    * Build the scene named in @p parameters into @p triangulation (which

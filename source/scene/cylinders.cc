@@ -1,0 +1,337 @@
+/**
+ * Scenes "cylinder over block" (the Hertz indenter) and "cylinder compression" (the paper's cylinder, structured or split-corner section).
+ */
+
+#include <tribos/scene/mesh_tools.h>
+#include <tribos/scene/scene.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <cmath>
+
+namespace tribos
+{
+  using namespace MeshTools;
+
+  namespace
+  {
+    template <int dim>
+    void
+    make_indenter(Triangulation<dim> &tria,
+                  const double        radius,
+                  const double        gap,
+                  const unsigned int  n_refinements)
+    {
+      if (dim == 2)
+      {
+        // Half disc x >= 0, then rotate by -90 degrees: y <= 0.
+        GridGenerator::half_hyper_ball(tria, Point<dim>(), radius);
+        tria.refine_global(n_refinements);
+        GridTools::transform(
+          [](const Point<dim> &x)
+          {
+            Point<dim> y;
+            y[0] = x[1];
+            y[1] = -x[0];
+            return y;
+          },
+          tria);
+      }
+      else
+      {
+        // Octant x, y, z >= 0, then rotate by -90 degrees about x.
+        GridGenerator::quarter_hyper_ball(tria, Point<dim>(), radius);
+        tria.refine_global(n_refinements);
+        GridTools::transform(
+          [](const Point<dim> &x)
+          {
+            Point<dim> y;
+            y[0] = x[0];
+            y[1] = x[dim - 1];
+            y[2] = -x[1];
+            return y;
+          },
+          tria);
+      }
+      Tensor<1, dim> shift;
+      shift[dim - 1] = radius + gap;
+      GridTools::shift(shift, tria);
+
+      const double tolerance = 1e-10 * radius;
+      for (const auto &face : tria.active_face_iterators())
+        if (face->at_boundary())
+        {
+          const Point<dim> c = face->center();
+          if (std::abs(c[dim - 1] - (radius + gap)) < tolerance)
+            face->set_boundary_id(11);
+          else if (dim == 3 && std::abs(c[0]) < tolerance)
+            face->set_boundary_id(12);
+          else if (dim == 3 && std::abs(c[1]) < tolerance)
+            face->set_boundary_id(13);
+          else
+            face->set_boundary_id(10);
+        }
+      set_material_id(tria, 1);
+    }
+
+
+
+    template <int dim>
+    void
+    create_cylinder_over_block(const Parameters::Scene &p,
+                               Triangulation<dim>      &tria)
+    {
+      const auto        &s = p.cylinder_over_block;
+      Triangulation<dim> block, indenter;
+
+      std::vector<unsigned int> counts(dim, s.block_subdivisions[0]);
+      counts[dim - 1] = s.block_subdivisions[1];
+      for (auto &n : counts)
+        n <<= p.refinement;
+      Point<dim> p1, p2;
+      for (unsigned int d = 0; d < dim - 1; ++d)
+      {
+        p1[d] = (dim == 2 ? -0.5 * s.block_width : 0.);
+        p2[d] = 0.5 * s.block_width;
+      }
+      p1[dim - 1] = -s.block_height;
+      make_box(block, counts, p1, p2, 0, 0);
+
+      make_indenter(indenter,
+                    s.radius,
+                    s.gap,
+                    s.indenter_refinements + p.refinement);
+      if (s.with_block)
+        merge_bodies<dim>({&block, &indenter}, tria);
+      else
+        merge_bodies<dim>({&indenter}, tria);
+
+      // Local refinement at the contact point: the curved surface goes
+      // back on its exact manifold so that new vertices lie on the sphere.
+      Point<dim> centre, contact_point;
+      centre[dim - 1]        = s.radius + s.gap;
+      contact_point[dim - 1] = 0.5 * s.gap;
+      for (const auto &face : tria.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == 10)
+          face->set_all_manifold_ids(1);
+      tria.set_manifold(1, SphericalManifold<dim>(centre));
+      for (unsigned int cycle = 0; cycle < s.contact_refinements; ++cycle)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+        {
+          // Refine every cell that reaches into the refinement disc.
+          double distance = cell->center().distance(contact_point);
+          for (const unsigned int v : cell->vertex_indices())
+            distance =
+              std::min(distance, cell->vertex(v).distance(contact_point));
+          if (distance < s.refinement_radius * s.radius)
+            cell->set_refine_flag();
+        }
+        tria.execute_coarsening_and_refinement();
+      }
+    }
+
+
+
+    /**
+     * Meridian section [r0, R] x [0, z_top] in three blocks, each refined
+     * @p n_refinements times: one at the inner bottom corner and two that
+     * meet along the line from the section's centre to the rim corner
+     * (R, z_top). The rim corner is then a vertex of two cells: when the
+     * lateral face folds onto the plate, the corner's 180 degrees are
+     * shared by two cells instead of flattening one.
+     */
+    void
+    create_split_corner_section(Triangulation<2>  &section,
+                                const double       r0,
+                                const double       R,
+                                const double       z_top,
+                                const unsigned int n_refinements)
+    {
+      const double                rm = 0.5 * (r0 + R), zm = 0.5 * z_top;
+      const std::vector<Point<2>> vertices = {Point<2>(r0, 0),
+                                              Point<2>(rm, 0),
+                                              Point<2>(R, 0),
+                                              Point<2>(r0, zm),
+                                              Point<2>(rm, zm),
+                                              Point<2>(r0, z_top),
+                                              Point<2>(R, z_top)};
+      std::vector<CellData<2>>    cells(3);
+      cells[0].vertices = {0, 1, 3, 4};
+      cells[1].vertices = {1, 2, 4, 6};
+      cells[2].vertices = {3, 4, 5, 6};
+      section.create_triangulation(vertices, cells, SubCellData());
+      section.refine_global(n_refinements);
+    }
+
+
+
+    /**
+     * The section (r, z) swept over the quarter turn x, y >= 0 in
+     * @p n_angles equal angles: hexahedra r x z x angle.
+     */
+    void
+    sweep_section(const Triangulation<2> &section,
+                  const unsigned int      n_angles,
+                  Triangulation<3>       &result)
+    {
+      const std::vector<Point<2>> &points     = section.get_vertices();
+      const unsigned int           n_vertices = points.size();
+      std::vector<Point<3>>        vertices;
+      for (unsigned int j = 0; j <= n_angles; ++j)
+      {
+        const double angle = 0.5 * numbers::PI * j / n_angles;
+        for (const Point<2> &p : points)
+          vertices.emplace_back(p[0] * std::cos(angle),
+                                p[0] * std::sin(angle),
+                                p[1]);
+      }
+      std::vector<CellData<3>> cells;
+      for (const auto &cell : section.active_cell_iterators())
+        for (unsigned int j = 0; j < n_angles; ++j)
+        {
+          // (r, z, -angle) is right-handed: the later angle comes first.
+          CellData<3> hex;
+          hex.vertices.resize(8);
+          for (unsigned int v = 0; v < 4; ++v)
+          {
+            hex.vertices[v]     = (j + 1) * n_vertices + cell->vertex_index(v);
+            hex.vertices[v + 4] = j * n_vertices + cell->vertex_index(v);
+          }
+          cells.push_back(hex);
+        }
+      result.create_triangulation(vertices, cells, SubCellData());
+    }
+
+
+
+    /**
+     * One eighth of the cylinder (3D): quarter disc x, y >= 0 extruded over
+     * the upper half height z in [0, h/2]. 2D: the meridian section
+     * [0, r] x [0, h/2]. Ids: 0 plane x = 0, 1 plane y = 0, 2 mid plane,
+     * 3 top (plate), 4 lateral surface.
+     */
+    template <int dim>
+    void
+    create_cylinder_compression(const Parameters::Scene &p,
+                                Triangulation<dim>      &tria)
+    {
+      const auto        &s           = p.cylinder_compression;
+      const unsigned int axial_cells = s.axial_cells << p.refinement;
+      const double       tolerance   = 1e-10 * s.radius;
+
+      const unsigned int n_refinements = s.radial_refinements + p.refinement;
+      if (s.split_corner)
+      {
+        if constexpr (dim == 2)
+          create_split_corner_section(tria,
+                                      0.,
+                                      s.radius,
+                                      0.5 * s.height,
+                                      n_refinements);
+        else
+        {
+          // Inner quarter of the radius: a quarter disc extruded in the
+          // section's layers at r0; outside: the section swept around in
+          // the disc's arc segments. The disc is refined once less than
+          // the section: the fold-over is axisymmetric and needs its
+          // resolution in the section, while each refinement of the
+          // angles doubles the ring's cells (r = 3: 2304 cells).
+          const double     r0 = 0.25 * s.radius;
+          Triangulation<2> section;
+          create_split_corner_section(section,
+                                      r0,
+                                      s.radius,
+                                      0.5 * s.height,
+                                      n_refinements);
+          std::vector<double> layers;
+          for (const Point<2> &v : section.get_vertices())
+            if (std::abs(v[0] - r0) < tolerance)
+              layers.push_back(v[1]);
+          std::sort(layers.begin(), layers.end());
+          Triangulation<2> disc, flat;
+          GridGenerator::quarter_hyper_ball(disc, Point<2>(), r0);
+          disc.refine_global(std::max(n_refinements, 1u) - 1);
+          GridGenerator::flatten_triangulation(disc, flat);
+          Triangulation<3> core, ring;
+          GridGenerator::extrude_triangulation(flat, layers, core);
+          sweep_section(section, 1u << std::max(n_refinements, 1u), ring);
+          GridGenerator::merge_triangulations(core,
+                                              ring,
+                                              tria,
+                                              1e-8 * s.radius);
+        }
+      }
+      else if constexpr (dim == 2)
+      {
+        GridGenerator::subdivided_hyper_rectangle(
+          tria,
+          {(1u << n_refinements), axial_cells},
+          Point<2>(),
+          Point<2>(s.radius, 0.5 * s.height));
+      }
+      else
+      {
+        Triangulation<2> disc;
+        GridGenerator::quarter_hyper_ball(disc, Point<2>(), s.radius);
+        disc.refine_global(n_refinements);
+        Triangulation<2> flat;
+        GridGenerator::flatten_triangulation(disc, flat);
+        GridGenerator::extrude_triangulation(flat,
+                                             axial_cells + 1,
+                                             0.5 * s.height,
+                                             tria);
+      }
+
+      if (s.imperfection > 0)
+        GridTools::transform(
+          [&s](const Point<dim> &x)
+          {
+            const double factor =
+              1. - s.imperfection * (1. - 2. * x[dim - 1] / s.height);
+            Point<dim> y = x;
+            for (unsigned int d = 0; d < dim - 1; ++d)
+              y[d] *= factor;
+            return y;
+          },
+          tria);
+
+      for (const auto &face : tria.active_face_iterators())
+        if (face->at_boundary())
+        {
+          const Point<dim> c = face->center();
+          if (std::abs(c[dim - 1] - 0.5 * s.height) < tolerance)
+            face->set_boundary_id(3);
+          else if (std::abs(c[dim - 1]) < tolerance)
+            face->set_boundary_id(2);
+          else if (std::abs(c[0]) < tolerance)
+            face->set_boundary_id(0);
+          else if (dim == 3 && std::abs(c[1]) < tolerance)
+            face->set_boundary_id(1);
+          else
+            face->set_boundary_id(4);
+        }
+      set_material_id(tria, 0);
+    }
+
+
+
+    /**
+     * Lower half of a two-layer ring (inner layer body 0, outer layer body
+     * 1) with its bottom at y = gap, over a foundation (body 2) with its top
+     * at y = 0. Ids: 0 inner surface, 1 outer surface, 2 left end, 3 right
+     * end; foundation 10 left, 11 right, 12 bottom, 13 top.
+     */
+  } // namespace
+
+  const SceneRegistration
+    cylinder_over_block_scene("cylinder over block",
+                              &create_cylinder_over_block<2>,
+                              &create_cylinder_over_block<3>);
+  const SceneRegistration
+    cylinder_compression_scene("cylinder compression",
+                               &create_cylinder_compression<2>,
+                               &create_cylinder_compression<3>);
+} // namespace tribos
