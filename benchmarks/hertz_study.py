@@ -60,7 +60,8 @@ with open(target, "w", newline="") as f:
     for name, dim, prm, sets, e_star, force_scale, levels in scenes:
         for level in levels:
             for factor in factors:
-                folder = "%s/%s_%d_%s" % (out, name, level, factor.replace("*", ""))
+                folder = "%s/%s_%d_%s" % (out, name, level,
+                                          factor.replace("*", "").replace("/", ""))
                 result = run(tribos, os.path.join(root, "parameters", prm), folder,
                              sets + ["Scene/Cylinder over block/Contact refinements=%d" % level,
                                      "Contact/Penalty factor=" + factor,

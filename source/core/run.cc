@@ -33,6 +33,7 @@ namespace tribos
     // translations of the displacement components as its near-null
     // space), Newton, and the load stepping around it.
     linear_solver = std::make_unique<LinearSolver>(parameters.linear_solver);
+    linear_solver->set_timer(timer);
     if (!parameters.linear_solver.direct)
     {
       std::vector<std::vector<bool>> modes;

@@ -6,6 +6,8 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <memory>
+
 namespace tribos
 {
   LinearSolver::LinearSolver(const Parameters::LinearSolver &parameters)
@@ -26,10 +28,21 @@ namespace tribos
 
 
   void
+  LinearSolver::set_timer(TimerOutput &t)
+  {
+    timer = &t;
+  }
+
+
+
+  void
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                       Vector                               &x,
                       const Vector                         &rhs)
   {
+    std::unique_ptr<TimerOutput::Scope> scope;
+    if (timer != nullptr)
+      scope = std::make_unique<TimerOutput::Scope>(*timer, "linear solve");
     const auto &p = parameters;
     if (p.direct)
     {

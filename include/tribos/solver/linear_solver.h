@@ -3,6 +3,7 @@
 
 #include <tribos/parameters/linear_solver.h>
 
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -36,6 +37,10 @@ namespace tribos
     set_near_null_space(const std::vector<std::vector<bool>> &modes,
                         const bool                            higher_order);
 
+    /** Time every solve in @p timer's section "linear solve". */
+    void
+    set_timer(TimerOutput &timer);
+
     /** Solve @p matrix @p x = @p rhs. */
     void
     solve(const TrilinosWrappers::SparseMatrix &matrix,
@@ -46,6 +51,7 @@ namespace tribos
     const Parameters::LinearSolver &parameters;
     std::vector<std::vector<bool>>  constant_modes;
     bool                            higher_order = false;
+    TimerOutput                    *timer        = nullptr;
   };
 } // namespace tribos
 
