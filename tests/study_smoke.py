@@ -40,6 +40,8 @@ for r in rows:
     values = [float(r[c]) for c in numeric]
     check(all(math.isfinite(v) and v >= 0 for v in values),
           "%s: numeric columns finite and >= 0" % r["variant"])
+    check(float(r["t_assembly"]) > 0 and float(r["t_linear_solve"]) > 0,
+          "%s: summary.txt times assembly and linear solves" % r["variant"])
     check(float(r["error"]) < 0.1, "%s: Hertz error %.3f < 0.1 on the "
           "coarse smoke mesh" % (r["variant"], float(r["error"])))
     check(int(r["multipliers"]) > 0 if "lagrange" in r["method"]
