@@ -113,7 +113,7 @@ for factor in ("10", "100", "1000", "10000"):
           "pressure by %.3e" % (factor, force, peak))
     if previous:
         check(force * 5 < previous[0] and peak * 5 < previous[1],
-              "penalty %sE: at least 5x closer than %sE (force %.1fx, peak "
+              "penalty %sE/h: at least 5x closer than %sE/h (force %.1fx, peak "
               "%.1fx)" % (factor, previous[2], previous[0] / force,
                           previous[1] / peak))
     previous = (force, peak, factor)
