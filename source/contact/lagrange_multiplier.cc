@@ -11,24 +11,28 @@ namespace tribos
     /**
      * An orthonormal tangent frame of the unit normal @p n: t_0 from the
      * coordinate axis least aligned with n (fixed while n varies, so the
-     * frame is differentiable), t_1 = n x t_0. In 2D (n in the plane
-     * z = 0) t_0 lies in the plane and t_1 = +-e_z is unused.
+     * frame is differentiable), t_1 = n x t_0. In 2D always the in-plane
+     * tangent t_0 = (-n_y, n_x) (t_1 = e_z is unused): choosing it by the
+     * axis test too made t_0 flip sign where n_x passes through 0 (the
+     * test |n_z| < |n_x| fails at n_x = 0 exactly), so a multiplier row
+     * changed sign between a Newton iterate and its neighbour (the
+     * tangent check of the smoothed ironing: 7.9e-3 at the node under the
+     * symmetric indenter).
      */
-    template <typename Number>
+    template <int dim, typename Number>
     void
     tangent_frame(const Vec3<Number> &n, Vec3<Number> (&t)[2])
     {
-      unsigned int axis = 0;
-      for (unsigned int d = 1; d < 3; ++d)
-        if (std::abs(value_of(n[d])) < std::abs(value_of(n[axis])))
-          axis = d;
-      if (value_of(n[2]) == 0 && axis == 2)
+      if (dim == 2)
       {
-        // 2D: the in-plane tangent.
         t[0] = {{Number(-n[1]), Number(n[0]), Number(0.)}};
         t[1] = {{Number(0.), Number(0.), Number(1.)}};
         return;
       }
+      unsigned int axis = 0;
+      for (unsigned int d = 1; d < 3; ++d)
+        if (std::abs(value_of(n[d])) < std::abs(value_of(n[axis])))
+          axis = d;
       Vec3<Number> e = {{Number(0.), Number(0.), Number(0.)}};
       e[axis]        = 1.;
       t[0]           = e - scale(n[axis], n);
@@ -64,6 +68,7 @@ namespace tribos
     // The semismooth stick/slip parameter c_T.
     law.tangential_penalty =
       parameters.friction_complementarity.resolve(E, node.size);
+    law.touch = 1e-12 * node.size;
     for (unsigned int d = 0; d < dim; ++d)
       if (homogeneous.is_constrained(node.dofs[d]) &&
           homogeneous.get_constraint_entries(node.dofs[d])->empty())
@@ -116,7 +121,8 @@ namespace tribos
     const AD       pressure    = -dot(multiplier, n);
     const Vec3<AD> tau         = multiplier + scale(pressure, n);
     if (!law.frozen_closed &&
-        value_of(pressure) - law.normal_penalty * value_of(gap) < 0)
+        value_of(pressure) - law.normal_penalty * (value_of(gap) - law.touch) <
+          0)
     {
       constraint    = multiplier;
       result.status = ContactStatus::open;
@@ -181,7 +187,7 @@ namespace tribos
     // the term c g dn/du of a penetrating node would put spurious
     // tangential forces into every iterate.)
     Vec3<AD> t[2];
-    tangent_frame(n, t);
+    tangent_frame<dim>(n, t);
     constraint[0] = law.normal_penalty * gap;
     constraint[1] = dot(tangential, t[0]);
     constraint[2] = dot(tangential, t[1]);

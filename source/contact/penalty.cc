@@ -20,6 +20,7 @@ namespace tribos
     law.friction_coefficient = pair.description.friction_coefficient;
     law.normal_penalty       = pair.description.normal_penalty.resolve(E, h);
     law.tangential_penalty = pair.description.tangential_penalty.resolve(E, h);
+    law.touch              = 1e-12 * h;
     return law;
   }
 
@@ -44,10 +45,10 @@ namespace tribos
     // matrix its contact stiffness, so that the first iteration of a step
     // does not push it deep into the master.
     if (!law.frozen_closed &&
-        law.multiplier - law.normal_penalty * value_of(gap) < 0)
+        law.multiplier - law.normal_penalty * (value_of(gap) - law.touch) < 0)
       return;
 
-    const AD pressure = law.multiplier - law.normal_penalty * gap;
+    const AD pressure = law.multiplier - law.normal_penalty * (gap - law.touch);
     result.pressure   = value_of(pressure);
     result.status     = ContactStatus::closed;
     force             = scale(-pressure, n);

@@ -103,8 +103,9 @@ namespace tribos
   ContactOutput<dim>::write_csv(const std::string &filename) const
   {
     // One row per slave node: pair, body, x, y, z, CPRESS, CSHEAR (3),
-    // COPEN, CSLIP, CSTATUS.
-    constexpr unsigned int n_columns = 13;
+    // COPEN, CSLIP, CSTATUS, X, Y, Z (the reference position: theories
+    // such as Hertz's are written in it), and the node's number (sorting).
+    constexpr unsigned int n_columns = 16;
     std::vector<double>    rows;
     for (unsigned int p = 0; p < contact.pairs().size(); ++p)
     {
@@ -129,6 +130,9 @@ namespace tribos
                                           r.gap,
                                           pair.current[k].slip,
                                           double(int(r.status)),
+                                          node.reference[0],
+                                          node.reference[1],
+                                          node.reference[2],
                                           double(k)};
         rows.insert(rows.end(), values, values + n_columns);
       }
@@ -151,21 +155,24 @@ namespace tribos
     std::sort(all.begin(),
               all.end(),
               [](const auto &a, const auto &b)
-              { return a[0] != b[0] ? a[0] < b[0] : a[12] < b[12]; });
+              { return a[0] != b[0] ? a[0] < b[0] : a[15] < b[15]; });
 
     const std::string temporary = filename + ".part";
     {
       std::ofstream out(temporary);
       AssertThrow(out, ExcMessage("Cannot write <" + temporary + ">."));
       out << "pair,body,x,y,z,CPRESS,CSHEAR_x,CSHEAR_y,CSHEAR_z,COPEN,CSLIP,"
-             "CSTATUS\n"
+             "CSTATUS,X,Y,Z\n"
           << std::setprecision(10);
       for (const auto &row : all)
       {
         out << int(row[0]) << ',' << int(row[1]);
         for (unsigned int c = 2; c < 11; ++c)
           out << ',' << row[c];
-        out << ',' << int(row[11]) << '\n';
+        out << ',' << int(row[11]);
+        for (unsigned int c = 12; c < 15; ++c)
+          out << ',' << row[c];
+        out << '\n';
       }
     }
     std::rename(temporary.c_str(), filename.c_str());

@@ -23,6 +23,15 @@ namespace tribos
     /** Coulomb coefficient mu (17); 0 means frictionless. */
     double friction_coefficient = 0;
     /**
+     * Gaps up to this count as touching: contact is active from g_N = touch
+     * on, t_N = eps_N (touch - g_N). A node of a body that rests on a
+     * master at g_N = 0 (a scene with Gap = 0) must close in the first
+     * iteration whatever the round-off of its position, or a body held only
+     * by contact is singular there; 1e-12 of the element size is below any
+     * physical gap and above the round-off of the positions.
+     */
+    double touch = 0;
+    /**
      * Augmented Lagrangian multiplier lambda of the node (a pressure):
      * t_N = <lambda - eps_N g_N>. Zero for pure penalty.
      */
