@@ -2,7 +2,7 @@
 # Install the Debian packages tribos needs, only those that are missing.
 set -euo pipefail
 packages=(cmake make g++ libdeal.ii-dev libcgal-dev numdiff gnuplot-nox
-          openmpi-bin python3)
+          openmpi-bin python3 libopenblas0-pthread)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \

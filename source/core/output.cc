@@ -538,7 +538,17 @@ namespace tribos
             << "newton iterations " << totals.n_newton_iterations << '\n'
             << "newton iterations (all attempts) "
             << (newton ? newton->n_linear_solves() : 0) << '\n'
-            << "cutbacks          " << totals.n_cutbacks << '\n';
+            << "cutbacks          " << totals.n_cutbacks << '\n'
+            << "linear solver     "
+            << (linear_solver && !linear_solver->method().empty() ?
+                  linear_solver->method() :
+                  "none")
+            << '\n';
+        if (linear_solver && linear_solver->n_iterations() > 0)
+          out << "linear iterations " << linear_solver->n_iterations()
+              << '\n'
+              << "AMG setups        "
+              << linear_solver->n_preconditioner_setups() << '\n';
         if (parameters.nonlinear_solver.stabilization > 0)
           out << "largest stabilization ratio "
               << totals.largest_stabilization_ratio << '\n';

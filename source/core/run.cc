@@ -3,6 +3,9 @@
 
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <map>
 
 namespace tribos
 {
@@ -30,19 +33,17 @@ namespace tribos
     write_vtu(0, 0.);
 
     // The solvers: the linear solve of a Newton iteration (AMG gets the
-    // translations of the displacement components as its near-null
-    // space), Newton, and the load stepping around it.
-    linear_solver = std::make_unique<LinearSolver>(parameters.linear_solver);
+    // rigid-body modes as its near-null space), Newton, and the load
+    // stepping around it.
+    linear_solver = std::make_unique<LinearSolver>(parameters.linear_solver,
+                                                   dim,
+                                                   n_multipliers > 0);
     linear_solver->set_timer(timer);
-    if (!parameters.linear_solver.direct)
-    {
-      std::vector<std::vector<bool>> modes;
-      DoFTools::extract_constant_modes(dof_handler,
-                                       ComponentMask(dim, true),
-                                       modes);
-      linear_solver->set_near_null_space(modes,
+    if (parameters.linear_solver.iterative_for(dim,
+                                               matrix.m(),
+                                               n_multipliers > 0))
+      linear_solver->set_near_null_space(rigid_body_modes(),
                                          parameters.finite_element.degree > 1);
-    }
     newton  = std::make_unique<NewtonSolver>(parameters.nonlinear_solver,
                                             *linear_solver);
     stepper = std::make_unique<LoadStepper>(parameters.time_stepping, *newton);
@@ -58,6 +59,44 @@ namespace tribos
           << newton->n_linear_solves() << " with failed attempts), "
           << totals.n_cutbacks << " cutbacks, " << wall_clock.wall_time()
           << " s; output in " << parameters.output.directory << std::endl;
+  }
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  Problem<dim>::rigid_body_modes() const
+  {
+    // The support points of the dofs (reference configuration).
+    std::map<types::global_dof_index, Point<dim>> points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(), dof_handler, points);
+    Point<dim> centre;
+    for (const auto &[dof, point] : points)
+      centre += point / double(points.size());
+    const unsigned int n_modes = dim == 2 ? 3 : 6;
+    std::vector<std::vector<double>> modes(
+      n_modes, std::vector<double>(system_owned.n_elements(), 0.));
+    unsigned int local = 0;
+    for (const auto dof : system_owned)
+    {
+      if (dof < dof_handler.n_dofs())
+      {
+        const unsigned int c = dof_component[dof];
+        const Tensor<1, dim> x = points.at(dof) - centre;
+        modes[c][local]      = 1; // translations
+        // Rotations: about z in 2D (-y, x); about x, y, z in 3D.
+        if constexpr (dim == 2)
+          modes[2][local] = (c == 0 ? -x[1] : x[0]);
+        else
+        {
+          const double rotation[3][3] = {{0, -x[2], x[1]},
+                                         {x[2], 0, -x[0]},
+                                         {-x[1], x[0], 0}};
+          for (unsigned int r = 0; r < 3; ++r)
+            modes[3 + r][local] = rotation[r][c];
+        }
+      }
+      ++local;
+    }
+    return modes;
   }
 
   template class Problem<2>;

@@ -271,7 +271,8 @@ namespace tribos
                   ExcMessage("Contact/Method = lagrange multiplier runs on "
                              "one MPI process; use penalty or augmented "
                              "lagrangian with MPI."));
-      AssertThrow(parameters.linear_solver.direct,
+      AssertThrow(parameters.linear_solver.type !=
+                    Parameters::LinearSolver::Type::iterative,
                   ExcMessage("Contact/Method = lagrange multiplier gives an "
                              "indefinite saddle-point system: it needs "
                              "Linear solver/Type = direct (a pivoting sparse "
@@ -369,6 +370,7 @@ namespace tribos
                                                mpi_communicator,
                                                system_relevant);
     matrix.reinit(system_owned, system_owned, dsp, mpi_communicator);
+    ++sparsity_version;
   }
 
 

@@ -62,6 +62,7 @@ namespace tribos
     // kind of unknown.
     NonlinearProblem::Norms correction{nan, 0}, taken{nan, 0};
     double                  previous[2] = {-1, -1};
+    double                  previous_residual = 0, previous_eta = 0.1;
     unsigned int            relaxed_at = 0, n_solves = 0;
 
     for (unsigned int iteration = 0;; ++iteration)
@@ -70,7 +71,7 @@ namespace tribos
       const auto r     = problem.assemble(true, first);
       if (!std::isfinite(r.free))
         throw NonConvergence("the residual is not finite");
-      problem.after_assembly(iteration);
+      problem.after_assembly(iteration, r.free);
 
       // Observed order of convergence from three successive residuals
       // after the first solve (iteration 0 precedes the Dirichlet
@@ -137,12 +138,53 @@ namespace tribos
         problem.assemble(true, first);
       }
 
+      // Inexact Newton (Eisenstat and Walker's second choice) for
+      // iterative solves: the linear tolerance follows the decrease of the
+      // residual, eta = 0.9 (r_k / r_k-1)^2, kept above 0.9 eta_k-1^2 when
+      // that is large (no sudden oversolving) and above half of what the
+      // Newton test still asks (no solve beyond the tolerance), at most
+      // 1e-3; the first iteration, which carries the Dirichlet increment,
+      // at 1e-4. The cap: contact changes the active set between
+      // iterations, and a loose direction costs Newton iterations that cost
+      // more than the Krylov iterations saved (3D Hertz, 121k unknowns:
+      // 23 Newton iterations and 34.7 s with 0.1, 15 and 27.4 s with 1e-3,
+      // 15 and 35.1 s with 1e-4, 13 and 43.7 s solving to 1e-10).
+      double eta = 0;
+      if (linear_solver.iterative(problem.system_matrix()))
+      {
+        if (first)
+          eta = 1e-4;
+        else
+        {
+          eta = 0.9 * std::pow(r.free / previous_residual, 2);
+          if (0.9 * previous_eta * previous_eta > 0.1)
+            eta = std::max(eta, 0.9 * previous_eta * previous_eta);
+          const double target =
+            p.residual_tolerance * std::max(reference, r.force_scale);
+          eta = std::min(1e-3, std::max(eta, 0.5 * target / r.free));
+          // A stalled Newton step (the residual not halved) is the active
+          // set's doing, not the Krylov tolerance's: solve it tightly.
+          if (r.free > 0.5 * previous_residual)
+            eta = std::min(eta, 1e-8);
+          eta = std::max(eta, 1e-12);
+        }
+        previous_eta = eta;
+      }
+      previous_residual = r.free;
+
       update = 0;
       ++linear_solves;
       ++n_solves;
       linear_solver.solve(problem.system_matrix(),
+                          problem.pattern_version(),
                           update,
-                          problem.system_rhs());
+                          problem.system_rhs(),
+                          eta);
+      if (linear_solver.method() != announced)
+      {
+        announced = linear_solver.method();
+        problem.message("  linear solver: " + announced);
+      }
       problem.distribute(update, first);
 
       // No line search on the first iteration (it carries the Dirichlet

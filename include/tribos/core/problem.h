@@ -89,6 +89,11 @@ namespace tribos
     {
       return rhs;
     }
+    unsigned long
+    pattern_version() const override
+    {
+      return sparsity_version;
+    }
     void
     distribute(Vector &update, const bool first_iteration) const override;
     Vector &
@@ -113,7 +118,8 @@ namespace tribos
       return stagnation_bound;
     }
     void
-    after_assembly(const unsigned int iteration) override;
+    after_assembly(const unsigned int iteration,
+                   const double       residual) override;
     Verdict
     at_convergence(IncrementReport &report) override;
     double
@@ -204,6 +210,12 @@ namespace tribos
       return n_multipliers == 0 ? ghosted_solution : displacement;
     }
 
+    /* run.cc */
+    /** The rigid-body modes (translations, rotations about the centroid)
+     * at the locally owned rows, the near-null space of AMG. */
+    std::vector<std::vector<double>>
+    rigid_body_modes() const;
+
     /* output.cc */
     void
     open_output();
@@ -244,6 +256,8 @@ namespace tribos
     AffineConstraints<double> homogeneous_constraints;
 
     TrilinosWrappers::SparseMatrix matrix;
+    /** Counts the rebuilds of the matrix's sparsity pattern. */
+    unsigned long sparsity_version = 0;
     Vector                         rhs;
     Vector                         free_residual;
     Vector                         full_residual;
@@ -267,7 +281,12 @@ namespace tribos
     AffineConstraints<double> increment_constraints;
     /** Contact and stabilization bookkeeping of the current increment. */
     unsigned int n_chattering  = 0;
+    /** The smallest residual of this increment's iterations after the
+     * first (whether Newton is still making progress). */
+    double best_residual = 0;
     unsigned int n_frozen      = 0;
+    /** Held nodes in tension were released in this increment. */
+    bool released = false;
     unsigned int n_relaxations = 0;
     /** The stabilization forces of the last assembly. */
     Vector stabilization_forces;

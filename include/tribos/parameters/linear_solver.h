@@ -10,20 +10,43 @@ namespace tribos
 {
   namespace Parameters
   {
-    /** Subsection `Linear solver`: direct (Amesos) or GMRES with AMG. */
+    /** Subsection `Linear solver`: direct (SuiteSparse or Amesos) or GMRES
+     * with AMG, or chosen by the system. */
     struct LinearSolver
     {
-      /** Type = direct (else iterative). */
-      bool direct;
+      enum class Type
+      {
+        automatic,
+        direct,
+        iterative
+      };
+      Type type;
+      /** auto: 3D systems without multipliers above this many unknowns are
+       * solved iteratively. */
+      unsigned long iterative_above;
       /** Direct solver as written: auto or an Amesos solver's name. */
       std::string  direct_solver;
       double       tolerance;
       unsigned int max_iterations;
 
-      /** The Amesos solver for a system of @p n unknowns: the one named,
-       * or (auto) KLU up to 5000 unknowns, MUMPS above. */
+      /**
+       * The direct solver for a system of @p n unknowns on one process
+       * (@p serial) or several: the one named, or (auto) SuiteSparse
+       * ("suitesparse": CHOLMOD or UMFPACK) on one process, MUMPS under MPI.
+       */
       std::string
-      amesos_solver(const unsigned long n) const;
+      direct_solver_for(const unsigned long n, const bool serial) const;
+
+      /**
+       * Whether a system of @p n unknowns in @p dim dimensions is solved
+       * iteratively: Type = iterative, or auto for a 3D system above
+       * Iterative above without multipliers (@p saddle_point: a saddle
+       * point system needs a pivoting direct solver).
+       */
+      bool
+      iterative_for(const unsigned int  dim,
+                    const unsigned long n,
+                    const bool          saddle_point) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

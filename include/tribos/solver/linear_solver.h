@@ -2,11 +2,14 @@
 #define tribos_solver_linear_solver_h
 
 #include <tribos/parameters/linear_solver.h>
+#include <tribos/solver/sparse_direct.h>
 
 #include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,43 +18,121 @@ namespace tribos
   using namespace dealii;
 
   /**
-   * The linear solve of a Newton iteration, chosen by Linear solver/Type:
-   * a sparse direct solver (Trilinos Amesos: KLU for small systems, MUMPS
-   * for large ones) or GMRES preconditioned by ML algebraic multigrid with
-   * the near-null space it is given. A failure (singular matrix, GMRES
-   * without convergence) throws NonConvergence, which cuts the increment.
+   * The linear solve of a Newton iteration, chosen by Linear solver (Type
+   * = auto: iterative for large 3D systems without multipliers, direct
+   * otherwise):
+   *
+   * - direct: on one process SuiteSparse (CHOLMOD for symmetric positive
+   *   definite matrices, UMFPACK otherwise: SparseDirect), under MPI
+   *   Trilinos Amesos (MUMPS by default); either way the symbolic
+   *   factorization is computed once per sparsity pattern and reused;
+   * - iterative: GMRES preconditioned by ML algebraic multigrid with the
+   *   near-null space it is given (the rigid-body modes), the tolerance
+   *   given by the Newton solver (inexact Newton).
+   *
+   * A failure (singular matrix, GMRES without convergence) throws
+   * NonConvergence, which cuts the increment.
    */
   class LinearSolver
   {
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    explicit LinearSolver(const Parameters::LinearSolver &parameters);
+    /** Solves the systems of a @p dim dimensional problem, with
+     * multipliers (@p saddle_point) or not. */
+    LinearSolver(const Parameters::LinearSolver &parameters,
+                 const unsigned int              dim,
+                 const bool                      saddle_point);
+    ~LinearSolver();
 
     /**
-     * The near-null space for AMG: per mode, which rows it contains (the
-     * translations of the displacement components); @p higher_order for
-     * elements of degree > 1.
+     * The near-null space for AMG: per mode, its value at every locally
+     * owned row; @p higher_order for elements of degree > 1.
      */
     void
-    set_near_null_space(const std::vector<std::vector<bool>> &modes,
-                        const bool                            higher_order);
+    set_near_null_space(const std::vector<std::vector<double>> &modes,
+                        const bool                              higher_order);
 
     /** Time every solve in @p timer's section "linear solve". */
     void
     set_timer(TimerOutput &timer);
 
-    /** Solve @p matrix @p x = @p rhs. */
+    /**
+     * Solve @p matrix @p x = @p rhs; @p pattern_version changes whenever
+     * the matrix's sparsity pattern does (the symbolic factorization is
+     * kept while it does not); an iterative solve stops at @p tolerance
+     * times |rhs| (0: Linear solver/Tolerance).
+     */
     void
     solve(const TrilinosWrappers::SparseMatrix &matrix,
+          const unsigned long                   pattern_version,
           Vector                               &x,
-          const Vector                         &rhs);
+          const Vector                         &rhs,
+          const double                          tolerance = 0);
+
+    /** What the last solve used, for the log: "CHOLMOD (SuiteSparse)",
+     * "UMFPACK (SuiteSparse)", "Amesos_Mumps", "GMRES + ML". */
+    const std::string &
+    method() const
+    {
+      return last;
+    }
+
+    /** AMG hierarchies built so far (iterative solves). */
+    unsigned long
+    n_preconditioner_setups() const
+    {
+      return n_amg_setups;
+    }
+
+    /** Krylov iterations of all iterative solves so far. */
+    unsigned long
+    n_iterations() const
+    {
+      return total_iterations;
+    }
+
+    /** Whether @p matrix is solved iteratively (inexact Newton applies). */
+    bool
+    iterative(const TrilinosWrappers::SparseMatrix &matrix) const
+    {
+      return parameters.iterative_for(dim, matrix.m(), saddle_point);
+    }
 
   private:
-    const Parameters::LinearSolver &parameters;
-    std::vector<std::vector<bool>>  constant_modes;
-    bool                            higher_order = false;
-    TimerOutput                    *timer        = nullptr;
+    void
+    solve_amesos(const TrilinosWrappers::SparseMatrix &matrix,
+                 const unsigned long                   pattern_version,
+                 Vector                               &x,
+                 const Vector                         &rhs,
+                 const std::string                    &name);
+
+    void
+    solve_iterative(const TrilinosWrappers::SparseMatrix &matrix,
+                    const unsigned long                   pattern_version,
+                    Vector                               &x,
+                    const Vector                         &rhs,
+                    const double                          tolerance);
+
+    const Parameters::LinearSolver   &parameters;
+    const unsigned int                dim;
+    const bool                        saddle_point;
+    unsigned long                     total_iterations = 0;
+    /** The AMG preconditioner, the pattern it was built for and the
+     * iterations of its first solve. */
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    unsigned long                                      amg_version = 0;
+    unsigned int                                       amg_iterations = 0;
+    unsigned long                                      n_amg_setups   = 0;
+    std::vector<std::vector<double>>  null_space;
+    bool                              higher_order = false;
+    TimerOutput                      *timer        = nullptr;
+    std::unique_ptr<SparseDirect>     suitesparse;
+    std::string                       last;
+
+    /** Amesos: the solver, its problem and the pattern it analysed. */
+    struct Amesos;
+    std::unique_ptr<Amesos> amesos;
   };
 } // namespace tribos
 

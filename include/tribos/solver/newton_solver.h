@@ -5,6 +5,8 @@
 #include <tribos/solver/linear_solver.h>
 #include <tribos/solver/nonlinear_problem.h>
 
+#include <string>
+
 namespace tribos
 {
   /**
@@ -58,6 +60,8 @@ namespace tribos
     const Parameters::NonlinearSolver &parameters;
     LinearSolver                      &linear_solver;
     unsigned int                       linear_solves = 0;
+    /** The linear solver method the log last named. */
+    std::string announced;
   };
 } // namespace tribos
 

@@ -103,6 +103,11 @@ namespace tribos
     virtual Vector &
     system_rhs() = 0;
 
+    /** Changes whenever the system matrix's sparsity pattern does (a
+     * direct solver keeps its symbolic factorization while it does not). */
+    virtual unsigned long
+    pattern_version() const = 0;
+
     /** Set the constrained entries of a Newton @p update. */
     virtual void
     distribute(Vector &update, const bool first_iteration) const = 0;
@@ -137,9 +142,10 @@ namespace tribos
     stagnation_residual_bound() const = 0;
 
     /** Called after every assembly with a matrix (e.g. chattering
-     * detection); may throw NonConvergence. */
+     * detection), with the free residual's norm; may throw
+     * NonConvergence. */
     virtual void
-    after_assembly(const unsigned int /*iteration*/)
+    after_assembly(const unsigned int /*iteration*/, const double /*residual*/)
     {
     }
 
