@@ -131,21 +131,27 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
           % (method, last["pair0_normal_force"],
              last["stabilization_relaxations"], last["stabilization_ratio"]))
     stabilized = read_csv(folder + "/convergence.csv")
-    run(tribos, prm("force_control_apart"), folder + "_off",
-        sets + ["Nonlinear solver/Stabilization factor=0"])
+    # Without stabilization the rigid mode is singular: a direct solver
+    # either says so (UMFPACK: the run fails, naming the singular system)
+    # or returns an update of round-off size in that mode (MUMPS, KLU).
+    result = run(tribos, prm("force_control_apart"), folder + "_off",
+                 sets + ["Nonlinear solver/Stabilization factor=0"],
+                 expect_success=False)
     free = read_csv(folder + "_off/convergence.csv")
-    first = lambda rows: max(r["update_norm"] for r in rows
-                             if r["increment"] == 1 and
-                             math.isfinite(r["update_norm"]))
+    first = lambda rows: max([r["update_norm"] for r in rows
+                              if r["increment"] == 1 and
+                              math.isfinite(r["update_norm"])] or [0])
     cutbacks = lambda f: sum(1 for r in read_csv(f + "/history.csv")
                              if r["cutbacks"] > 0)
+    singular = (result.returncode != 0 and
+                "singular" in result.stdout + result.stderr)
     check(first(stabilized) < 1 and cutbacks(folder) == 0 and
-          first(free) > 1e6,
+          (first(free) > 1e6 or singular),
           "%s force control: stabilized updates bounded (%.1e, no "
-          "cutbacks); without stabilization the singular rigid mode gives an "
-          "update of %.1e and %d cut increments" % (
-              method, first(stabilized), first(free),
-              cutbacks(folder + "_off")))
+          "cutbacks); without stabilization the rigid mode is singular (%s)"
+          % (method, first(stabilized),
+             "the solver says so" if singular else
+             "update of %.1e" % first(free)))
 
 # Very high penalty on Hertz 2D.
 E, nu = 1.0, 0.3
@@ -226,7 +232,12 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
     run(tribos, prm("cylinder_compression_axisymmetric"), folder,
         axisymmetric + sets + [
             "Scene/Cylinder compression/Radial refinements=3",
-            "Scene/Cylinder compression/Axial cells=8"])
+            "Scene/Cylinder compression/Axial cells=8",
+            # The folding at the end of the stroke depends on the increment
+            # (Lagrange, 25 steps regrown to 0.5 after cutbacks: 1522;
+            # 50 steps: 1591.6, penalty 1593.4; 100 steps: 1585.4, 1605.9):
+            # the methods are compared on the same increments.
+            "Time stepping/Number of steps=50"])
     h = read_csv(folder + "/history.csv")
     final[method] = h[-1]["pair0_normal_force"]
     check(h[-1]["time"] > 24.999,
@@ -235,9 +246,9 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
 check(abs(final["penalty"] - final["lagrange"]) < 0.02 * final["lagrange"],
       "upsetting mu = 0.5, axisymmetric: penalty vs Lagrange %.2f %%"
       % (100 * abs(final["penalty"] - final["lagrange"]) / final["lagrange"]))
-# The split-corner section (192 cells) completes too, and its final force
-# is within 3 % of the 8 x 8 grid's (mesh convergence: 16 x 16 is 2 %
-# above 8 x 8).
+# The split-corner section (192 cells) completes too (the prm's 25 steps),
+# and its final force is within 3 % of the 8 x 8 grid's (mesh convergence:
+# 16 x 16 is 2 % above 8 x 8; the path of increments moves it by 1-2 %).
 folder = out + "/upsetting_axisymmetric_split"
 run(tribos, prm("cylinder_compression_axisymmetric"), folder,
     axisymmetric + split + ["Scene/Cylinder compression/Radial refinements=3"])

@@ -31,7 +31,8 @@ namespace tribos
   template <int dim>
   unsigned int
   ChatteringMonitor<dim>::track(const std::vector<ContactPair<dim>> &pairs,
-                                const unsigned int                   limit)
+                                const unsigned int                   limit,
+                                const bool                           count)
   {
     if (status.size() != pairs.size())
       begin_increment(pairs);
@@ -41,7 +42,7 @@ namespace tribos
         if (pairs[p].owned[k])
         {
           const int now = pairs[p].current[k].closed() ? 1 : 0;
-          if (status[p][k] >= 0 && now != status[p][k])
+          if (count && status[p][k] >= 0 && now != status[p][k])
             ++changes[p][k];
           status[p][k] = now;
           if (changes[p][k] > limit)
@@ -84,6 +85,27 @@ namespace tribos
           ++n;
     return Utilities::MPI::sum(n, mpi_communicator);
   }
+
+  template <int dim>
+  unsigned int
+  ChatteringMonitor<dim>::release_in_tension(
+    const std::vector<ContactPair<dim>> &pairs)
+  {
+    unsigned int n = 0;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      for (unsigned int k = 0; k < pairs[p].n_nodes(); ++k)
+        if (frozen(p, k) && pairs[p].owned[k] &&
+            (pairs[p].current[k].result.pressure < 0 ||
+             !pairs[p].current[k].paired))
+        {
+          held[p][k]    = false;
+          changes[p][k] = 0;
+          ++n;
+        }
+    return Utilities::MPI::sum(n, mpi_communicator);
+  }
+
+
 
   template class ChatteringMonitor<2>;
   template class ChatteringMonitor<3>;

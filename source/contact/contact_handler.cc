@@ -273,9 +273,10 @@ namespace tribos
 
   template <int dim>
   unsigned int
-  ContactHandler<dim>::track_status_changes(const unsigned int limit)
+  ContactHandler<dim>::track_status_changes(const unsigned int limit,
+                                            const bool         count)
   {
-    return monitor.track(contact_pairs, limit);
+    return monitor.track(contact_pairs, limit, count);
   }
 
 
@@ -294,6 +295,15 @@ namespace tribos
   ContactHandler<dim>::n_frozen_in_tension() const
   {
     return monitor.n_frozen_in_tension(contact_pairs);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactHandler<dim>::release_frozen_in_tension()
+  {
+    return monitor.release_in_tension(contact_pairs);
   }
 
 

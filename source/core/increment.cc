@@ -34,7 +34,9 @@ namespace tribos
     increment_start = owned_solution;
     ghosted_anchors = ghosted_solution;
     n_chattering    = 0;
+    best_residual   = std::numeric_limits<double>::infinity();
     n_frozen        = 0;
+    released        = false;
     n_relaxations   = 0;
     if (contact)
       contact->begin_increment();
@@ -100,14 +102,24 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::after_assembly(const unsigned int /*iteration*/)
+  Problem<dim>::after_assembly(const unsigned int iteration,
+                              const double       residual)
   {
     if (!contact)
       return;
     // Chattering detector: status changes of each slave node between the
-    // iterations of this increment.
+    // iterations of this increment, counted only while Newton makes no
+    // progress (the residual not below half the best one of the increment
+    // so far). While the residual falls, status changes are the active set
+    // converging, not chattering: an inexact (iterative) solve, a coarse
+    // first iterate or a wide contact zone change many statuses on the way
+    // (3D Hertz with GMRES: 104 nodes counted as chattering and 4 cutbacks,
+    // none once only stalled iterations count).
+    const bool stalled = iteration >= 2 && residual >= 0.5 * best_residual;
+    if (iteration >= 1)
+      best_residual = std::min(best_residual, residual);
     const auto &cp = parameters.contact;
-    const auto  n  = contact->track_status_changes(cp.chattering_flips);
+    const auto  n  = contact->track_status_changes(cp.chattering_flips, stalled);
     n_chattering   = std::max(n_chattering, n);
     const std::string what =
       "chattering: " + std::to_string(n) +
@@ -137,6 +149,21 @@ namespace tribos
     if (n_frozen > 0)
     {
       const unsigned int n_tension = contact->n_frozen_in_tension();
+      // Once per increment the nodes in tension are let go and Newton goes
+      // on from this iterate: the freeze only had to get Newton out of its
+      // cycle (load-controlled 3D Hertz: a converged iterate with 4 held
+      // nodes in tension; cutting back cost 20.5 s and 43 iterations,
+      // releasing them 12.1 s and 25). A second time the increment is
+      // cut.
+      if (n_tension > 0 && !released)
+      {
+        released = true;
+        n_frozen -= contact->release_frozen_in_tension();
+        message("  chattering: " + std::to_string(n_tension) +
+                " held node(s) ended in tension or off the master: released, "
+                "Newton goes on");
+        return Verdict::iterate;
+      }
       if (n_tension > 0)
         throw NonConvergence(
           std::to_string(n_tension) +

@@ -221,8 +221,10 @@ namespace tribos
                         dealii::Patterns::Integer(1),
                         "A slave node whose contact status (open or "
                         "closed) changes more than this many times between "
-                        "the Newton iterations of one increment is "
-                        "chattering; "
+                        "the Newton iterations of one increment while Newton "
+                        "stalls (the residual not below half the best of "
+                        "the increment) is chattering; changes while the "
+                        "residual falls are the active set converging. "
                         "history.csv counts such nodes per increment "
                         "(chattering_nodes).");
       prm.declare_entry("Chattering remedy",
@@ -230,9 +232,10 @@ namespace tribos
                         dealii::Patterns::Selection("freeze|cutback|none"),
                         "What happens when a node chatters (the log says "
                         "so): freeze (the node is held closed for the rest "
-                        "of the increment; the converged state is accepted "
-                        "only if its pressure is not tensile, else the "
-                        "increment is cut back), cutback (the increment is "
+                        "of the increment; held nodes that end in tension "
+                        "are released once and Newton goes on, a second "
+                        "time the increment is cut back), cutback (the "
+                        "increment is "
                         "abandoned and halved) or none (only counted).");
       prm.declare_entry(
         "Rigid surfaces",

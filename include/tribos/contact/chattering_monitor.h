@@ -14,7 +14,8 @@ namespace tribos
    * the Newton iterations of an increment: a node whose status changes more
    * than a limit is chattering. The remedy Contact/Chattering remedy =
    * freeze holds such nodes closed for the rest of the increment (the
-   * result is accepted only if none of them ends in tension). Stick/slip
+   * result is accepted only if none of them ends in tension; those that do
+   * are released once and Newton goes on). Stick/slip
    * changes are the return map's business and converge: not counted.
    */
   template <int dim>
@@ -29,11 +30,14 @@ namespace tribos
 
     /**
      * Compare every owned slave node's status at the last evaluation with
-     * the previous one; returns the number of nodes (all processes) with
-     * more than @p limit changes in the increment.
+     * the previous one, and @p count the changes or not (the caller counts
+     * them while Newton stalls); returns the number of nodes (all
+     * processes) with more than @p limit counted changes in the increment.
      */
     unsigned int
-    track(const std::vector<ContactPair<dim>> &pairs, const unsigned int limit);
+    track(const std::vector<ContactPair<dim>> &pairs,
+          const unsigned int                   limit,
+          const bool                           count);
 
     /** Hold every node with more than @p limit changes closed until the
      * increment ends; returns how many are held (all processes). */
@@ -52,6 +56,11 @@ namespace tribos
      * point (all processes). */
     unsigned int
     n_frozen_in_tension(const std::vector<ContactPair<dim>> &pairs) const;
+
+    /** Let the held nodes in tension (see n_frozen_in_tension()) go, with
+     * their change counts reset; returns how many (all processes). */
+    unsigned int
+    release_in_tension(const std::vector<ContactPair<dim>> &pairs);
 
   private:
     MPI_Comm mpi_communicator;

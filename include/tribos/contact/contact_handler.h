@@ -113,7 +113,7 @@ namespace tribos
     /** Nodes (all processes) with more than @p limit open/closed changes
      * in this increment, counting the last evaluation. */
     unsigned int
-    track_status_changes(const unsigned int limit);
+    track_status_changes(const unsigned int limit, const bool count);
 
     /** Hold the chattering nodes closed until the increment ends; returns
      * how many are held. */
@@ -123,6 +123,10 @@ namespace tribos
     /** Held nodes whose pressure is tensile (all processes). */
     unsigned int
     n_frozen_in_tension() const;
+
+    /** Release the held nodes in tension; returns how many. */
+    unsigned int
+    release_frozen_in_tension();
 
     /** The last evaluated state becomes the converged history. */
     void
