@@ -1,11 +1,95 @@
+#include <tribos/base/exceptions.h>
 #include <tribos/core/f_bar.h>
 #include <tribos/core/problem.h>
 
+#include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/full_matrix.h>
 
 namespace tribos
 {
+  namespace
+  {
+    /** Per-thread workspace of the bulk assembly (WorkStream). */
+    template <int dim>
+    struct AssemblyScratch
+    {
+      AssemblyScratch(const FiniteElement<dim>  &fe,
+                      const Quadrature<dim>     &quadrature,
+                      const Quadrature<dim - 1> &face_quadrature)
+        : fe_values(fe,
+                    quadrature,
+                    update_values | update_gradients |
+                      update_quadrature_points | update_JxW_values)
+        , fe_values_centre(fe,
+                           QGauss<dim>(1),
+                           update_values | update_gradients |
+                             update_quadrature_points)
+        , fe_face_values(fe,
+                         face_quadrature,
+                         update_values | update_quadrature_points |
+                           update_JxW_values)
+        , gradients(quadrature.size(), std::vector<Tensor<1, dim>>(dim))
+        , values(quadrature.size(), dealii::Vector<double>(dim))
+        , centre_gradients(1, std::vector<Tensor<1, dim>>(dim))
+        , centre_values(1, dealii::Vector<double>(dim))
+        , force(dim)
+      {
+      }
+
+      AssemblyScratch(const AssemblyScratch &other)
+        : AssemblyScratch(other.fe_values.get_fe(),
+                          other.fe_values.get_quadrature(),
+                          other.fe_face_values.get_quadrature())
+      {
+      }
+
+      FEValues<dim> fe_values;
+      /** F-bar: the deformation gradient at the cell centre. */
+      FEValues<dim>                            fe_values_centre;
+      FEFaceValues<dim>                        fe_face_values;
+      std::vector<std::vector<Tensor<1, dim>>> gradients;
+      /** Axisymmetric: the radial displacement (the hoop stretch). */
+      std::vector<dealii::Vector<double>>      values;
+      std::vector<std::vector<Tensor<1, dim>>> centre_gradients;
+      std::vector<dealii::Vector<double>>      centre_values;
+      dealii::Vector<double>                   force;
+    };
+
+
+
+    /**
+     * One cell's contribution. WorkStream calls the copier in the order of
+     * the cells, so the global sums are those of a serial loop, bit for bit.
+     */
+    struct AssemblyCopy
+    {
+      AssemblyCopy(const unsigned int dofs_per_cell, const bool stabilized)
+        : cell_matrix(dofs_per_cell, dofs_per_cell)
+        , cell_rhs(dofs_per_cell)
+        , cell_residual(dofs_per_cell)
+        , cell_stabilization(stabilized ? dofs_per_cell : 0)
+        , cell_external(stabilized ? dofs_per_cell : 0)
+        , dof_indices(dofs_per_cell)
+      {
+      }
+
+      FullMatrix<double>     cell_matrix;
+      dealii::Vector<double> cell_rhs;
+      dealii::Vector<double> cell_residual;
+      dealii::Vector<double> cell_stabilization;
+      /** The applied forces alone (for the stabilization's load ratio). */
+      dealii::Vector<double>               cell_external;
+      std::vector<types::global_dof_index> dof_indices;
+      /** An inverted element's message, rethrown after the loop: an
+       * exception must not leave a worker thread. */
+      std::string failure;
+    };
+  } // namespace
+
+
+
   template <int dim>
   double
   Problem<dim>::assemble_system(const bool                       with_matrix,
@@ -35,71 +119,46 @@ namespace tribos
       stabilization_forces = 0;
       external_forces      = 0;
     }
-    dealii::Vector<double> cell_stabilization(
-      stabilization > 0 ? fe->n_dofs_per_cell() : 0);
-    // The applied forces alone (for the stabilization's load ratio).
-    dealii::Vector<double> cell_external(
-      stabilization > 0 ? fe->n_dofs_per_cell() : 0);
-
-    FEValues<dim> fe_values(*fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-    // F-bar: the deformation gradient at the cell centre.
-    const bool    f_bar = parameters.finite_element.f_bar;
-    FEValues<dim> fe_values_centre(*fe,
-                                   QGauss<dim>(1),
-                                   update_values | update_gradients |
-                                     update_quadrature_points);
-    std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
-      1,
-      std::vector<Tensor<1, dim>>(dim));
-    std::vector<dealii::Vector<double>> centre_values(1,
-                                                      dealii::Vector<double>(
-                                                        dim));
-    Tensor<2, dim>                      F0, P_eff;
-    Tensor<4, dim>                      dP_dF, dP_dF0;
-    double                              J0 = 1;
-    FEFaceValues<dim>                   fe_face_values(*fe,
-                                     face_quadrature,
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
-
-    const unsigned int     dofs_per_cell = fe->n_dofs_per_cell();
-    const unsigned int     n_q           = quadrature.size();
-    FullMatrix<double>     cell_matrix(dofs_per_cell, dofs_per_cell);
-    dealii::Vector<double> cell_rhs(dofs_per_cell);
-    dealii::Vector<double> cell_residual(dofs_per_cell);
-    std::vector<types::global_dof_index>     dof_indices(dofs_per_cell);
-    std::vector<std::vector<Tensor<1, dim>>> gradients(
-      n_q,
-      std::vector<Tensor<1, dim>>(dim));
-    std::vector<unsigned int> component(dofs_per_cell);
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      component[i] = fe->system_to_component_index(i).first;
-
-    dealii::Vector<double> force(dim);
     if (body_force)
       body_force->set_time(time);
     for (auto &[id, function] : neumann_functions)
       function->set_time(time);
 
-    Tensor<2, dim> P;
-    Tensor<4, dim> A;
+    const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
+    const unsigned int n_q           = quadrature.size();
+    const bool         f_bar         = parameters.finite_element.f_bar;
+    const bool         axisymmetric  = parameters.finite_element.axisymmetric;
+    std::vector<unsigned int> component(dofs_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      component[i] = fe->system_to_component_index(i).first;
 
-    // Axisymmetric: the radial displacement at the quadrature points (the
-    // hoop stretch 1 + u_r / r) and the 3D stress and tangent.
-    const bool axisymmetric = parameters.finite_element.axisymmetric;
-    std::vector<dealii::Vector<double>> values(n_q,
-                                               dealii::Vector<double>(dim));
-    Tensor<2, 3>                        F3, P3, row3, F3_0, P3_eff, centre_row3;
-    Tensor<4, 3>                        A3, dP3_dF, dP3_dF0;
-    double                              centre_radius = 1;
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    using CellIterator       = typename DoFHandler<dim>::active_cell_iterator;
+    using CellFilter         = FilteredIterator<CellIterator>;
+    const auto assemble_cell = [&](const CellIterator   &cell,
+                                   AssemblyScratch<dim> &scratch,
+                                   AssemblyCopy         &copy)
     {
-      if (!cell->is_locally_owned())
-        continue;
+      auto &fe_values          = scratch.fe_values;
+      auto &fe_values_centre   = scratch.fe_values_centre;
+      auto &fe_face_values     = scratch.fe_face_values;
+      auto &gradients          = scratch.gradients;
+      auto &values             = scratch.values;
+      auto &centre_gradients   = scratch.centre_gradients;
+      auto &centre_values      = scratch.centre_values;
+      auto &force              = scratch.force;
+      auto &cell_matrix        = copy.cell_matrix;
+      auto &cell_rhs           = copy.cell_rhs;
+      auto &cell_stabilization = copy.cell_stabilization;
+      auto &cell_external      = copy.cell_external;
+      auto &dof_indices        = copy.dof_indices;
+
+      Tensor<2, dim> F0, P_eff, P;
+      Tensor<4, dim> dP_dF, dP_dF0, A;
+      double         J0 = 1;
+      Tensor<2, 3>   F3, P3, row3, F3_0, P3_eff, centre_row3;
+      Tensor<4, 3>   A3, dP3_dF, dP3_dF0;
+      double         centre_radius = 1;
+
       fe_values.reinit(cell);
       cell->get_dof_indices(dof_indices);
       cell_matrix = 0;
@@ -352,24 +411,67 @@ namespace tribos
           if (with_matrix)
             cell_matrix(i, i) += k * weight;
         }
-        stabilization_forces.add(dof_indices, cell_stabilization);
-        external_forces.add(dof_indices, cell_external);
       }
+    };
 
+    // The cells in parallel (WorkStream over the threads deal.II was given:
+    // the cores of the node divided by its MPI processes); the material
+    // laws and the parsed functions are thread-safe, each quadrature point
+    // writes only its own history.
+    const auto worker = [&](const CellIterator   &cell,
+                            AssemblyScratch<dim> &scratch,
+                            AssemblyCopy         &copy)
+    {
+      copy.failure.clear();
+      try
+      {
+        assemble_cell(cell, scratch, copy);
+      }
+      catch (const InvertedElement &e)
+      {
+        copy.failure = e.what();
+      }
+    };
+    std::string            failure;
+    dealii::Vector<double> cell_residual(dofs_per_cell);
+    const auto             copier = [&](const AssemblyCopy &copy)
+    {
+      if (!copy.failure.empty())
+      {
+        if (failure.empty())
+          failure = copy.failure;
+        return;
+      }
+      if (stabilization > 0)
+      {
+        stabilization_forces.add(copy.dof_indices, copy.cell_stabilization);
+        external_forces.add(copy.dof_indices, copy.cell_external);
+      }
       // The unconstrained residual carries the reactions.
-      cell_residual = cell_rhs;
+      cell_residual = copy.cell_rhs;
       cell_residual *= -1.;
-      full_residual.add(dof_indices, cell_residual);
-      homogeneous_constraints.distribute_local_to_global(cell_rhs,
-                                                         dof_indices,
+      full_residual.add(copy.dof_indices, cell_residual);
+      homogeneous_constraints.distribute_local_to_global(copy.cell_rhs,
+                                                         copy.dof_indices,
                                                          free_residual);
       if (with_matrix)
-        constraints.distribute_local_to_global(cell_matrix,
-                                               cell_rhs,
-                                               dof_indices,
+        constraints.distribute_local_to_global(copy.cell_matrix,
+                                               copy.cell_rhs,
+                                               copy.dof_indices,
                                                matrix,
                                                rhs);
-    }
+    };
+
+    WorkStream::run(CellFilter(IteratorFilters::LocallyOwnedCell(),
+                               dof_handler.begin_active()),
+                    CellFilter(IteratorFilters::LocallyOwnedCell(),
+                               dof_handler.end()),
+                    worker,
+                    copier,
+                    AssemblyScratch<dim>(*fe, quadrature, face_quadrature),
+                    AssemblyCopy(dofs_per_cell, stabilization > 0));
+    if (!failure.empty())
+      throw InvertedElement(failure);
 
     t.stop();
     if (contact)
