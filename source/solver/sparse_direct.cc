@@ -3,12 +3,12 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_FEVector.h>
 #include <Epetra_Map.h>
-
-#include <algorithm>
 #include <cholmod.h>
 #include <omp.h>
-#include <cmath>
 #include <umfpack.h>
+
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace tribos
@@ -31,13 +31,15 @@ namespace tribos
     // CHOLMOD's supernodal factorization opens an OpenMP region per
     // supernode for its copy loops with a compiled-in request of 4 threads,
     // whatever the machine has; on 2 cores the fork, join and yielding cost
-    // more than the loops (a 2D solve of 31.9k unknowns (2D Hertz): 90 ms, 45 ms
+    // more than the loops (2D Hertz, 31.9k unknowns: 90 ms per solve, 45 ms
     // without). The dense blocks keep OpenBLAS's own threads; tribos'
     // threads are TBB's.
     omp_set_max_active_levels(0);
+    // A matrix that is not positive definite is handled (LU): no warning.
+    state->common.print = 0;
     umfpack_di_defaults(state->control);
     // METIS' nested dissection: a third fewer flops than AMD on the 2D
-    // contact systems (0.67 against 1.06 GFlop at 31.9k unknowns (2D Hertz)).
+    // contact systems (0.67 against 1.06 GFlop for 2D Hertz, 31.9k unknowns).
     state->control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
     // No iterative refinement: a Newton iteration is one already (its
     // residual is evaluated afresh), and refinement cost a quarter of
@@ -118,9 +120,9 @@ namespace tribos
         const int j = columns[k];
         if (j <= i)
           continue;
-        const auto begin = columns.begin() + row_start[j];
-        const auto end   = columns.begin() + row_start[j + 1];
-        const auto found = std::lower_bound(begin, end, i);
+        const auto   begin = columns.begin() + row_start[j];
+        const auto   end   = columns.begin() + row_start[j + 1];
+        const auto   found = std::lower_bound(begin, end, i);
         const double transposed =
           (found != end && *found == i) ? values[found - columns.begin()] : 0.;
         if (std::abs(values[k] - transposed) > tolerance)
@@ -134,22 +136,22 @@ namespace tribos
   bool
   SparseDirect::solve_cholmod(double *x, const double *b)
   {
-    const int     n = row_start.size() - 1;
+    const int      n = row_start.size() - 1;
     cholmod_sparse A;
-    A.nrow   = n;
-    A.ncol   = n;
-    A.nzmax  = values.size();
-    A.p      = row_start.data();
-    A.i      = columns.data();
-    A.nz     = nullptr;
-    A.x      = values.data();
-    A.z      = nullptr;
-    A.stype  = 1; // symmetric, the upper triangle of the (C)SC form
-    A.itype  = CHOLMOD_INT;
-    A.xtype  = CHOLMOD_REAL;
-    A.dtype  = CHOLMOD_DOUBLE;
-    A.sorted = 1;
-    A.packed = 1;
+    A.nrow       = n;
+    A.ncol       = n;
+    A.nzmax      = values.size();
+    A.p          = row_start.data();
+    A.i          = columns.data();
+    A.nz         = nullptr;
+    A.x          = values.data();
+    A.z          = nullptr;
+    A.stype      = 1; // symmetric, the upper triangle of the (C)SC form
+    A.itype      = CHOLMOD_INT;
+    A.xtype      = CHOLMOD_REAL;
+    A.dtype      = CHOLMOD_DOUBLE;
+    A.sorted     = 1;
+    A.packed     = 1;
     auto &common = state->common;
     if (state->factor == nullptr)
       state->factor = cholmod_analyze(&A, &common);
@@ -160,14 +162,14 @@ namespace tribos
       return false;
 
     cholmod_dense B;
-    B.nrow  = n;
-    B.ncol  = 1;
-    B.nzmax = n;
-    B.d     = n;
-    B.x     = const_cast<double *>(b);
-    B.z     = nullptr;
-    B.xtype = CHOLMOD_REAL;
-    B.dtype = CHOLMOD_DOUBLE;
+    B.nrow           = n;
+    B.ncol           = 1;
+    B.nzmax          = n;
+    B.d              = n;
+    B.x              = const_cast<double *>(b);
+    B.z              = nullptr;
+    B.xtype          = CHOLMOD_REAL;
+    B.dtype          = CHOLMOD_DOUBLE;
     cholmod_dense *X = cholmod_solve(CHOLMOD_A, state->factor, &B, &common);
     if (X == nullptr)
       return false;
@@ -183,7 +185,7 @@ namespace tribos
   {
     // The rows are UMFPACK's columns: the matrix it sees is the
     // transpose, and UMFPACK_At solves with the transpose of that.
-    const int n    = row_start.size() - 1;
+    const int n = row_start.size() - 1;
     double    info[UMFPACK_INFO];
     if (state->umfpack_symbolic == nullptr &&
         umfpack_di_symbolic(n,
@@ -229,18 +231,21 @@ namespace tribos
     {
       free_factorizations();
       version    = pattern_version;
-      indefinite = false;
+      n_failures = 0;
     }
     double       *x_values = x.trilinos_vector()[0];
     const double *b_values = rhs.trilinos_vector()[0];
-    if (!indefinite && symmetric())
+    if (n_failures < 2 && symmetric())
     {
       last_method = "CHOLMOD";
       if (solve_cholmod(x_values, b_values))
+      {
+        n_failures = 0;
         return true;
-      // Symmetric but not positive definite: LU from now on.
-      indefinite = true;
-      if (state->factor != nullptr)
+      }
+      // The symbolic factorization stays for the next attempt; given up,
+      // its memory goes.
+      if (++n_failures == 2 && state->factor != nullptr)
         cholmod_free_factor(&state->factor, &state->common);
     }
     last_method = "UMFPACK";

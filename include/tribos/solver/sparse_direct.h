@@ -24,9 +24,12 @@ namespace tribos
    * they are computed once per pattern (@p pattern_version changes when the
    * matrix is rebuilt) and every later solve only factorizes numerically.
    * Whether the matrix is symmetric is checked on its values at every solve
-   * (it changes with the stick/slip state); a Cholesky factorization that
-   * finds the matrix indefinite falls back to LU for the rest of the
-   * pattern's life.
+   * (it changes with the stick/slip state). A Cholesky factorization that
+   * finds the matrix not positive definite hands that solve to LU; after
+   * two such failures in a row LU stays for the rest of the pattern's life
+   * (a singular first iterate, a body not yet in contact, is no reason to
+   * give up Cholesky for the whole run: 2D Hertz under load control, 49k
+   * unknowns, 280 against 130 ms per solve).
    */
   class SparseDirect
   {
@@ -76,8 +79,9 @@ namespace tribos
     std::vector<int>    row_start, columns;
     std::vector<double> values;
     unsigned long       version = static_cast<unsigned long>(-1);
-    bool                indefinite = false;
-    std::string         last_method;
+    /** Cholesky failures in a row (2: LU for the pattern's life). */
+    unsigned int n_failures = 0;
+    std::string  last_method;
 
     /** Opaque SuiteSparse state (cholmod_common, factors, UMFPACK's
      * symbolic and numeric objects). */
