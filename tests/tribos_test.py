@@ -64,32 +64,37 @@ def numdiff(result, reference, relative=1e-6, absolute=1e-10):
         raise SystemExit("numdiff: %s differs from %s" % (result, reference))
 
 
-def hertz_compare(folder, dim, e_star, radius, force_scale, step=2):
+def hertz_compare(folder, dim, e_star, radius, force_scale, step=2,
+                  reference=False):
     """Hertz values for the contact normal force of a run (times
     force_scale for symmetry models) against the fit of its nodal pressures
     at output step `step`: returns (a, p0, fitted a, fitted p0, relative L2
     error of the pressure profile, number of nodes in contact). 2D: a =
     sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a); 3D: a = (3 P R / (4 E*))^(1/3),
-    p0 = 3 P / (2 pi a^2)."""
+    p0 = 3 P / (2 pi a^2). reference: positions from the reference
+    coordinates (X, Y) instead of the deformed ones (Hertz's theory is
+    geometrically linear; at p0 = 0.06 E the two differ by about
+    nu p0 / E of the distance from the centre)."""
     history = read_csv(folder + "/history.csv")[-1]
     P = history["pair0_normal_force"] * force_scale
     a, p0 = analytic.hertz(P, radius, e_star, dim)
     p0_h, a_h, points = hertz_fit(
-        read_csv(folder + "/contact-%05d.csv" % step), dim)
+        read_csv(folder + "/contact-%05d.csv" % step), dim, reference)
     profile = math.sqrt(
         sum((p - p0 * math.sqrt(max(0.0, 1 - x * x / (a * a)))) ** 2
             for x, p in points) / sum(p * p for x, p in points))
     return a, p0, a_h, p0_h, profile, len(points), P
 
 
-def hertz_fit(rows, dim):
+def hertz_fit(rows, dim, reference=False):
     """Hertz p0 and a fitted to contact-NNNNN.csv rows: least squares of
     p^2 = p0^2 (1 - r^2/a^2) over the nodes in contact (r = |x| in 2D,
     the distance from the z axis in 3D); also returns the (r, p) points."""
+    x, y = ("X", "Y") if reference else ("x", "y")
     points = []
     for r in rows:
         if r["CPRESS"] > 0:
-            radius = math.hypot(r["x"], r["y"]) if dim == 3 else abs(r["x"])
+            radius = math.hypot(r[x], r[y]) if dim == 3 else abs(r[x])
             points.append((radius, r["CPRESS"]))
     n = len(points)
     sx = sum(p[0] ** 2 for p in points)
