@@ -6,6 +6,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
+#include <set>
 
 namespace tribos
 {
@@ -312,11 +313,55 @@ namespace tribos
   void
   ContactHandler<dim>::commit()
   {
+    // Couplings are added as slave nodes find new master faces and kept
+    // through the increment (the pattern must not change inside Newton).
+    // At a converged increment those that no node uses any more go once
+    // they are a quarter of the pattern's contact couplings: the pattern
+    // follows the contact zone instead of growing with the sliding
+    // distance, and is rebuilt (with a new symbolic factorization) only
+    // when that pays.
+    unsigned int n_stale = 0, n_kept = 0;
     for (auto &pair : contact_pairs)
     {
       pair.committed            = pair.current;
       pair.old_slave_positions  = pair.slave_positions;
       pair.old_master_positions = pair.master_positions;
+      if (pair.rigid)
+        continue;
+      std::set<std::pair<unsigned int, unsigned int>> used;
+      const auto &faces = pair.master->faces();
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      {
+        const int face = pair.current[k].face;
+        if (!pair.owned[k] || pair.excluded[k] || face < 0)
+          continue;
+        used.insert({k, face});
+        for (const unsigned int g : faces[face].neighbours)
+          used.insert({k, g});
+      }
+      n_kept += used.size();
+      n_stale += pair.couplings.size() - used.size();
+    }
+    n_stale = Utilities::MPI::sum(n_stale, mpi_communicator);
+    n_kept  = Utilities::MPI::sum(n_kept, mpi_communicator);
+    if (n_stale > 0 && 3 * n_stale >= n_kept)
+    {
+      for (auto &pair : contact_pairs)
+        if (!pair.rigid)
+        {
+          const auto &faces = pair.master->faces();
+          pair.couplings.clear();
+          for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+          {
+            const int face = pair.current[k].face;
+            if (!pair.owned[k] || pair.excluded[k] || face < 0)
+              continue;
+            pair.couplings.insert({k, face});
+            for (const unsigned int g : faces[face].neighbours)
+              pair.couplings.insert({k, g});
+          }
+        }
+      outdated = true;
     }
     committed_time = time;
   }
