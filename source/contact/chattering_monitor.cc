@@ -79,9 +79,7 @@ namespace tribos
     unsigned int n = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int k = 0; k < pairs[p].n_nodes(); ++k)
-        if (frozen(p, k) && pairs[p].owned[k] &&
-            (pairs[p].current[k].result.pressure < 0 ||
-             !pairs[p].current[k].paired))
+        if (held_in_tension(pairs, p, k))
           ++n;
     return Utilities::MPI::sum(n, mpi_communicator);
   }
@@ -94,9 +92,7 @@ namespace tribos
     unsigned int n = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int k = 0; k < pairs[p].n_nodes(); ++k)
-        if (frozen(p, k) && pairs[p].owned[k] &&
-            (pairs[p].current[k].result.pressure < 0 ||
-             !pairs[p].current[k].paired))
+        if (held_in_tension(pairs, p, k))
         {
           held[p][k]    = false;
           changes[p][k] = 0;

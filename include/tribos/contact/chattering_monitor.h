@@ -63,6 +63,18 @@ namespace tribos
     release_in_tension(const std::vector<ContactPair<dim>> &pairs);
 
   private:
+    /** Node @p k of pair @p p is held, owned here, and tensile or without
+     * a master point. */
+    bool
+    held_in_tension(const std::vector<ContactPair<dim>> &pairs,
+                    const unsigned int                   p,
+                    const unsigned int                   k) const
+    {
+      const auto &state = pairs[p].current[k];
+      return frozen(p, k) && pairs[p].owned[k] &&
+             (state.result.pressure < 0 || !state.paired);
+    }
+
     MPI_Comm mpi_communicator;
     /** Per pair and node: status at the last evaluation (-1: none yet),
      * changes in the increment, held closed. */
