@@ -180,6 +180,12 @@ namespace tribos
                           update,
                           problem.system_rhs(),
                           eta);
+      // A singular system can come back as NaN from a direct solver: say
+      // so, instead of letting the material report a NaN deformation.
+      if (!std::isfinite(update.l2_norm()))
+        throw NonConvergence("the linear solver (" + linear_solver.method() +
+                             ") returned a non-finite update (singular "
+                             "system?)");
       if (linear_solver.method() != announced)
       {
         announced = linear_solver.method();
