@@ -103,7 +103,7 @@ namespace tribos
   template <int dim>
   void
   Problem<dim>::after_assembly(const unsigned int iteration,
-                              const double       residual)
+                               const double       residual)
   {
     if (!contact)
       return;
@@ -119,8 +119,8 @@ namespace tribos
     if (iteration >= 1)
       best_residual = std::min(best_residual, residual);
     const auto &cp = parameters.contact;
-    const auto  n  = contact->track_status_changes(cp.chattering_flips, stalled);
-    n_chattering   = std::max(n_chattering, n);
+    const auto  n = contact->track_status_changes(cp.chattering_flips, stalled);
+    n_chattering  = std::max(n_chattering, n);
     const std::string what =
       "chattering: " + std::to_string(n) +
       " slave node(s) changed contact status more than " +

@@ -545,8 +545,7 @@ namespace tribos
                   "none")
             << '\n';
         if (linear_solver && linear_solver->n_iterations() > 0)
-          out << "linear iterations " << linear_solver->n_iterations()
-              << '\n'
+          out << "linear iterations " << linear_solver->n_iterations() << '\n'
               << "AMG setups        "
               << linear_solver->n_preconditioner_setups() << '\n';
         if (parameters.nonlinear_solver.stabilization > 0)

@@ -71,17 +71,18 @@ namespace tribos
     Point<dim> centre;
     for (const auto &[dof, point] : points)
       centre += point / double(points.size());
-    const unsigned int n_modes = dim == 2 ? 3 : 6;
+    const unsigned int               n_modes = dim == 2 ? 3 : 6;
     std::vector<std::vector<double>> modes(
-      n_modes, std::vector<double>(system_owned.n_elements(), 0.));
+      n_modes,
+      std::vector<double>(system_owned.n_elements(), 0.));
     unsigned int local = 0;
     for (const auto dof : system_owned)
     {
       if (dof < dof_handler.n_dofs())
       {
-        const unsigned int c = dof_component[dof];
+        const unsigned int   c = dof_component[dof];
         const Tensor<1, dim> x = points.at(dof) - centre;
-        modes[c][local]      = 1; // translations
+        modes[c][local]        = 1; // translations
         // Rotations: about z in 2D (-y, x); about x, y, z in 3D.
         if constexpr (dim == 2)
           modes[2][local] = (c == 0 ? -x[1] : x[0]);

@@ -53,7 +53,8 @@ namespace tribos
 
 
     std::string
-    LinearSolver::direct_solver_for(const unsigned long, const bool serial) const
+    LinearSolver::direct_solver_for(const unsigned long,
+                                    const bool serial) const
     {
       if (direct_solver != "auto")
         return direct_solver;
@@ -79,13 +80,13 @@ namespace tribos
     {
       prm.enter_subsection("Linear solver");
       const std::string t = prm.get("Type");
-      type = t == "direct"    ? Type::direct :
-             t == "iterative" ? Type::iterative :
-                                Type::automatic;
-      iterative_above = prm.get_integer("Iterative above");
-      direct_solver  = prm.get("Direct solver");
-      tolerance      = prm.get_double("Tolerance");
-      max_iterations = prm.get_integer("Maximum iterations");
+      type                = t == "direct"    ? Type::direct :
+                            t == "iterative" ? Type::iterative :
+                                               Type::automatic;
+      iterative_above     = prm.get_integer("Iterative above");
+      direct_solver       = prm.get("Direct solver");
+      tolerance           = prm.get_double("Tolerance");
+      max_iterations      = prm.get_integer("Maximum iterations");
       prm.leave_subsection();
     }
   } // namespace Parameters

@@ -8,8 +8,8 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Epetra_LinearProblem.h>
-#include <Teuchos_ParameterList.hpp>
 
+#include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <memory>
 
@@ -32,7 +32,8 @@ namespace tribos
     : parameters(parameters)
     , dim(dim)
     , saddle_point(saddle_point)
-  {}
+  {
+  }
 
 
 
@@ -123,10 +124,10 @@ namespace tribos
                              " failed in its symbolic factorization");
       }
     }
-    amesos->problem.SetLHS(static_cast<Epetra_MultiVector *>(&x.trilinos_vector()));
-    amesos->problem.SetRHS(
-      const_cast<Epetra_MultiVector *>(
-        static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
+    amesos->problem.SetLHS(
+      static_cast<Epetra_MultiVector *>(&x.trilinos_vector()));
+    amesos->problem.SetRHS(const_cast<Epetra_MultiVector *>(
+      static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
     if (amesos->solver->NumericFactorization() != 0 ||
         amesos->solver->Solve() != 0)
       throw NonConvergence("the direct solver " + name +
@@ -147,7 +148,8 @@ namespace tribos
     // |rhs - A x|, which the tolerance (relative to |rhs|, from inexact
     // Newton) is about; left preconditioning measures the AMG-scaled one,
     // which can be below a loose tolerance before the first iteration.
-    const auto gmres = [&](const unsigned int max_iterations) {
+    const auto gmres = [&](const unsigned int max_iterations)
+    {
       SolverControl       control(max_iterations, relative * rhs.l2_norm());
       SolverGMRES<Vector> solver(control,
                                  SolverGMRES<Vector>::AdditionalData(200,

@@ -61,7 +61,7 @@ namespace tribos
     // taken, not the distance to the solution) and the update taken, per
     // kind of unknown.
     NonlinearProblem::Norms correction{nan, 0}, taken{nan, 0};
-    double                  previous[2] = {-1, -1};
+    double                  previous[2]       = {-1, -1};
     double                  previous_residual = 0, previous_eta = 0.1;
     unsigned int            relaxed_at = 0, n_solves = 0;
 

@@ -258,9 +258,9 @@ namespace tribos
     TrilinosWrappers::SparseMatrix matrix;
     /** Counts the rebuilds of the matrix's sparsity pattern. */
     unsigned long sparsity_version = 0;
-    Vector                         rhs;
-    Vector                         free_residual;
-    Vector                         full_residual;
+    Vector        rhs;
+    Vector        free_residual;
+    Vector        full_residual;
     /** The contact forces on the nodes at the last assembly (VTU). */
     Vector contact_forces;
     /** The unknowns: displacement dofs, then the contact multipliers. */
@@ -280,13 +280,13 @@ namespace tribos
     double                    time              = 0;
     AffineConstraints<double> increment_constraints;
     /** Contact and stabilization bookkeeping of the current increment. */
-    unsigned int n_chattering  = 0;
+    unsigned int n_chattering = 0;
     /** The smallest residual of this increment's iterations after the
      * first (whether Newton is still making progress). */
-    double best_residual = 0;
+    double       best_residual = 0;
     unsigned int n_frozen      = 0;
     /** Held nodes in tension were released in this increment. */
-    bool released = false;
+    bool         released      = false;
     unsigned int n_relaxations = 0;
     /** The stabilization forces of the last assembly. */
     Vector stabilization_forces;

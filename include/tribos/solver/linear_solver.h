@@ -114,21 +114,21 @@ namespace tribos
                     const Vector                         &rhs,
                     const double                          tolerance);
 
-    const Parameters::LinearSolver   &parameters;
-    const unsigned int                dim;
-    const bool                        saddle_point;
-    unsigned long                     total_iterations = 0;
+    const Parameters::LinearSolver &parameters;
+    const unsigned int              dim;
+    const bool                      saddle_point;
+    unsigned long                   total_iterations = 0;
     /** The AMG preconditioner, the pattern it was built for and the
      * iterations of its first solve. */
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-    unsigned long                                      amg_version = 0;
+    unsigned long                                      amg_version    = 0;
     unsigned int                                       amg_iterations = 0;
     unsigned long                                      n_amg_setups   = 0;
-    std::vector<std::vector<double>>  null_space;
-    bool                              higher_order = false;
-    TimerOutput                      *timer        = nullptr;
-    std::unique_ptr<SparseDirect>     suitesparse;
-    std::string                       last;
+    std::vector<std::vector<double>>                   null_space;
+    bool                                               higher_order = false;
+    TimerOutput                                       *timer        = nullptr;
+    std::unique_ptr<SparseDirect>                      suitesparse;
+    std::string                                        last;
 
     /** Amesos: the solver, its problem and the pattern it analysed. */
     struct Amesos;
