@@ -17,6 +17,8 @@ Cases (all Release, one process, VTU off):
               whole load in one increment), Contact refinements 4 in a
               radius of 0.25 and of 0.23 (the contact radius is 0.22),
               default solver settings; penalty and multipliers
+  hertz3d_default_*  parameters/hertz_3d.prm unchanged with one thread,
+              two threads and mpirun -np 2 (the speed-up target)
   upsetting   parameters/upsetting.prm, the first 5 of 25 steps (the whole
               stroke takes minutes; the per-iteration cost is the target)
   start       tribos --help, and parameters/patch_test-like small 2D scene
@@ -73,6 +75,14 @@ CASES = [
     ("hertz3d_L4r23_penalty", hertz3d(4, 0.005, radius=0.23), (3, 4)),
     ("hertz3d_L4r23_lagrange", hertz3d(4, 0.005, [LAGRANGE], radius=0.23),
      (3, 4)),
+    # parameters/hertz_3d.prm as it is (displacement control, 21k
+    # unknowns): one thread, two threads, two MPI processes (MUMPS).
+    ("hertz3d_default_1thread", ("parameters/hertz_3d.prm", []), None,
+     {"env": {"DEAL_II_NUM_THREADS": "1"}}),
+    ("hertz3d_default_2threads", ("parameters/hertz_3d.prm", []), None,
+     {"env": {"DEAL_II_NUM_THREADS": "2"}}),
+    ("hertz3d_default_np2", ("parameters/hertz_3d.prm", []), None,
+     {"ranks": 2}),
     ("upsetting_5_steps", ("parameters/upsetting.prm",
                            ["Time stepping/End time=5",
                             "Time stepping/Number of steps=5"]), None),
@@ -83,16 +93,26 @@ SECTIONS = ["assembly", "contact assembly", "contact search",
             "linear solve", "output", "setup"]
 
 
-def run_once(tribos, prm, sets, folder):
+def run_once(tribos, prm, sets, folder, launch=None):
     """Wall time and peak RSS (MB) of one run (os.wait4 gives the child's
-    own rusage)."""
+    own rusage, under mpirun the largest of its processes'). launch:
+    {"env": {...}, "ranks": n} for the thread and MPI cases."""
+    launch = launch or {}
     command = [tribos, os.path.join(ROOT, prm), "--set",
                "Output/Directory=" + folder, "--set", "Output/Write VTU=false"]
     for s in sets:
         command += ["--set", s]
+    if launch.get("ranks"):
+        command = [os.environ.get("MPIEXEC", "mpirun"), "-np",
+                   str(launch["ranks"])] + command
+    env = dict(os.environ)
+    env.update(launch.get("env", {}))
+    if os.geteuid() == 0:
+        env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+        env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
     start = time.time()
     child = subprocess.Popen(command, stdout=subprocess.DEVNULL,
-                             stderr=subprocess.PIPE)
+                             stderr=subprocess.PIPE, env=env)
     _, status, usage = os.wait4(child.pid, 0)
     wall = time.time() - start
     child.returncode = os.waitstatus_to_exitcode(status)
@@ -147,13 +167,14 @@ def main():
 
     rows = []
     with tempfile.TemporaryDirectory() as work:
-        for name, (prm, sets), hertz in CASES:
+        for name, (prm, sets), hertz, *launch in CASES:
             if args.only and name not in args.only:
                 continue
             folder = os.path.join(work, name)
             walls, rss = [], []
             for _ in range(args.runs):
-                w, m = run_once(args.tribos, prm, sets, folder)
+                w, m = run_once(args.tribos, prm, sets, folder,
+                                launch[0] if launch else None)
                 walls.append(w)
                 rss.append(m)
             sections, values = summary(folder)
@@ -244,6 +265,16 @@ def main():
            None if "upsetting_5_steps" not in by else
            by["upsetting_5_steps"]["ms_per_newton_iteration"] / 1e3, 0.3)
     target("tribos --help [s]", get("start_help", "wall_median"), 0.2)
+    one = get("hertz3d_default_1thread", "wall_median")
+    for case, what in (("hertz3d_default_2threads", "two threads"),
+                       ("hertz3d_default_np2", "mpirun -np 2")):
+        other = get(case, "wall_median")
+        if one and other:
+            # A speed-up: measured / target >= 1 meets it here.
+            print("target %-58s %8.3f / %-7g = %.2f %s" % (
+                "Hertz 3D speed-up, %s vs one thread" % what, one / other,
+                1.7, one / other / 1.7,
+                "met" if one / other >= 1.7 else "NOT met"))
     for level in ("2d_L5", "2d_L6", "3d_L4", "3d_L4r23"):
         p, l = (get("hertz%s_penalty" % level, "wall_median"),
                 get("hertz%s_lagrange" % level, "wall_median"))
