@@ -320,47 +320,33 @@ namespace tribos
     // follows the contact zone instead of growing with the sliding
     // distance, and is rebuilt (with a new symbolic factorization) only
     // when that pays.
+    std::vector<std::set<std::pair<unsigned int, unsigned int>>> used(
+      contact_pairs.size());
     unsigned int n_stale = 0, n_kept = 0;
-    for (auto &pair : contact_pairs)
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
     {
+      auto &pair                = contact_pairs[p];
       pair.committed            = pair.current;
       pair.old_slave_positions  = pair.slave_positions;
       pair.old_master_positions = pair.master_positions;
       if (pair.rigid)
         continue;
-      std::set<std::pair<unsigned int, unsigned int>> used;
-      const auto &faces = pair.master->faces();
       for (unsigned int k = 0; k < pair.n_nodes(); ++k)
       {
         const int face = pair.current[k].face;
-        if (!pair.owned[k] || pair.excluded[k] || face < 0)
-          continue;
-        used.insert({k, face});
-        for (const unsigned int g : faces[face].neighbours)
-          used.insert({k, g});
+        if (pair.owned[k] && !pair.excluded[k] && face >= 0)
+          pair.insert_couplings(k, face, used[p]);
       }
-      n_kept += used.size();
-      n_stale += pair.couplings.size() - used.size();
+      n_kept += used[p].size();
+      n_stale += pair.couplings.size() - used[p].size();
     }
     n_stale = Utilities::MPI::sum(n_stale, mpi_communicator);
     n_kept  = Utilities::MPI::sum(n_kept, mpi_communicator);
     if (n_stale > 0 && 3 * n_stale >= n_kept)
     {
-      for (auto &pair : contact_pairs)
-        if (!pair.rigid)
-        {
-          const auto &faces = pair.master->faces();
-          pair.couplings.clear();
-          for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-          {
-            const int face = pair.current[k].face;
-            if (!pair.owned[k] || pair.excluded[k] || face < 0)
-              continue;
-            pair.couplings.insert({k, face});
-            for (const unsigned int g : faces[face].neighbours)
-              pair.couplings.insert({k, g});
-          }
-        }
+      for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+        if (!contact_pairs[p].rigid)
+          contact_pairs[p].couplings.swap(used[p]);
       outdated = true;
     }
     committed_time = time;

@@ -90,6 +90,20 @@ namespace tribos
 
   template <int dim>
   void
+  ContactPair<dim>::insert_couplings(
+    const unsigned int                               k,
+    const unsigned int                               face,
+    std::set<std::pair<unsigned int, unsigned int>> &into) const
+  {
+    into.insert({k, face});
+    for (const unsigned int g : master->faces()[face].neighbours)
+      into.insert({k, g});
+  }
+
+
+
+  template <int dim>
+  void
   ContactPair<dim>::element_dofs(
     const unsigned int                    k,
     const int                             face,

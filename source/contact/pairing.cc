@@ -79,8 +79,7 @@ namespace tribos
     positions(*pair.master, pair.master_positions);
     pair.search.build(*pair.master, pair.master_positions);
 
-    bool        new_coupling = false;
-    const auto &faces        = pair.master->faces();
+    bool new_coupling = false;
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
     {
       if (!pair.owned[k] || pair.excluded[k])
@@ -94,9 +93,7 @@ namespace tribos
       if (face >= 0 && pair.couplings.count({k, face}) == 0)
       {
         new_coupling = true;
-        pair.couplings.insert({k, face});
-        for (const unsigned int g : faces[face].neighbours)
-          pair.couplings.insert({k, g});
+        pair.insert_couplings(k, face, pair.couplings);
       }
     }
     return new_coupling;

@@ -53,8 +53,7 @@ namespace tribos
 
 
     std::string
-    LinearSolver::direct_solver_for(const unsigned long,
-                                    const bool serial) const
+    LinearSolver::direct_solver_for(const bool serial) const
     {
       if (direct_solver != "auto")
         return direct_solver;

@@ -77,7 +77,7 @@ namespace tribos
     }
     const bool serial =
       Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator()) == 1;
-    const std::string name = parameters.direct_solver_for(matrix.m(), serial);
+    const std::string name = parameters.direct_solver_for(serial);
     if (name == "suitesparse")
     {
       if (!suitesparse)

@@ -61,8 +61,8 @@ namespace tribos
     // taken, not the distance to the solution) and the update taken, per
     // kind of unknown.
     NonlinearProblem::Norms correction{nan, 0}, taken{nan, 0};
-    double                  previous[2]       = {-1, -1};
-    double                  previous_residual = 0, previous_eta = 0.1;
+    double                  previous[2]  = {-1, -1};
+    double                  previous_eta = 0.1;
     unsigned int            relaxed_at = 0, n_solves = 0;
 
     for (unsigned int iteration = 0;; ++iteration)
@@ -156,7 +156,8 @@ namespace tribos
           eta = 1e-4;
         else
         {
-          eta = 0.9 * std::pow(r.free / previous_residual, 2);
+          // previous[1]: the residual of the iteration before this one.
+          eta = 0.9 * std::pow(r.free / previous[1], 2);
           if (0.9 * previous_eta * previous_eta > 0.1)
             eta = std::max(eta, 0.9 * previous_eta * previous_eta);
           const double target =
@@ -164,13 +165,12 @@ namespace tribos
           eta = std::min(1e-3, std::max(eta, 0.5 * target / r.free));
           // A stalled Newton step (the residual not halved) is the active
           // set's doing, not the Krylov tolerance's: solve it tightly.
-          if (r.free > 0.5 * previous_residual)
+          if (r.free > 0.5 * previous[1])
             eta = std::min(eta, 1e-8);
           eta = std::max(eta, 1e-12);
         }
         previous_eta = eta;
       }
-      previous_residual = r.free;
 
       update = 0;
       ++linear_solves;

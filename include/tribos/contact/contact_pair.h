@@ -91,6 +91,15 @@ namespace tribos
     element_dofs(const unsigned int                    k,
                  const int                             face,
                  std::vector<types::global_dof_index> &dofs) const;
+
+    /** Add to @p into the couplings slave node @p k needs on master
+     * @p face: the face and its neighbours (the node may slide onto them
+     * within an increment). */
+    void
+    insert_couplings(
+      const unsigned int                               k,
+      const unsigned int                               face,
+      std::set<std::pair<unsigned int, unsigned int>> &into) const;
   };
 
 

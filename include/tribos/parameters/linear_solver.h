@@ -30,12 +30,12 @@ namespace tribos
       unsigned int max_iterations;
 
       /**
-       * The direct solver for a system of @p n unknowns on one process
-       * (@p serial) or several: the one named, or (auto) SuiteSparse
-       * ("suitesparse": CHOLMOD or UMFPACK) on one process, MUMPS under MPI.
+       * The direct solver on one process (@p serial) or several: the one
+       * named, or (auto) SuiteSparse ("suitesparse": CHOLMOD or UMFPACK) on
+       * one process, MUMPS under MPI.
        */
       std::string
-      direct_solver_for(const unsigned long n, const bool serial) const;
+      direct_solver_for(const bool serial) const;
 
       /**
        * Whether a system of @p n unknowns in @p dim dimensions is solved
