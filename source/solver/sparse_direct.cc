@@ -71,37 +71,50 @@ namespace tribos
 
 
   void
-  SparseDirect::extract(const TrilinosWrappers::SparseMatrix &matrix)
+  SparseDirect::extract(const TrilinosWrappers::SparseMatrix &matrix,
+                        const bool                            new_pattern)
   {
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
     const int               n = A.NumMyRows();
     AssertThrow(A.NumGlobalRows() == n,
                 ExcMessage("SparseDirect needs every row on one process."));
+    int     length;
+    double *entries;
+    int    *indices;
+    if (!new_pattern)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        A.ExtractMyRowView(i, length, entries, indices);
+        for (int k = row_start[i]; k < row_start[i + 1]; ++k)
+          values[k] = entries[source[k]];
+      }
+      return;
+    }
     row_start.assign(n + 1, 0);
     columns.clear();
-    values.clear();
+    source.clear();
     columns.reserve(A.NumMyNonzeros());
-    values.reserve(A.NumMyNonzeros());
-    std::vector<std::pair<int, double>> row;
+    source.reserve(A.NumMyNonzeros());
+    std::vector<std::pair<int, int>> row;
     for (int i = 0; i < n; ++i)
     {
       AssertThrow(A.RowMap().GID(i) == i,
                   ExcMessage("SparseDirect needs the rows in order."));
-      int     length;
-      double *entries;
-      int    *indices;
       A.ExtractMyRowView(i, length, entries, indices);
       row.resize(length);
       for (int k = 0; k < length; ++k)
-        row[k] = {A.ColMap().GID(indices[k]), entries[k]};
+        row[k] = {A.ColMap().GID(indices[k]), k};
       std::sort(row.begin(), row.end());
-      for (const auto &[j, a] : row)
+      for (const auto &[j, k] : row)
       {
         columns.push_back(j);
-        values.push_back(a);
+        source.push_back(k);
       }
       row_start[i + 1] = columns.size();
     }
+    values.resize(columns.size());
+    extract(matrix, false);
   }
 
 
@@ -226,8 +239,12 @@ namespace tribos
                       Vector                               &x,
                       const Vector                         &rhs)
   {
-    extract(matrix);
-    if (pattern_version != version)
+    const bool new_pattern =
+      pattern_version != version ||
+      int(row_start.size()) != matrix.trilinos_matrix().NumMyRows() + 1 ||
+      int(columns.size()) != matrix.trilinos_matrix().NumMyNonzeros();
+    extract(matrix, new_pattern);
+    if (new_pattern)
     {
       free_factorizations();
       version    = pattern_version;

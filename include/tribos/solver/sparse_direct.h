@@ -57,9 +57,12 @@ namespace tribos
     }
 
   private:
-    /** Copy the matrix into compressed rows (global, sorted columns). */
+    /** Copy the matrix into compressed rows (global, sorted columns);
+     * with @p new_pattern false only the values (same pattern, same
+     * order: no column lookup and no sort). */
     void
-    extract(const TrilinosWrappers::SparseMatrix &matrix);
+    extract(const TrilinosWrappers::SparseMatrix &matrix,
+            const bool                            new_pattern);
 
     /** Whether the values are symmetric to 1e-10 of the largest entry. */
     bool
@@ -78,7 +81,9 @@ namespace tribos
      * transpose). */
     std::vector<int>    row_start, columns;
     std::vector<double> values;
-    unsigned long       version = static_cast<unsigned long>(-1);
+    /** Per entry of the compressed rows, its position in Trilinos' row. */
+    std::vector<int> source;
+    unsigned long    version = static_cast<unsigned long>(-1);
     /** Cholesky failures in a row (2: LU for the pattern's life). */
     unsigned int n_failures = 0;
     std::string  last_method;
