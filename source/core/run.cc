@@ -39,9 +39,7 @@ namespace tribos
                                                    dim,
                                                    n_multipliers > 0);
     linear_solver->set_timer(timer);
-    if (parameters.linear_solver.iterative_for(dim,
-                                               matrix.m(),
-                                               n_multipliers > 0))
+    if (linear_solver->iterative(matrix))
       linear_solver->set_near_null_space(rigid_body_modes(),
                                          parameters.finite_element.degree > 1);
     newton  = std::make_unique<NewtonSolver>(parameters.nonlinear_solver,
