@@ -107,7 +107,7 @@ namespace tribos
       local_residual.reinit(n);
       for (unsigned int i = 0; i < n; ++i)
       {
-        local_rhs(i)      = -R[i];
+        local_rhs(i)      = -force_weight * R[i];
         local_residual(i) = R[i];
       }
       full_residual.add(dofs, local_residual);
@@ -128,7 +128,7 @@ namespace tribos
         local_matrix.reinit(n, n);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
-            local_matrix(i, j) = K[i * n + j];
+            local_matrix(i, j) = force_weight * K[i * n + j];
         constraints.distribute_local_to_global(local_matrix,
                                                local_rhs,
                                                dofs,
@@ -259,6 +259,23 @@ namespace tribos
         add(dofs.size());
       }
     }
+  }
+
+
+
+  template <int dim>
+  double
+  ContactHandler<dim>::frictional_dissipation() const
+  {
+    double sum = 0;
+    for (const auto &pair : contact_pairs)
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        if (pair.owned[k] && pair.current[k].closed())
+        {
+          const auto &r = pair.current[k].result;
+          sum += norm(r.traction) * r.slip_increment * pair.area[k];
+        }
+    return Utilities::MPI::sum(sum, mpi_communicator);
   }
 
 

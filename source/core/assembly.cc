@@ -38,6 +38,7 @@ namespace tribos
       {
       }
 
+
       AssemblyScratch(const AssemblyScratch &other)
         : AssemblyScratch(other.fe_values.get_fe(),
                           other.fe_values.get_quadrature(),
@@ -55,6 +56,9 @@ namespace tribos
       std::vector<std::vector<Tensor<1, dim>>> centre_gradients;
       std::vector<dealii::Vector<double>>      centre_values;
       dealii::Vector<double>                   force;
+      /** Dynamics: the cell's mass matrix and accelerations. */
+      FullMatrix<double>  mass;
+      std::vector<double> mid_acceleration, end_acceleration;
     };
 
 
@@ -65,12 +69,17 @@ namespace tribos
      */
     struct AssemblyCopy
     {
-      AssemblyCopy(const unsigned int dofs_per_cell, const bool stabilized)
+      AssemblyCopy(const unsigned int dofs_per_cell,
+                   const bool         stabilized,
+                   const bool         external,
+                   const bool         dynamic)
         : cell_matrix(dofs_per_cell, dofs_per_cell)
         , cell_rhs(dofs_per_cell)
         , cell_residual(dofs_per_cell)
         , cell_stabilization(stabilized ? dofs_per_cell : 0)
-        , cell_external(stabilized ? dofs_per_cell : 0)
+        , cell_external(external ? dofs_per_cell : 0)
+        , cell_static(dynamic ? dofs_per_cell : 0)
+        , cell_inertia(dynamic ? dofs_per_cell : 0)
         , dof_indices(dofs_per_cell)
       {
       }
@@ -79,8 +88,12 @@ namespace tribos
       dealii::Vector<double> cell_rhs;
       dealii::Vector<double> cell_residual;
       dealii::Vector<double> cell_stabilization;
-      /** The applied forces alone (for the stabilization's load ratio). */
-      dealii::Vector<double>               cell_external;
+      /** The applied forces alone (for the stabilization's load ratio and
+       * the work of the loads). */
+      dealii::Vector<double> cell_external;
+      /** Dynamics: -R of the static forces alone, and M a_{n+1}. */
+      dealii::Vector<double>               cell_static;
+      dealii::Vector<double>               cell_inertia;
       std::vector<types::global_dof_index> dof_indices;
       /** An inverted element's message, rethrown after the loop: an
        * exception must not leave a worker thread. */
@@ -111,14 +124,17 @@ namespace tribos
       matrix = 0;
       rhs    = 0;
     }
-    free_residual              = 0;
-    full_residual              = 0;
-    const double stabilization = parameters.nonlinear_solver.stabilization;
+    free_residual               = 0;
+    full_residual               = 0;
+    const double stabilization  = parameters.nonlinear_solver.stabilization;
+    const bool   dynamic        = integrator && with_inertia;
+    const bool   track_external = stabilization > 0 || integrator;
     if (stabilization > 0)
-    {
       stabilization_forces = 0;
-      external_forces      = 0;
-    }
+    if (track_external)
+      external_forces = 0;
+    if (dynamic)
+      inertia_forces = 0;
     if (body_force)
       body_force->set_time(time);
     for (auto &[id, function] : neumann_functions)
@@ -163,7 +179,7 @@ namespace tribos
       cell->get_dof_indices(dof_indices);
       cell_matrix = 0;
       cell_rhs    = 0;
-      if (stabilization > 0)
+      if (track_external)
         cell_external = 0;
 
       fe_values.get_function_gradients(u, gradients);
@@ -253,7 +269,7 @@ namespace tribos
             if (body_force)
             {
               r -= force[ci] * fe_values.shape_value(i, q);
-              if (stabilization > 0)
+              if (track_external)
                 cell_external(i) +=
                   force[ci] * fe_values.shape_value(i, q) * JxW;
             }
@@ -328,7 +344,7 @@ namespace tribos
           if (body_force)
           {
             r -= force[ci] * fe_values.shape_value(i, q);
-            if (stabilization > 0)
+            if (track_external)
               cell_external(i) += force[ci] * fe_values.shape_value(i, q) * JxW;
           }
           cell_rhs(i) -= r * JxW;
@@ -379,7 +395,7 @@ namespace tribos
                                  fe_face_values.shape_value(i, q) *
                                  fe_face_values.JxW(q) * ring;
                 cell_rhs(i) += f;
-                if (stabilization > 0)
+                if (track_external)
                   cell_external(i) += f;
               }
             }
@@ -410,6 +426,49 @@ namespace tribos
           cell_stabilization(i) = f;
           if (with_matrix)
             cell_matrix(i, i) += k * weight;
+        }
+      }
+
+      if (dynamic)
+      {
+        // M a_{n+1-alpha_m} + (1 - alpha_f) R(u_{n+1}) (+ alpha_f R(u_n),
+        // added after the loop); Newmark's a_{n+1} follows from u_{n+1}.
+        copy.cell_static   = cell_rhs;
+        const double w     = integrator->force_weight();
+        const double m     = integrator->mass_weight();
+        auto        &mass  = scratch.mass;
+        auto        &a_mid = scratch.mid_acceleration;
+        auto        &a_end = scratch.end_acceleration;
+        cell_mass_matrix(fe_values,
+                         dof_indices,
+                         component,
+                         densities[cell->material_id()],
+                         mass);
+        a_mid.resize(dofs_per_cell);
+        a_end.resize(dofs_per_cell);
+        for (unsigned int j = 0; j < dofs_per_cell; ++j)
+        {
+          const types::global_dof_index dof = dof_indices[j];
+          const double                  du  = u[dof] - ghosted_start[dof];
+          const double v = ghosted_velocity[dof], a = ghosted_acceleration[dof];
+          a_mid[j] = integrator->mid_acceleration(du, v, a);
+          a_end[j] = integrator->acceleration(du, v, a);
+        }
+        cell_rhs *= w;
+        if (with_matrix)
+          cell_matrix *= w;
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          double inertia_mid = 0, inertia_end = 0;
+          for (unsigned int j = 0; j < dofs_per_cell; ++j)
+          {
+            inertia_mid += mass(i, j) * a_mid[j];
+            inertia_end += mass(i, j) * a_end[j];
+            if (with_matrix)
+              cell_matrix(i, j) += m * mass(i, j);
+          }
+          cell_rhs(i) -= inertia_mid;
+          copy.cell_inertia(i) = inertia_end;
         }
       }
     };
@@ -443,12 +502,14 @@ namespace tribos
         return;
       }
       if (stabilization > 0)
-      {
         stabilization_forces.add(copy.dof_indices, copy.cell_stabilization);
+      if (track_external)
         external_forces.add(copy.dof_indices, copy.cell_external);
-      }
-      // The unconstrained residual carries the reactions.
-      cell_residual = copy.cell_rhs;
+      if (dynamic)
+        inertia_forces.add(copy.dof_indices, copy.cell_inertia);
+      // The unconstrained residual carries the reactions (the static forces
+      // alone in dynamics).
+      cell_residual = dynamic ? copy.cell_static : copy.cell_rhs;
       cell_residual *= -1.;
       full_residual.add(copy.dof_indices, cell_residual);
       homogeneous_constraints.distribute_local_to_global(copy.cell_rhs,
@@ -462,14 +523,14 @@ namespace tribos
                                                rhs);
     };
 
-    WorkStream::run(CellFilter(IteratorFilters::LocallyOwnedCell(),
-                               dof_handler.begin_active()),
-                    CellFilter(IteratorFilters::LocallyOwnedCell(),
-                               dof_handler.end()),
-                    worker,
-                    copier,
-                    AssemblyScratch<dim>(*fe, quadrature, face_quadrature),
-                    AssemblyCopy(dofs_per_cell, stabilization > 0));
+    WorkStream::run(
+      CellFilter(IteratorFilters::LocallyOwnedCell(),
+                 dof_handler.begin_active()),
+      CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.end()),
+      worker,
+      copier,
+      AssemblyScratch<dim>(*fe, quadrature, face_quadrature),
+      AssemblyCopy(dofs_per_cell, stabilization > 0, track_external, dynamic));
     if (!failure.empty())
       throw InvertedElement(failure);
 
@@ -489,6 +550,27 @@ namespace tribos
       contact_forces.compress(VectorOperation::add);
     }
 
+    if (dynamic && integrator->alpha_f() > 0)
+    {
+      // The alpha_f share of the forces at t_n, condensed like a cell's.
+      std::vector<types::global_dof_index> indices;
+      std::vector<double>                  values;
+      for (const auto i : locally_owned_dofs)
+      {
+        indices.push_back(i);
+        values.push_back(-integrator->alpha_f() * old_forces[i]);
+      }
+      homogeneous_constraints.distribute_local_to_global(values.begin(),
+                                                         values.end(),
+                                                         indices.begin(),
+                                                         free_residual);
+      if (with_matrix)
+        homogeneous_constraints.distribute_local_to_global(values.begin(),
+                                                           values.end(),
+                                                           indices.begin(),
+                                                           rhs);
+    }
+
     if (with_matrix)
     {
       matrix.compress(VectorOperation::add);
@@ -497,10 +579,11 @@ namespace tribos
     free_residual.compress(VectorOperation::add);
     full_residual.compress(VectorOperation::add);
     if (stabilization > 0)
-    {
       stabilization_forces.compress(VectorOperation::add);
+    if (track_external)
       external_forces.compress(VectorOperation::add);
-    }
+    if (dynamic)
+      inertia_forces.compress(VectorOperation::add);
     return free_residual.l2_norm();
   }
 

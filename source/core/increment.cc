@@ -40,6 +40,8 @@ namespace tribos
     n_relaxations   = 0;
     if (contact)
       contact->begin_increment();
+    if (integrator)
+      integrator->set_step(time - committed_time);
     make_constraints(time, false, increment_constraints);
   }
 
@@ -55,6 +57,10 @@ namespace tribos
                                                       homogeneous_constraints,
                              time);
     r.force_scale = full_residual.l2_norm();
+    // Dynamics: the inertia forces are forces of the balance too (a body
+    // in free flight has no other).
+    if (integrator)
+      r.force_scale = std::max(r.force_scale, inertia_forces.l2_norm());
     return r;
   }
 
@@ -345,6 +351,8 @@ namespace tribos
   Problem<dim>::commit(const double)
   {
     history_old = history_new;
+    if (integrator)
+      commit_dynamics();
     if (contact)
       contact->commit();
   }

@@ -111,6 +111,15 @@ namespace tribos
       columns.push_back("augmentations");
       columns.push_back("chattering_nodes");
     }
+    if (integrator)
+      for (const char *name : {"kinetic_energy",
+                               "strain_energy",
+                               "contact_work",
+                               "friction_work",
+                               "external_work",
+                               "total_energy",
+                               "energy_error"})
+        columns.push_back(name);
     if (parameters.nonlinear_solver.stabilization > 0)
     {
       columns.push_back("stabilization_force");
@@ -146,7 +155,7 @@ namespace tribos
         double sum = 0;
         for (const auto dof : per_component[d])
           if (locally_owned_dofs.is_element(dof))
-            sum += full_residual[dof];
+            sum += full_residual[dof] + (integrator ? inertia_forces[dof] : 0.);
         forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
       }
     return forces;
@@ -225,6 +234,21 @@ namespace tribos
         row.push_back(value);
       row.push_back(report.n_augmentations);
       row.push_back(report.n_chattering);
+    }
+    if (integrator)
+    {
+      // energy_error: what the integrator (and an impact) created or lost,
+      // E_kin + E_strain + W_contact - W_external - E_0.
+      const double total = kinetic_energy + strain_energy;
+      for (const double value :
+           {kinetic_energy,
+            strain_energy,
+            contact_work,
+            friction_work,
+            external_work,
+            total,
+            total + contact_work - external_work - initial_energy})
+        row.push_back(value);
     }
     if (parameters.nonlinear_solver.stabilization > 0)
     {

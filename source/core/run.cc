@@ -18,6 +18,7 @@ namespace tribos
       warn(w);
     make_grid();
     setup_system();
+    setup_dynamics();
     open_output();
 
     pcout << "tribos: " << dim << "D scene <" << parameters.scene.name << ">, "

@@ -1,4 +1,5 @@
 #include <tribos/core/problem.h>
+#include <tribos/core/vector_function.h>
 #include <tribos/scene/scene.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -14,43 +15,6 @@
 
 namespace tribos
 {
-  namespace
-  {
-    /** "x, y(, z)" expressions padded to dim components for FunctionParser. */
-    template <int dim>
-    std::unique_ptr<FunctionParser<dim>>
-    make_vector_function(const std::vector<std::string> &expressions,
-                         const std::string              &entry)
-    {
-      std::string joined;
-      for (unsigned int i = 0; i < expressions.size(); ++i)
-        joined += (i ? ";" : "") + expressions[i];
-      auto function = std::make_unique<FunctionParser<dim>>(expressions.size());
-      try
-      {
-        function->initialize(FunctionParser<dim>::default_variable_names() +
-                               ",t",
-                             joined,
-                             {{"pi", numbers::PI}},
-                             true);
-        // Evaluate once so that unknown symbols are reported now.
-        Vector<double> value(expressions.size());
-        function->vector_value(Point<dim>(), value);
-      }
-      catch (...)
-      {
-        AssertThrow(false,
-                    ExcMessage("Parameter <" + entry +
-                               ">: cannot parse the expression(s) <" + joined +
-                               ">. Use x, y, z, t, pi and the functions "
-                               "of deal.II's FunctionParser (muparser)."));
-      }
-      return function;
-    }
-  } // namespace
-
-
-
   template <int dim>
   Problem<dim>::Problem(const Parameters::AllParameters &parameters,
                         const MPI_Comm                   mpi_communicator)

@@ -59,6 +59,25 @@ namespace tribos
     return sigma;
   }
 
+  template <int dim>
+  double
+  LinearElastic<dim>::stored_energy(const Tensor<2, dim> &F,
+                                    const double *) const
+  {
+    // W = lambda/2 tr(eps)^2 + mu eps : eps (plane strain: eps_33 = 0).
+    double trace = 0, squared = 0;
+    for (unsigned int i = 0; i < dim; ++i)
+    {
+      trace += F[i][i] - 1;
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        const double eps = 0.5 * (F[i][j] + F[j][i]) - (i == j ? 1. : 0.);
+        squared += eps * eps;
+      }
+    }
+    return 0.5 * lambda * trace * trace + mu * squared;
+  }
+
   template class LinearElastic<2>;
   template class LinearElastic<3>;
 } // namespace tribos

@@ -67,6 +67,16 @@ namespace tribos
     return sigma;
   }
 
+  template <int dim>
+  double
+  NeoHookean<dim>::stored_energy(const Tensor<2, dim> &F, const double *) const
+  {
+    // tr C of plane strain has C_33 = 1: tr C - 3 = F : F - dim.
+    const double log_J = std::log(determinant(F));
+    return 0.5 * mu * (scalar_product(F, F) - dim) - mu * log_J +
+           0.5 * lambda * log_J * log_J;
+  }
+
   template class NeoHookean<2>;
   template class NeoHookean<3>;
 } // namespace tribos

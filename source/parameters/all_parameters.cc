@@ -54,6 +54,25 @@ namespace tribos
                     "3D: none."));
       nonlinear_solver.parse_parameters(prm);
       time_stepping.parse_parameters(prm);
+      time_stepping.check(dimension);
+      if (time_stepping.dynamic())
+        for (const double rho : materials.densities)
+          AssertThrow(rho > 0,
+                      dealii::ExcMessage("Parameter <Materials/Density> = <" +
+                                         [&]()
+                                         {
+                                           prm.enter_subsection("Materials");
+                                           const std::string value =
+                                             prm.get("Density");
+                                           prm.leave_subsection();
+                                           return value;
+                                         }() +
+                                         ">: Time stepping/Integrator = <" +
+                                         (time_stepping.integrator ==
+                                              Parameters::Integrator::newmark ?
+                                            std::string("newmark") :
+                                            std::string("generalized alpha")) +
+                                         "> needs every density > 0."));
       linear_solver.parse_parameters(prm);
       output.parse_parameters(prm);
       verification.parse_parameters(prm);

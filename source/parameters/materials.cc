@@ -43,6 +43,12 @@ namespace tribos
                         "0",
                         dealii::Patterns::Anything(),
                         "J2 plasticity: H of (36), >= 0.");
+      prm.declare_entry("Density",
+                        "0",
+                        dealii::Patterns::Anything(),
+                        "Mass per reference volume, per body id or one for "
+                        "all; used by the dynamic integrators only (Time "
+                        "stepping/Integrator), which need it > 0.");
       prm.leave_subsection();
     }
 
@@ -75,6 +81,7 @@ namespace tribos
       saturation_yield_stresses = read("Saturation yield stress");
       hardening_exponents       = read("Hardening exponent");
       linear_hardening_moduli   = read("Linear hardening modulus");
+      densities                 = read("Density");
       for (const double E : youngs_moduli)
         AssertThrow(E > 0,
                     dealii::ExcMessage(

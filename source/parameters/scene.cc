@@ -183,6 +183,16 @@ namespace tribos
                         "true",
                         Patterns::Bool(),
                         "false: the indenter alone (e.g. on a rigid plane).");
+      prm.declare_entry(
+        "Indenter shape",
+        "lower half",
+        Patterns::Selection("lower half|whole|meridian"),
+        "lower half: the lower half of the cylinder (2D) or a quarter of the "
+        "lower hemisphere (3D), loaded on its flat top (boundary 11). whole: "
+        "the whole disc (2D only), e.g. a body in flight. meridian: the half "
+        "disc x >= 0 (2D only), the meridian section of a whole sphere for "
+        "Finite element/Axisymmetric = true, its axis boundary 12. The "
+        "curved surface is boundary 10.");
       prm.declare_entry("Contact refinements",
                         "0",
                         Patterns::Integer(0, 10),
@@ -212,6 +222,7 @@ namespace tribos
       block_subdivisions   = cell_counts(prm, "Block subdivisions");
       indenter_refinements = prm.get_integer("Indenter refinements");
       with_block           = prm.get_bool("With block");
+      indenter_shape       = prm.get("Indenter shape");
       contact_refinements  = prm.get_integer("Contact refinements");
       refinement_radius    = prm.get_double("Refinement radius");
       AssertThrow(block_subdivisions.size() >= 2,

@@ -1,5 +1,6 @@
 /**
- * Scenes "cylinder over block" (the Hertz indenter) and "cylinder compression" (the paper's cylinder, structured or split-corner section).
+ * Scenes "cylinder over block" (the Hertz indenter) and "cylinder compression"
+ * (the paper's cylinder, structured or split-corner section).
  */
 
 #include <tribos/scene/mesh_tools.h>
@@ -22,9 +23,27 @@ namespace tribos
     make_indenter(Triangulation<dim> &tria,
                   const double        radius,
                   const double        gap,
-                  const unsigned int  n_refinements)
+                  const unsigned int  n_refinements,
+                  const std::string  &shape)
     {
-      if (dim == 2)
+      AssertThrow(shape == "lower half" || dim == 2,
+                  ExcMessage("Parameter <Scene/Cylinder over block/Indenter "
+                             "shape> = <" +
+                             shape +
+                             "> is available in 2D only (in 3D: lower half; "
+                             "a whole sphere is the axisymmetric meridian)."));
+      if (shape == "whole")
+      {
+        GridGenerator::hyper_ball(tria, Point<dim>(), radius);
+        tria.refine_global(n_refinements);
+      }
+      else if (shape == "meridian")
+      {
+        // Half disc x >= 0: the (r, z) section of a sphere.
+        GridGenerator::half_hyper_ball(tria, Point<dim>(), radius);
+        tria.refine_global(n_refinements);
+      }
+      else if (dim == 2)
       {
         // Half disc x >= 0, then rotate by -90 degrees: y <= 0.
         GridGenerator::half_hyper_ball(tria, Point<dim>(), radius);
@@ -64,7 +83,11 @@ namespace tribos
         if (face->at_boundary())
         {
           const Point<dim> c = face->center();
-          if (std::abs(c[dim - 1] - (radius + gap)) < tolerance)
+          if (shape == "meridian" && std::abs(c[0]) < tolerance)
+            face->set_boundary_id(12);
+          else if (shape != "lower half")
+            face->set_boundary_id(10);
+          else if (std::abs(c[dim - 1] - (radius + gap)) < tolerance)
             face->set_boundary_id(11);
           else if (dim == 3 && std::abs(c[0]) < tolerance)
             face->set_boundary_id(12);
@@ -102,7 +125,8 @@ namespace tribos
       make_indenter(indenter,
                     s.radius,
                     s.gap,
-                    s.indenter_refinements + p.refinement);
+                    s.indenter_refinements + p.refinement,
+                    s.indenter_shape);
       if (s.with_block)
         merge_bodies<dim>({&block, &indenter}, tria);
       else

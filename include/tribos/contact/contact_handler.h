@@ -106,6 +106,26 @@ namespace tribos
              TrilinosWrappers::MPI::Vector   &full_residual,
              TrilinosWrappers::MPI::Vector   &contact_forces);
 
+    /**
+     * The weight of the contact forces and tangent in @p rhs, @p matrix
+     * and @p free_residual (not in @p full_residual and @p contact_forces):
+     * 1 - alpha_f of a generalized-alpha step, 1 otherwise.
+     */
+    void
+    set_force_weight(const double weight)
+    {
+      force_weight = weight;
+    }
+
+    /**
+     * The energy the friction law dissipated in the increment of the last
+     * evaluation: the sum over the slave nodes of |T| times the slip
+     * increment times the tributary area (the return mapping's
+     * dissipation). Collective.
+     */
+    double
+    frictional_dissipation() const;
+
     /** Start an increment (the chattering monitor). */
     void
     begin_increment();
@@ -175,6 +195,7 @@ namespace tribos
     Pairing<dim>                  pairing;
     ChatteringMonitor<dim>        monitor;
     IndexSet                      all_contact_dofs;
+    double                        force_weight           = 1;
     types::global_dof_index       n_enforcement_unknowns = 0;
     /** Unknowns below this number are displacements. */
     types::global_dof_index n_displacement_dofs;

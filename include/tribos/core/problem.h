@@ -8,6 +8,7 @@
 #include <tribos/postprocess/csv_writer.h>
 #include <tribos/solver/load_stepper.h>
 #include <tribos/solver/nonlinear_problem.h>
+#include <tribos/solver/time_integrator.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
@@ -17,7 +18,9 @@
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -216,6 +219,33 @@ namespace tribos
     std::vector<std::vector<double>>
     rigid_body_modes() const;
 
+    /* dynamics.cc */
+    /** Dynamics: the integrator, the state vectors, the densities, the
+     * massless contact dofs, the initial velocity and acceleration. */
+    void
+    setup_dynamics();
+    /**
+     * The mass matrix of @p cell (ring factor included) into @p mass, at
+     * the @p fe_values reinitialized on it: consistent, or lumped (row sums)
+     * with the mass of the massless dofs moved to the cell's others.
+     */
+    void
+    cell_mass_matrix(const FEValues<dim>                        &fe_values,
+                     const std::vector<types::global_dof_index> &dof_indices,
+                     const std::vector<unsigned int>            &component,
+                     const double                                density,
+                     FullMatrix<double>                         &mass) const;
+    /** M a_0 = f_ext - f_int - f_contact at t = 0 (if that is not zero). */
+    void
+    compute_initial_acceleration();
+    /** The end-of-step velocity and acceleration, the old forces and the
+     * energies of a converged increment. */
+    void
+    commit_dynamics();
+    /** Kinetic and stored strain energy of the converged state. */
+    std::pair<double, double>
+    energies() const;
+
     /* output.cc */
     void
     open_output();
@@ -359,6 +389,38 @@ namespace tribos
     std::unique_ptr<CsvWriter>                  history_csv;
     std::unique_ptr<CsvWriter>                  convergence_csv;
     std::vector<std::pair<double, std::string>> pvd_records;
+
+    /**
+     * Dynamics (null integrator: quasi-static). Velocity and acceleration of
+     * the displacement dofs at the last converged time, the displacement
+     * there (ghosted), and the static forces R = f_int - f_contact - f_ext
+     * there (the alpha_f part of the generalized-alpha balance).
+     */
+    std::unique_ptr<TimeIntegrator> integrator;
+    /** Assemble the inertia terms (false while computing a_0). */
+    bool   with_inertia   = true;
+    double committed_time = 0;
+    Vector velocity, acceleration;
+    Vector ghosted_velocity, ghosted_acceleration, ghosted_start;
+    Vector old_forces;
+    /** M a_{n+1} of the last assembly (unconstrained): part of the
+     * reactions and of the force scale. */
+    Vector inertia_forces;
+    /** The contact and external (applied plus Dirichlet reaction) forces
+     * at the last converged time, for the trapezoidal work sums. */
+    Vector old_contact_forces, old_external;
+    /** Density per body id. */
+    std::vector<double> densities;
+    /** Dofs whose lumped mass is moved away (Contact mass removal). */
+    IndexSet massless_dofs;
+    /** Dofs with a Dirichlet condition (their reactions do work). */
+    IndexSet dirichlet_dofs;
+    /** Energies of the last converged state: kinetic, stored, the work
+     * absorbed by contact, the friction dissipation and the work of the
+     * applied loads and Dirichlet reactions (sums since t = 0), and the
+     * initial kinetic plus stored energy. */
+    double kinetic_energy = 0, strain_energy = 0, contact_work = 0,
+           friction_work = 0, external_work = 0, initial_energy = 0;
 
     /** The solvers (built by run()). */
     std::unique_ptr<LinearSolver> linear_solver;

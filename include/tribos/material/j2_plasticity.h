@@ -67,6 +67,9 @@ namespace tribos
     SymmetricTensor<2, 3>
     cauchy_stress(const Tensor<2, dim> &F,
                   const double         *history) const override;
+    double
+    stored_energy(const Tensor<2, dim> &F,
+                  const double         *history) const override;
 
     double
     equivalent_plastic_strain(const double *history) const override

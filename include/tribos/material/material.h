@@ -74,6 +74,14 @@ namespace tribos
       return 0;
     }
 
+    /**
+     * The elastic energy stored per reference volume at @p F with the
+     * converged @p history (plasticity: the elastic part only), for the
+     * energy balance of dynamic runs.
+     */
+    virtual double
+    stored_energy(const Tensor<2, dim> &F, const double *history) const = 0;
+
     /** Young's modulus, used to scale penalty parameters. */
     virtual double
     youngs_modulus() const = 0;

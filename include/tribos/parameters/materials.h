@@ -25,6 +25,8 @@ namespace tribos
       std::vector<double>      saturation_yield_stresses;
       std::vector<double>      hardening_exponents;
       std::vector<double>      linear_hardening_moduli;
+      /** Mass per reference volume (dynamics only). */
+      std::vector<double> densities;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -58,8 +58,10 @@ namespace tribos
       std::vector<unsigned int> block_subdivisions;
       unsigned int              indenter_refinements;
       bool                      with_block;
-      unsigned int              contact_refinements;
-      double                    refinement_radius;
+      /** "lower half", "whole" or "meridian". */
+      std::string  indenter_shape;
+      unsigned int contact_refinements;
+      double       refinement_radius;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -10,7 +10,37 @@ namespace tribos
 {
   namespace Parameters
   {
-    /** Subsection `Time stepping`: pseudo-time, load steps and cutbacks. */
+    /** How time enters the equations (Time stepping/Integrator). */
+    enum class Integrator
+    {
+      /** Quasi-static: time is a load parameter, no inertia. */
+      quasi_static,
+      /** Newmark's family with the given beta and gamma. */
+      newmark,
+      /** Chung-Hulbert generalized-alpha from the spectral radius. */
+      generalized_alpha
+    };
+
+    /** The mass matrix of the dynamic integrators. */
+    enum class MassMatrix
+    {
+      consistent,
+      /** Row sums of the consistent one. */
+      lumped
+    };
+
+    /** One initial velocity: body (material) id and its expressions. */
+    struct InitialVelocity
+    {
+      unsigned int             body_id;
+      std::vector<std::string> expressions;
+    };
+
+    /**
+     * Subsection `Time stepping`: (pseudo-)time, load steps, cutbacks and,
+     * for dynamics, the time integrator, the mass matrix and the initial
+     * velocities.
+     */
     struct TimeStepping
     {
       double       end_time;
@@ -19,6 +49,27 @@ namespace tribos
       double       growth_factor;
       unsigned int easy_iterations;
       unsigned int growth_after;
+
+      Integrator integrator;
+      double     newmark_beta;
+      double     newmark_gamma;
+      double     spectral_radius;
+      MassMatrix mass_matrix;
+      /** Lumped mass moved off the contact surfaces' nodes to the other
+       * nodes of their cells (Khenous, Laborde, Renard 2008). */
+      bool                         contact_mass_removal;
+      std::vector<InitialVelocity> initial_velocities;
+
+      /** Newmark or generalized-alpha. */
+      bool
+      dynamic() const
+      {
+        return integrator != Integrator::quasi_static;
+      }
+
+      /** Check the initial velocities against the dimension. */
+      void
+      check(const unsigned int dim) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

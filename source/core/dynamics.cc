@@ -1,0 +1,420 @@
+/**
+ * Implicit dynamics: the mass matrix, the initial state, and the update of
+ * the velocity, acceleration and energies at every converged increment.
+ * The inertia terms of the residual and tangent are added per cell in
+ * assembly.cc.
+ */
+
+#include <tribos/core/f_bar.h>
+#include <tribos/core/problem.h>
+#include <tribos/core/vector_function.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+
+#include <cmath>
+
+namespace tribos
+{
+  template <int dim>
+  void
+  Problem<dim>::setup_dynamics()
+  {
+    const auto &ts = parameters.time_stepping;
+    if (!ts.dynamic())
+      return;
+    integrator = std::make_unique<TimeIntegrator>(ts);
+
+    densities.clear();
+    for (unsigned int body = 0; body < materials.size(); ++body)
+      densities.push_back(
+        Parameters::Materials::for_body(parameters.materials.densities,
+                                        body,
+                                        "Density"));
+
+    for (Vector *v : {&velocity,
+                      &acceleration,
+                      &old_forces,
+                      &old_contact_forces,
+                      &old_external})
+      v->reinit(locally_owned_dofs, mpi_communicator);
+    for (Vector *v : {&ghosted_velocity, &ghosted_acceleration, &ghosted_start})
+      v->reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    inertia_forces.reinit(system_owned, mpi_communicator);
+
+    massless_dofs = IndexSet(dof_handler.n_dofs());
+    if (ts.contact_mass_removal && contact)
+      massless_dofs = contact->contact_dofs();
+    dirichlet_dofs = IndexSet(dof_handler.n_dofs());
+    for (const auto &per_component : reaction_dofs)
+      for (const auto &dofs : per_component)
+        dirichlet_dofs.add_indices(dofs);
+    dirichlet_dofs.compress();
+
+    if (!ts.initial_velocities.empty())
+    {
+      std::map<types::global_dof_index, Point<dim>> points;
+      DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                           dof_handler,
+                                           points);
+      std::map<types::material_id, std::unique_ptr<FunctionParser<dim>>>
+        functions;
+      for (const auto &v : ts.initial_velocities)
+      {
+        AssertThrow(v.body_id < materials.size() &&
+                      std::count(dof_body.begin(), dof_body.end(), v.body_id) >
+                        0,
+                    ExcMessage("Parameter <Time stepping/Initial velocity> "
+                               "names body " +
+                               std::to_string(v.body_id) +
+                               ", but the mesh has no cells with that "
+                               "material id."));
+        functions[v.body_id] =
+          make_vector_function<dim>(v.expressions,
+                                    "Time stepping/Initial velocity");
+      }
+      for (const auto dof : locally_owned_dofs)
+      {
+        const auto it = functions.find(dof_body[dof]);
+        if (it != functions.end())
+          velocity[dof] = it->second->value(points.at(dof), dof_component[dof]);
+      }
+      velocity.compress(VectorOperation::insert);
+      // Hanging nodes follow their parents; fixed dofs stay at rest.
+      homogeneous_constraints.distribute(velocity);
+    }
+    ghosted_velocity = velocity;
+    ghosted_start    = ghosted_displacement();
+    compute_initial_acceleration();
+    if (contact)
+      contact->set_force_weight(integrator->force_weight());
+    const auto [kinetic, stored] = energies();
+    kinetic_energy               = kinetic;
+    strain_energy                = stored;
+    initial_energy               = kinetic + stored;
+    pcout << "  dynamics: "
+          << (ts.integrator == Parameters::Integrator::newmark ?
+                "Newmark" :
+                "generalized-alpha (rho_inf = " +
+                  std::to_string(ts.spectral_radius) + ")")
+          << ", beta = " << integrator->beta()
+          << ", gamma = " << integrator->gamma()
+          << ", alpha_m = " << integrator->alpha_m()
+          << ", alpha_f = " << integrator->alpha_f() << ", "
+          << (ts.mass_matrix == Parameters::MassMatrix::lumped ? "lumped" :
+                                                                 "consistent")
+          << " mass"
+          << (massless_dofs.n_elements() > 0 ?
+                ", none on " + std::to_string(massless_dofs.n_elements()) +
+                  " contact dofs" :
+                std::string())
+          << "; initial kinetic energy " << kinetic << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::cell_mass_matrix(
+    const FEValues<dim>                        &fe_values,
+    const std::vector<types::global_dof_index> &dof_indices,
+    const std::vector<unsigned int>            &component,
+    const double                                density,
+    FullMatrix<double>                         &mass) const
+  {
+    const unsigned int n = dof_indices.size();
+    mass.reinit(n, n);
+    const bool axisymmetric = parameters.finite_element.axisymmetric;
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+    {
+      const double weight =
+        density * fe_values.JxW(q) *
+        (axisymmetric ? 2. * numbers::PI * fe_values.quadrature_point(q)[0] :
+                        1.);
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const double phi_i = fe_values.shape_value(i, q) * weight;
+        for (unsigned int j = 0; j < n; ++j)
+          if (component[i] == component[j])
+            mass(i, j) += phi_i * fe_values.shape_value(j, q);
+      }
+    }
+    if (parameters.time_stepping.mass_matrix != Parameters::MassMatrix::lumped)
+      return;
+
+    std::vector<double> lumped(n, 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        lumped[i] += mass(i, j);
+    if (massless_dofs.n_elements() > 0)
+      for (unsigned int c = 0; c < dim; ++c)
+      {
+        // Move the mass of the cell's contact nodes to its other nodes,
+        // proportionally: the cell's mass, and so the body's, is kept.
+        double removed = 0, kept = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          if (component[i] == c)
+            (massless_dofs.is_element(dof_indices[i]) ? removed : kept) +=
+              lumped[i];
+        if (removed == 0 || kept == 0)
+          continue;
+        for (unsigned int i = 0; i < n; ++i)
+          if (component[i] == c)
+            lumped[i] = massless_dofs.is_element(dof_indices[i]) ?
+                          0. :
+                          lumped[i] * (kept + removed) / kept;
+      }
+    mass = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      mass(i, i) = lumped[i];
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::compute_initial_acceleration()
+  {
+    // The static residual at t = 0 (no inertia): zero for a body that
+    // starts unloaded and out of contact, then a_0 = 0.
+    with_inertia = false;
+    assemble_system(false, homogeneous_constraints, 0.);
+    with_inertia = true;
+    acceleration = 0;
+    Vector force(locally_owned_dofs, mpi_communicator);
+    for (const auto i : locally_owned_dofs)
+    {
+      if (!massless_dofs.is_element(i))
+        force[i] = free_residual[i];
+      // The forces at t = 0 for the first step's alpha_f share and the
+      // work sums (no inertia yet: a reaction is the static residual).
+      old_forces[i]         = full_residual[i];
+      old_contact_forces[i] = contact ? contact_forces[i] : 0.;
+      old_external[i]       = external_forces[i] +
+                        (dirichlet_dofs.is_element(i) ? full_residual[i] : 0.);
+    }
+    for (Vector *v : {&force, &old_forces, &old_contact_forces, &old_external})
+      v->compress(VectorOperation::insert);
+    if (force.l2_norm() > stagnation_bound)
+    {
+      DynamicSparsityPattern dsp(locally_relevant_dofs);
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      dsp,
+                                      homogeneous_constraints,
+                                      false);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 locally_owned_dofs,
+                                                 mpi_communicator,
+                                                 locally_relevant_dofs);
+      TrilinosWrappers::SparseMatrix mass;
+      mass.reinit(locally_owned_dofs,
+                  locally_owned_dofs,
+                  dsp,
+                  mpi_communicator);
+      FEValues<dim>                        fe_values(*fe,
+                              quadrature,
+                              update_values | update_JxW_values |
+                                update_quadrature_points);
+      const unsigned int                   n = fe->n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(n);
+      std::vector<unsigned int>            component(n);
+      for (unsigned int i = 0; i < n; ++i)
+        component[i] = fe->system_to_component_index(i).first;
+      FullMatrix<double> cell_mass;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dof_indices);
+          cell_mass_matrix(fe_values,
+                           dof_indices,
+                           component,
+                           densities[cell->material_id()],
+                           cell_mass);
+          homogeneous_constraints.distribute_local_to_global(cell_mass,
+                                                             dof_indices,
+                                                             mass);
+        }
+      mass.compress(VectorOperation::add);
+      // The massless dofs' accelerations do not enter the balance: any
+      // value will do; 0 keeps the matrix regular.
+      for (const auto i : massless_dofs)
+        if (locally_owned_dofs.is_element(i) &&
+            !homogeneous_constraints.is_constrained(i))
+          mass.set(i, i, 1.);
+      mass.compress(VectorOperation::insert);
+
+      SolverControl control(10 * dof_handler.n_dofs(), 1e-12 * force.l2_norm());
+      SolverCG<Vector>                     cg(control);
+      TrilinosWrappers::PreconditionJacobi jacobi;
+      jacobi.initialize(mass);
+      cg.solve(mass, acceleration, force, jacobi);
+      homogeneous_constraints.distribute(acceleration);
+      pcout << "  dynamics: initial acceleration from the loads at t = 0 ("
+            << control.last_step() << " CG iterations)" << std::endl;
+    }
+    ghosted_acceleration = acceleration;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::commit_dynamics()
+  {
+    const Vector &u        = ghosted_displacement();
+    double        works[2] = {0, 0};
+    Vector        external(locally_owned_dofs, mpi_communicator);
+    for (const auto i : locally_owned_dofs)
+    {
+      const double du    = u[i] - ghosted_start[i];
+      const double a_old = ghosted_acceleration[i], v_old = ghosted_velocity[i];
+      const double a_new = integrator->acceleration(du, v_old, a_old);
+      acceleration[i]    = a_new;
+      velocity[i]        = integrator->velocity(v_old, a_old, a_new);
+      // The applied loads and, on Dirichlet dofs, the reactions
+      // f_int - f_contact - f_ext + M a.
+      external[i] = external_forces[i];
+      if (dirichlet_dofs.is_element(i))
+        external[i] += full_residual[i] + inertia_forces[i];
+      // Trapezoidal sums: the work the contact forces take from the bodies
+      // and the work the loads and supports give them.
+      works[0] -= 0.5 * (old_contact_forces[i] + contact_forces[i]) * du;
+      works[1] += 0.5 * (old_external[i] + external[i]) * du;
+      old_forces[i]         = full_residual[i];
+      old_contact_forces[i] = contact_forces[i];
+    }
+    for (Vector *v : {&acceleration,
+                      &velocity,
+                      &old_forces,
+                      &old_contact_forces,
+                      &external})
+      v->compress(VectorOperation::insert);
+    old_external = external;
+    contact_work += Utilities::MPI::sum(works[0], mpi_communicator);
+    external_work += Utilities::MPI::sum(works[1], mpi_communicator);
+    if (contact)
+      friction_work += contact->frictional_dissipation();
+
+    ghosted_velocity             = velocity;
+    ghosted_acceleration         = acceleration;
+    ghosted_start                = u;
+    committed_time               = time;
+    const auto [kinetic, stored] = energies();
+    kinetic_energy               = kinetic;
+    strain_energy                = stored;
+  }
+
+
+
+  template <int dim>
+  std::pair<double, double>
+  Problem<dim>::energies() const
+  {
+    const bool         axisymmetric = parameters.finite_element.axisymmetric;
+    const bool         f_bar        = parameters.finite_element.f_bar;
+    const Vector      &u            = ghosted_displacement();
+    FEValues<dim>      fe_values(*fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values | update_quadrature_points);
+    FEValues<dim>      fe_centre(*fe,
+                            QGauss<dim>(1),
+                            update_values | update_gradients |
+                              update_quadrature_points);
+    const unsigned int n   = fe->n_dofs_per_cell();
+    const unsigned int n_q = quadrature.size();
+    std::vector<types::global_dof_index>     dof_indices(n);
+    std::vector<unsigned int>                component(n);
+    std::vector<std::vector<Tensor<1, dim>>> gradients(
+      n_q,
+      std::vector<Tensor<1, dim>>(dim));
+    std::vector<dealii::Vector<double>>      values(n_q,
+                                               dealii::Vector<double>(dim));
+    std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
+      1,
+      std::vector<Tensor<1, dim>>(dim));
+    std::vector<dealii::Vector<double>> centre_values(1,
+                                                      dealii::Vector<double>(
+                                                        dim));
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe->system_to_component_index(i).first;
+    FullMatrix<double> cell_mass;
+    double             kinetic = 0, stored = 0;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      if (!cell->is_locally_owned())
+        continue;
+      fe_values.reinit(cell);
+      cell->get_dof_indices(dof_indices);
+      cell_mass_matrix(fe_values,
+                       dof_indices,
+                       component,
+                       densities[cell->material_id()],
+                       cell_mass);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          kinetic += 0.5 * ghosted_velocity[dof_indices[i]] * cell_mass(i, j) *
+                     ghosted_velocity[dof_indices[j]];
+
+      // The stored energy at the deformation gradient the stress sees (the
+      // F-bar one where F-bar is on).
+      fe_values.get_function_gradients(u, gradients);
+      fe_values.get_function_values(u, values);
+      double J0 = 1;
+      if (f_bar)
+      {
+        fe_centre.reinit(cell);
+        fe_centre.get_function_gradients(u, centre_gradients);
+        fe_centre.get_function_values(u, centre_values);
+        Tensor<2, dim> F0 = unit_symmetric_tensor<dim>();
+        for (unsigned int c = 0; c < dim; ++c)
+          F0[c] += centre_gradients[0][c];
+        J0 = determinant(F0);
+        if (axisymmetric)
+          J0 *= 1. + centre_values[0](0) / fe_centre.quadrature_point(0)[0];
+      }
+      const unsigned int n_history = n_history_variables(cell->material_id());
+      const unsigned int offset    = history_offset[cell->active_cell_index()];
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+        for (unsigned int c = 0; c < dim; ++c)
+          F[c] += gradients[q][c];
+        const double *history =
+          n_history ? &history_old[offset + q * n_history] : nullptr;
+        if (axisymmetric)
+        {
+          const double radius = fe_values.quadrature_point(q)[0];
+          Tensor<2, 3> F3;
+          for (unsigned int a = 0; a < 2; ++a)
+            for (unsigned int b = 0; b < 2; ++b)
+              F3[a][b] = F[a][b];
+          F3[2][2]       = 1. + values[q](0) / radius;
+          const double s = f_bar ? FBar<3>::scale(F3, J0) : 1.;
+          stored += axisymmetric_materials[cell->material_id()]
+                      ->stored_energy(s * F3, history) *
+                    fe_values.JxW(q) * 2. * numbers::PI * radius;
+        }
+        else
+        {
+          const double s = f_bar ? FBar<dim>::scale(F, J0) : 1.;
+          stored +=
+            materials[cell->material_id()]->stored_energy(s * F, history) *
+            fe_values.JxW(q);
+        }
+      }
+    }
+    return {Utilities::MPI::sum(kinetic, mpi_communicator),
+            Utilities::MPI::sum(stored, mpi_communicator)};
+  }
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos
