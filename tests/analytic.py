@@ -92,3 +92,23 @@ def neo_hookean_stress(stretch, E, nu, n_lateral):
         s -= f / df
     J = stretch * s ** n_lateral
     return mu * (stretch - 1 / stretch) + lam * math.log(J) / stretch
+
+
+def hertz_impact(mass, velocity, radius, e_star):
+    """Hertz's impact of a sphere on a half-space (Johnson, Contact
+    Mechanics, 11.4): the largest approach delta = (15 m v^2 / (16 E*
+    R^1/2))^(2/5), the peak force 4/3 E* R^1/2 delta^3/2 and the contact
+    time 2 delta / v int_0^1 (1 - x^5/2)^(-1/2) dx = 2.9432 delta / v (the
+    integral is 2/5 B(2/5, 1/2)). Returns (delta, peak force, time)."""
+    delta = (15 * mass * velocity ** 2 /
+             (16 * e_star * math.sqrt(radius))) ** 0.4
+    force = 4.0 / 3.0 * e_star * math.sqrt(radius) * delta ** 1.5
+    integral = 0.4 * math.gamma(0.4) * math.gamma(0.5) / math.gamma(0.9)
+    return delta, force, 2 * integral * delta / velocity
+
+
+def signorini_bar(length, wave_speed, velocity, density, area):
+    """An elastic bar hitting a rigid wall at `velocity` (1D waves): the
+    contact lasts 2 L / c with the force rho c v A, and the bar leaves with
+    the velocity reversed. Returns (duration, force)."""
+    return 2 * length / wave_speed, density * wave_speed * velocity * area

@@ -92,4 +92,24 @@ expect contact_lagrange_reverse_pair "are the same interface with slave and mast
   --set "Contact/Method=lagrange multiplier"
 expect contact_slave_is_master "both slave and master" "$tribos" \
   "$tests/ironing_2d.prm" --set "Contact/Pairs=10, 3 : 3"
+# Dynamics.
+expect dynamics_no_density "Materials/Density" "$tribos" "$good" \
+  --set "Time stepping/Integrator=newmark"
+expect dynamics_velocity_static "has no velocities" "$tribos" "$good" \
+  --set "Materials/Density=1" --set "Time stepping/Initial velocity=0 : 1, 0"
+expect dynamics_velocity_components "Initial velocity" "$tribos" "$good" \
+  --set "Materials/Density=1" --set "Time stepping/Integrator=newmark" \
+  --set "Time stepping/Initial velocity=0 : 1"
+expect dynamics_velocity_body "names body 7" "$tribos" "$good" \
+  --set "Materials/Density=1" --set "Time stepping/Integrator=newmark" \
+  --set "Time stepping/Initial velocity=7 : 1, 0"
+expect dynamics_mass_removal_consistent "Mass matrix" "$tribos" "$good" \
+  --set "Materials/Density=1" --set "Time stepping/Integrator=newmark" \
+  --set "Time stepping/Contact mass removal=true"
+expect dynamics_beta "Newmark beta" "$tribos" "$good" \
+  --set "Materials/Density=1" --set "Time stepping/Integrator=newmark" \
+  --set "Time stepping/Newmark beta=0"
+expect meridian_3d "Indenter shape" "$tribos" "$tests/cylinder_3d.prm" \
+  --set "Scene/Name=cylinder over block" \
+  --set "Scene/Cylinder over block/Indenter shape=meridian"
 exit $failed

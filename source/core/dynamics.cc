@@ -50,6 +50,12 @@ namespace tribos
     massless_dofs = IndexSet(dof_handler.n_dofs());
     if (ts.contact_mass_removal && contact)
       massless_dofs = contact->contact_dofs();
+    if (contact && !ts.contact_mass_removal)
+      warn("dynamics with contact and mass on the contact nodes: each impact "
+           "makes the contact force oscillate and creates or destroys "
+           "energy (the Signorini bar gains a factor 6-11, doc/dynamics.md); "
+           "Time stepping/Mass matrix = lumped with Contact mass removal = "
+           "true removes both.");
     dirichlet_dofs = IndexSet(dof_handler.n_dofs());
     for (const auto &per_component : reaction_dofs)
       for (const auto &dofs : per_component)
@@ -93,10 +99,11 @@ namespace tribos
     compute_initial_acceleration();
     if (contact)
       contact->set_force_weight(integrator->force_weight());
-    const auto [kinetic, stored] = energies();
-    kinetic_energy               = kinetic;
-    strain_energy                = stored;
-    initial_energy               = kinetic + stored;
+    const Energies e = energies();
+    kinetic_energy   = e.kinetic;
+    strain_energy    = e.stored;
+    momentum         = e.momentum;
+    initial_energy   = e.kinetic + e.stored;
     pcout << "  dynamics: "
           << (ts.integrator == Parameters::Integrator::newmark ?
                 "Newmark" :
@@ -113,7 +120,7 @@ namespace tribos
                 ", none on " + std::to_string(massless_dofs.n_elements()) +
                   " contact dofs" :
                 std::string())
-          << "; initial kinetic energy " << kinetic << std::endl;
+          << "; initial kinetic energy " << e.kinetic << std::endl;
   }
 
 
@@ -301,19 +308,20 @@ namespace tribos
     if (contact)
       friction_work += contact->frictional_dissipation();
 
-    ghosted_velocity             = velocity;
-    ghosted_acceleration         = acceleration;
-    ghosted_start                = u;
-    committed_time               = time;
-    const auto [kinetic, stored] = energies();
-    kinetic_energy               = kinetic;
-    strain_energy                = stored;
+    ghosted_velocity     = velocity;
+    ghosted_acceleration = acceleration;
+    ghosted_start        = u;
+    committed_time       = time;
+    const Energies e     = energies();
+    kinetic_energy       = e.kinetic;
+    strain_energy        = e.stored;
+    momentum             = e.momentum;
   }
 
 
 
   template <int dim>
-  std::pair<double, double>
+  typename Problem<dim>::Energies
   Problem<dim>::energies() const
   {
     const bool         axisymmetric = parameters.finite_element.axisymmetric;
@@ -345,7 +353,7 @@ namespace tribos
     for (unsigned int i = 0; i < n; ++i)
       component[i] = fe->system_to_component_index(i).first;
     FullMatrix<double> cell_mass;
-    double             kinetic = 0, stored = 0;
+    Energies           e;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
     {
@@ -360,8 +368,11 @@ namespace tribos
                        cell_mass);
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int j = 0; j < n; ++j)
-          kinetic += 0.5 * ghosted_velocity[dof_indices[i]] * cell_mass(i, j) *
-                     ghosted_velocity[dof_indices[j]];
+        {
+          const double p = cell_mass(i, j) * ghosted_velocity[dof_indices[j]];
+          e.kinetic += 0.5 * ghosted_velocity[dof_indices[i]] * p;
+          e.momentum[component[i]] += p;
+        }
 
       // The stored energy at the deformation gradient the stress sees (the
       // F-bar one where F-bar is on).
@@ -398,21 +409,23 @@ namespace tribos
               F3[a][b] = F[a][b];
           F3[2][2]       = 1. + values[q](0) / radius;
           const double s = f_bar ? FBar<3>::scale(F3, J0) : 1.;
-          stored += axisymmetric_materials[cell->material_id()]
-                      ->stored_energy(s * F3, history) *
-                    fe_values.JxW(q) * 2. * numbers::PI * radius;
+          e.stored += axisymmetric_materials[cell->material_id()]
+                        ->stored_energy(s * F3, history) *
+                      fe_values.JxW(q) * 2. * numbers::PI * radius;
         }
         else
         {
           const double s = f_bar ? FBar<dim>::scale(F, J0) : 1.;
-          stored +=
+          e.stored +=
             materials[cell->material_id()]->stored_energy(s * F, history) *
             fe_values.JxW(q);
         }
       }
     }
-    return {Utilities::MPI::sum(kinetic, mpi_communicator),
-            Utilities::MPI::sum(stored, mpi_communicator)};
+    e.kinetic  = Utilities::MPI::sum(e.kinetic, mpi_communicator);
+    e.stored   = Utilities::MPI::sum(e.stored, mpi_communicator);
+    e.momentum = Utilities::MPI::sum(e.momentum, mpi_communicator);
+    return e;
   }
 
   template class Problem<2>;

@@ -120,6 +120,9 @@ namespace tribos
                                "total_energy",
                                "energy_error"})
         columns.push_back(name);
+    if (integrator)
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back(std::string("momentum_") + "xyz"[d]);
     if (parameters.nonlinear_solver.stabilization > 0)
     {
       columns.push_back("stabilization_force");
@@ -237,18 +240,20 @@ namespace tribos
     }
     if (integrator)
     {
-      // energy_error: what the integrator (and an impact) created or lost,
-      // E_kin + E_strain + W_contact - W_external - E_0.
-      const double total = kinetic_energy + strain_energy;
-      for (const double value :
-           {kinetic_energy,
-            strain_energy,
-            contact_work,
-            friction_work,
-            external_work,
-            total,
-            total + contact_work - external_work - initial_energy})
+      // total_energy: the bodies' energy plus what the contact took (the
+      // penalty springs' energy, friction, impact losses); energy_error:
+      // what the integrator created or lost, total - W_external - E_0.
+      const double total = kinetic_energy + strain_energy + contact_work;
+      for (const double value : {kinetic_energy,
+                                 strain_energy,
+                                 contact_work,
+                                 friction_work,
+                                 external_work,
+                                 total,
+                                 total - external_work - initial_energy})
         row.push_back(value);
+      for (unsigned int d = 0; d < dim; ++d)
+        row.push_back(momentum[d]);
     }
     if (parameters.nonlinear_solver.stabilization > 0)
     {

@@ -242,8 +242,14 @@ namespace tribos
      * energies of a converged increment. */
     void
     commit_dynamics();
-    /** Kinetic and stored strain energy of the converged state. */
-    std::pair<double, double>
+    /** Kinetic and stored strain energy and the linear momentum of the
+     * converged state. */
+    struct Energies
+    {
+      double         kinetic = 0, stored = 0;
+      Tensor<1, dim> momentum;
+    };
+    Energies
     energies() const;
 
     /* output.cc */
@@ -419,7 +425,8 @@ namespace tribos
      * absorbed by contact, the friction dissipation and the work of the
      * applied loads and Dirichlet reactions (sums since t = 0), and the
      * initial kinetic plus stored energy. */
-    double kinetic_energy = 0, strain_energy = 0, contact_work = 0,
+    Tensor<1, dim> momentum;
+    double         kinetic_energy = 0, strain_energy = 0, contact_work = 0,
            friction_work = 0, external_work = 0, initial_energy = 0;
 
     /** The solvers (built by run()). */

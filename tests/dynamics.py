@@ -1,0 +1,125 @@
+"""Implicit dynamics with contact against analytic solutions (issue 19).
+
+Cases (argv[4]):
+  bar_<method>   the Signorini bar (parameters/bar_impact.prm) with the
+                 enforcement <method>, Newmark and generalized-alpha: contact
+                 duration 2L/c within 2 %, force plateau rho c v A within 5 %
+                 (its oscillation below 5 %), rebound velocity within 2 %,
+                 energy after the rebound within 1 % of the initial.
+  sphere         Hertzian impact (parameters/sphere_impact.prm): peak force
+                 and contact time within 3 % of Hertz's impact theory;
+                 energy after the rebound within 1 %.
+  slide          a block sliding to a stop under friction
+                 (parameters/block_slide_stop.prm): the energy lost equals
+                 the friction law's dissipation within 1 %; stopping
+                 distance v0^2 / (2 mu g) within 2 %.
+  quasi_static   the axisymmetric J2 cylinder loaded slowly (wave transit
+                 1e-4 of the loading time): the dynamic plate force equals
+                 the quasi-static one within 0.1 % at every step.
+"""
+
+import analytic
+import os
+import sys
+import tribos_test as tt
+
+tribos, tests, out = tt.setup(sys.argv)
+case = sys.argv[4]
+parameters = os.path.join(tests, "..", "parameters")
+failures = []
+
+
+def check(name, value, reference, bound):
+    error = abs(value / reference - 1)
+    status = "ok" if error <= bound else "FAILED"
+    print("%-6s %-44s %.6g vs %.6g: error %.2e (bound %.0e)"
+          % (status, name, value, reference, error, bound))
+    if error > bound:
+        failures.append(name)
+
+
+def contact_span(rows):
+    active = [r["time"] for r in rows if r["n_active"] > 0]
+    return active[0], active[-1]
+
+
+if case.startswith("bar_"):
+    method = case[4:].replace("_", " ")
+    duration, force = analytic.signorini_bar(1, 1, 0.01, 1, 0.05)
+    for integrator in ("newmark", "generalized alpha"):
+        folder = os.path.join(out, integrator.replace(" ", "_"))
+        tt.run(tribos, os.path.join(parameters, "bar_impact.prm"), folder,
+               ["Contact/Method=" + method,
+                "Time stepping/Integrator=" + integrator])
+        rows = tt.read_csv(folder + "/history.csv")
+        first, last = contact_span(rows)
+        check(integrator + ": contact duration", last - first, duration,
+              0.02)
+        plateau = [r["pair0_normal_force"] for r in rows
+                   if first + 0.25 <= r["time"] <= last - 0.25]
+        mean = sum(plateau) / len(plateau)
+        spread = max(abs(f - mean) for f in plateau)
+        check(integrator + ": force plateau", mean, force, 0.05)
+        check(integrator + ": force oscillation / plateau",
+              1 + spread / mean, 1, 0.05)
+        # The bar's mean velocity: momentum over mass (rho L A = 0.05).
+        check(integrator + ": rebound velocity",
+              rows[-1]["momentum_x"] / 0.05, 0.01, 0.02)
+        initial = rows[0]["kinetic_energy"] + rows[0]["strain_energy"]
+        check(integrator + ": energy after the rebound",
+              rows[-1]["kinetic_energy"] + rows[-1]["strain_energy"], initial,
+              0.01)
+
+elif case == "sphere":
+    tt.run(tribos, os.path.join(parameters, "sphere_impact.prm"), out)
+    rows = tt.read_csv(out + "/history.csv")
+    v = 1e-4
+    # The mass of the discrete sphere (its polygonal section is a little
+    # smaller than the disc) from its kinetic energy before the impact.
+    mass = 2 * rows[0]["kinetic_energy"] / v ** 2
+    delta, force, time = analytic.hertz_impact(mass, v, 1, 1 / (1 - 0.09))
+    first, last = contact_span(rows)
+    dt = rows[1]["time"] - rows[0]["time"]
+    check("contact time", last - first + dt, time, 0.03)
+    check("peak force", max(r["pair0_normal_force"] for r in rows), force,
+          0.03)
+    check("energy after the rebound",
+          rows[-1]["kinetic_energy"] + rows[-1]["strain_energy"],
+          rows[0]["kinetic_energy"] + rows[0]["strain_energy"], 0.01)
+
+elif case == "slide":
+    tt.run(tribos, os.path.join(parameters, "block_slide_stop.prm"), out)
+    rows = tt.read_csv(out + "/history.csv")
+    mu, g, v0, mass = 0.3, 1.0, 0.3, 0.25
+    initial = 0.5 * mass * v0 ** 2
+    end = rows[-1]
+    lost = initial + end["external_work"] - end["kinetic_energy"] - \
+        end["strain_energy"]
+    check("energy lost vs friction dissipation", lost, end["friction_work"],
+          0.01)
+    check("stopping distance", end["probe0_ux"], v0 ** 2 / (2 * mu * g),
+          0.02)
+    check("kinetic energy left / initial", 1 + end["kinetic_energy"] /
+          initial, 1, 0.01)
+
+elif case == "quasi_static":
+    prm = os.path.join(parameters, "cylinder_compression_axisymmetric.prm")
+    common = ["Output/Write VTU=false", "Materials/Density=7.8e-6"]
+    tt.run(tribos, prm, out + "/static", common)
+    tt.run(tribos, prm, out + "/newmark",
+           common + ["Time stepping/Integrator=newmark"])
+    static = tt.read_csv(out + "/static/history.csv")
+    dynamic = tt.read_csv(out + "/newmark/history.csv")
+    assert len(static) == len(dynamic) and len(static) > 10
+    worst = max(abs(d["pair0_normal_force"] / s["pair0_normal_force"] - 1)
+                for s, d in zip(static, dynamic)
+                if s["pair0_normal_force"] > 0)
+    check("largest relative force difference (+1)", 1 + worst, 1, 1e-3)
+    check("final force", dynamic[-1]["pair0_normal_force"],
+          static[-1]["pair0_normal_force"], 1e-3)
+
+else:
+    raise SystemExit("unknown case " + case)
+
+if failures:
+    raise SystemExit("FAILED: " + ", ".join(failures))
