@@ -424,6 +424,11 @@ namespace tribos
                              std::vector<std::string>(dim, "displacement"),
                              DataOut<dim>::type_dof_data,
                              interpretation);
+    if (integrator)
+      data_out.add_data_vector(ghosted_velocity,
+                               std::vector<std::string>(dim, "velocity"),
+                               DataOut<dim>::type_dof_data,
+                               interpretation);
     for (unsigned int s = 0; s < n_stress; ++s)
       data_out.add_data_vector(stress[s], stress_names[s]);
     data_out.add_data_vector(von_mises, "von_mises");
