@@ -13,12 +13,18 @@ Cases (argv[4]):
                  (parameters/block_slide_stop.prm): the energy lost equals
                  the friction law's dissipation within 1 %; stopping
                  distance v0^2 / (2 mu g) within 2 %.
+  order          a bar vibrating in its first mode (tests/vibrating_bar.prm):
+                 the tip displacement at t = 3 against a run with 4800
+                 steps converges at order >= 1.8 with Newmark's average
+                 acceleration rule and generalized-alpha, at order 1 (0.8
+                 to 1.2) with Newmark gamma = 0.6.
   quasi_static   the axisymmetric J2 cylinder loaded slowly (wave transit
                  1e-4 of the loading time): the dynamic plate force equals
                  the quasi-static one within 0.1 % at every step.
 """
 
 import analytic
+import math
 import os
 import sys
 import tribos_test as tt
@@ -117,6 +123,32 @@ elif case == "quasi_static":
     check("largest relative force difference (+1)", 1 + worst, 1, 1e-3)
     check("final force", dynamic[-1]["pair0_normal_force"],
           static[-1]["pair0_normal_force"], 1e-3)
+
+elif case == "order":
+    prm = os.path.join(tests, "vibrating_bar.prm")
+    variants = {"newmark": (["Time stepping/Integrator=newmark"], 1.8, 3),
+                "generalized alpha": (
+                    ["Time stepping/Integrator=generalized alpha"], 1.8, 3),
+                "newmark gamma 0.6": (
+                    ["Time stepping/Integrator=newmark",
+                     "Time stepping/Newmark gamma=0.6",
+                     "Time stepping/Newmark beta=0.3025"], 0.8, 1.2)}
+    for name, (sets, low, high) in variants.items():
+        tip = {}
+        for n in (4800, 120, 240, 480):
+            folder = os.path.join(out, name.replace(" ", "_") + "_%d" % n)
+            tt.run(tribos, prm, folder,
+                   sets + ["Time stepping/Number of steps=%d" % n])
+            tip[n] = tt.read_csv(folder + "/history.csv")[-1]["probe0_ux"]
+        errors = [abs(tip[n] - tip[4800]) for n in (120, 240, 480)]
+        for coarse, fine in zip(errors, errors[1:]):
+            order = math.log2(coarse / fine)
+            ok = low <= order <= high
+            print("%-6s %-20s errors %.3e -> %.3e: order %.2f (in [%g, %g])"
+                  % ("ok" if ok else "FAILED", name, coarse, fine, order,
+                     low, high))
+            if not ok:
+                failures.append(name + " order")
 
 else:
     raise SystemExit("unknown case " + case)
