@@ -58,7 +58,7 @@ namespace tribos
       dealii::Vector<double>                   force;
       /** Dynamics: the cell's mass matrix and accelerations. */
       FullMatrix<double>  mass;
-      std::vector<double> mid_acceleration, end_acceleration;
+      std::vector<double> mid_acceleration, end_acceleration, mass_weight;
     };
 
 
@@ -444,15 +444,29 @@ namespace tribos
                          component,
                          densities[cell->material_id()],
                          mass);
+        auto &mass_weight = scratch.mass_weight;
         a_mid.resize(dofs_per_cell);
         a_end.resize(dofs_per_cell);
+        mass_weight.resize(dofs_per_cell);
         for (unsigned int j = 0; j < dofs_per_cell; ++j)
         {
           const types::global_dof_index dof = dof_indices[j];
           const double                  du  = u[dof] - ghosted_start[dof];
           const double v = ghosted_velocity[dof], a = ghosted_acceleration[dof];
-          a_mid[j] = integrator->mid_acceleration(du, v, a);
-          a_end[j] = integrator->acceleration(du, v, a);
+          if (dirichlet_dofs.is_element(dof))
+          {
+            // Prescribed motion: see TimeIntegrator::prescribed_acceleration.
+            a_end[j] = integrator->prescribed_acceleration(du, v);
+            a_mid[j] = (1. - integrator->alpha_m()) * a_end[j] +
+                       integrator->alpha_m() * a;
+            mass_weight[j] = integrator->prescribed_mass_weight();
+          }
+          else
+          {
+            a_mid[j]       = integrator->mid_acceleration(du, v, a);
+            a_end[j]       = integrator->acceleration(du, v, a);
+            mass_weight[j] = m;
+          }
         }
         cell_rhs *= w;
         if (with_matrix)
@@ -465,7 +479,7 @@ namespace tribos
             inertia_mid += mass(i, j) * a_mid[j];
             inertia_end += mass(i, j) * a_end[j];
             if (with_matrix)
-              cell_matrix(i, j) += m * mass(i, j);
+              cell_matrix(i, j) += mass_weight[j] * mass(i, j);
           }
           cell_rhs(i) -= inertia_mid;
           copy.cell_inertia(i) = inertia_end;

@@ -41,7 +41,8 @@ namespace tribos
                       &acceleration,
                       &old_forces,
                       &old_contact_forces,
-                      &old_external})
+                      &old_external,
+                      &old_internal})
       v->reinit(locally_owned_dofs, mpi_communicator);
     for (Vector *v : {&ghosted_velocity, &ghosted_acceleration, &ghosted_start})
       v->reinit(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
@@ -56,11 +57,49 @@ namespace tribos
            "energy (the Signorini bar gains a factor 6-11, doc/dynamics.md); "
            "Time stepping/Mass matrix = lumped with Contact mass removal = "
            "true removes both.");
-    dirichlet_dofs = IndexSet(dof_handler.n_dofs());
-    for (const auto &per_component : reaction_dofs)
-      for (const auto &dofs : per_component)
-        dirichlet_dofs.add_indices(dofs);
+    dirichlet_dofs        = IndexSet(dof_handler.n_dofs());
+    const auto &dirichlet = parameters.boundary_conditions.dirichlet;
+    for (unsigned int c = 0; c < dirichlet.size(); ++c)
+      for (const unsigned int d : dirichlet[c].components)
+        dirichlet_dofs.add_indices(reaction_dofs[c][d]);
     dirichlet_dofs.compress();
+
+    // The rows whose assembled lumped mass is zero.
+    massless_rows = IndexSet(dof_handler.n_dofs());
+    if (massless_dofs.n_elements() > 0)
+    {
+      Vector             lumped(locally_owned_dofs, mpi_communicator);
+      FEValues<dim>      fe_values(*fe,
+                              quadrature,
+                              update_values | update_JxW_values |
+                                update_quadrature_points);
+      const unsigned int n = fe->n_dofs_per_cell();
+      std::vector<types::global_dof_index> dof_indices(n);
+      std::vector<unsigned int>            component(n);
+      std::vector<double>                  diagonal(n);
+      for (unsigned int i = 0; i < n; ++i)
+        component[i] = fe->system_to_component_index(i).first;
+      FullMatrix<double> cell_mass;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dof_indices);
+          cell_mass_matrix(fe_values,
+                           dof_indices,
+                           component,
+                           densities[cell->material_id()],
+                           cell_mass);
+          for (unsigned int i = 0; i < n; ++i)
+            diagonal[i] = cell_mass(i, i);
+          lumped.add(dof_indices, diagonal);
+        }
+      lumped.compress(VectorOperation::add);
+      for (const auto i : locally_owned_dofs)
+        if (lumped[i] == 0)
+          massless_rows.add_index(i);
+      massless_rows.compress();
+    }
 
     if (!ts.initial_velocities.empty())
     {
@@ -91,19 +130,27 @@ namespace tribos
           velocity[dof] = it->second->value(points.at(dof), dof_component[dof]);
       }
       velocity.compress(VectorOperation::insert);
-      // Hanging nodes follow their parents; fixed dofs stay at rest.
+      // Hanging nodes follow their parents, symmetry planes hold the
+      // normal velocity at zero; a Dirichlet dof keeps the given velocity
+      // (its motion's rate at t = 0 is the user's to make consistent).
+      const Vector given = velocity;
       homogeneous_constraints.distribute(velocity);
+      for (const auto dof : locally_owned_dofs)
+        if (dirichlet_dofs.is_element(dof))
+          velocity[dof] = given[dof];
+      velocity.compress(VectorOperation::insert);
     }
     ghosted_velocity = velocity;
     ghosted_start    = ghosted_displacement();
     compute_initial_acceleration();
     if (contact)
       contact->set_force_weight(integrator->force_weight());
-    const Energies e = energies();
-    kinetic_energy   = e.kinetic;
-    strain_energy    = e.stored;
-    momentum         = e.momentum;
-    initial_energy   = e.kinetic + e.stored;
+    const Energies e       = energies();
+    kinetic_energy         = e.kinetic;
+    strain_energy          = e.stored;
+    momentum               = e.momentum;
+    initial_energy         = e.kinetic + e.stored;
+    initial_kinetic_energy = e.kinetic;
     pcout << "  dynamics: "
           << (ts.integrator == Parameters::Integrator::newmark ?
                 "Newmark" :
@@ -132,7 +179,8 @@ namespace tribos
     const std::vector<types::global_dof_index> &dof_indices,
     const std::vector<unsigned int>            &component,
     const double                                density,
-    FullMatrix<double>                         &mass) const
+    FullMatrix<double>                         &mass,
+    const bool                                  remove_contact_mass) const
   {
     const unsigned int n = dof_indices.size();
     mass.reinit(n, n);
@@ -158,7 +206,7 @@ namespace tribos
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         lumped[i] += mass(i, j);
-    if (massless_dofs.n_elements() > 0)
+    if (remove_contact_mass && massless_dofs.n_elements() > 0)
       for (unsigned int c = 0; c < dim; ++c)
       {
         // Move the mass of the cell's contact nodes to its other nodes,
@@ -196,16 +244,23 @@ namespace tribos
     Vector force(locally_owned_dofs, mpi_communicator);
     for (const auto i : locally_owned_dofs)
     {
-      if (!massless_dofs.is_element(i))
-        force[i] = free_residual[i];
+      force[i] = free_residual[i];
       // The forces at t = 0 for the first step's alpha_f share and the
-      // work sums (no inertia yet: a reaction is the static residual).
-      old_forces[i]         = full_residual[i];
+      // work sums (no inertia yet: a reaction is the static residual). A
+      // row without mass is quasi-static: an alpha_f share of its old
+      // forces would make its residual alternate in sign from step to step.
+      old_forces[i] = massless_rows.is_element(i) ? 0. : full_residual[i];
       old_contact_forces[i] = contact ? contact_forces[i] : 0.;
       old_external[i]       = external_forces[i] +
                         (dirichlet_dofs.is_element(i) ? full_residual[i] : 0.);
+      old_internal[i] =
+        full_residual[i] + old_contact_forces[i] + external_forces[i];
     }
-    for (Vector *v : {&force, &old_forces, &old_contact_forces, &old_external})
+    for (Vector *v : {&force,
+                      &old_forces,
+                      &old_contact_forces,
+                      &old_external,
+                      &old_internal})
       v->compress(VectorOperation::insert);
     if (force.l2_norm() > stagnation_bound)
     {
@@ -238,23 +293,19 @@ namespace tribos
         {
           fe_values.reinit(cell);
           cell->get_dof_indices(dof_indices);
+          // The bodies' physical mass: a_0 of every node, the contact
+          // nodes' included (there it does not enter the balance).
           cell_mass_matrix(fe_values,
                            dof_indices,
                            component,
                            densities[cell->material_id()],
-                           cell_mass);
+                           cell_mass,
+                           false);
           homogeneous_constraints.distribute_local_to_global(cell_mass,
                                                              dof_indices,
                                                              mass);
         }
       mass.compress(VectorOperation::add);
-      // The massless dofs' accelerations do not enter the balance: any
-      // value will do; 0 keeps the matrix regular.
-      for (const auto i : massless_dofs)
-        if (locally_owned_dofs.is_element(i) &&
-            !homogeneous_constraints.is_constrained(i))
-          mass.set(i, i, 1.);
-      mass.compress(VectorOperation::insert);
 
       SolverControl control(10 * dof_handler.n_dofs(), 1e-12 * force.l2_norm());
       SolverCG<Vector>                     cg(control);
@@ -275,36 +326,51 @@ namespace tribos
   Problem<dim>::commit_dynamics()
   {
     const Vector &u        = ghosted_displacement();
-    double        works[2] = {0, 0};
+    double        works[3] = {0, 0, 0};
     Vector        external(locally_owned_dofs, mpi_communicator);
     for (const auto i : locally_owned_dofs)
     {
       const double du    = u[i] - ghosted_start[i];
       const double a_old = ghosted_acceleration[i], v_old = ghosted_velocity[i];
-      const double a_new = integrator->acceleration(du, v_old, a_old);
-      acceleration[i]    = a_new;
-      velocity[i]        = integrator->velocity(v_old, a_old, a_new);
+      if (dirichlet_dofs.is_element(i))
+      {
+        acceleration[i] = integrator->prescribed_acceleration(du, v_old);
+        velocity[i]     = integrator->prescribed_velocity(du);
+      }
+      else
+      {
+        const double a_new = integrator->acceleration(du, v_old, a_old);
+        acceleration[i]    = a_new;
+        velocity[i]        = integrator->velocity(v_old, a_old, a_new);
+      }
       // The applied loads and, on Dirichlet dofs, the reactions
-      // f_int - f_contact - f_ext + M a.
+      // f_int - f_contact - f_ext + M a; the internal forces
+      // R + f_contact + f_ext.
       external[i] = external_forces[i];
       if (dirichlet_dofs.is_element(i))
         external[i] += full_residual[i] + inertia_forces[i];
-      // Trapezoidal sums: the work the contact forces take from the bodies
-      // and the work the loads and supports give them.
+      const double internal =
+        full_residual[i] + contact_forces[i] + external_forces[i];
+      // Trapezoidal sums: the work the contact forces take from the bodies,
+      // the work the loads and supports give them, the internal work.
       works[0] -= 0.5 * (old_contact_forces[i] + contact_forces[i]) * du;
       works[1] += 0.5 * (old_external[i] + external[i]) * du;
-      old_forces[i]         = full_residual[i];
+      works[2] += 0.5 * (old_internal[i] + internal) * du;
+      old_forces[i] = massless_rows.is_element(i) ? 0. : full_residual[i];
       old_contact_forces[i] = contact_forces[i];
+      old_internal[i]       = internal;
     }
     for (Vector *v : {&acceleration,
                       &velocity,
                       &old_forces,
                       &old_contact_forces,
+                      &old_internal,
                       &external})
       v->compress(VectorOperation::insert);
     old_external = external;
     contact_work += Utilities::MPI::sum(works[0], mpi_communicator);
     external_work += Utilities::MPI::sum(works[1], mpi_communicator);
+    internal_work += Utilities::MPI::sum(works[2], mpi_communicator);
     if (contact)
       friction_work += contact->frictional_dissipation();
 

@@ -114,6 +114,7 @@ namespace tribos
     if (integrator)
       for (const char *name : {"kinetic_energy",
                                "strain_energy",
+                               "internal_work",
                                "contact_work",
                                "friction_work",
                                "external_work",
@@ -241,16 +242,22 @@ namespace tribos
     if (integrator)
     {
       // total_energy: the bodies' energy plus what the contact took (the
-      // penalty springs' energy, friction, impact losses); energy_error:
-      // what the integrator created or lost, total - W_external - E_0.
+      // penalty springs' energy, friction, impact losses). energy_error:
+      // what the time integrator created (> 0) or dissipated (< 0), the
+      // balance of the trapezoidal work sums E_kin - E_kin,0 + W_int +
+      // W_contact - W_external: zero to round-off for Newmark's average
+      // acceleration rule, whatever the material and the contact.
       const double total = kinetic_energy + strain_energy + contact_work;
-      for (const double value : {kinetic_energy,
-                                 strain_energy,
-                                 contact_work,
-                                 friction_work,
-                                 external_work,
-                                 total,
-                                 total - external_work - initial_energy})
+      for (const double value :
+           {kinetic_energy,
+            strain_energy,
+            internal_work,
+            contact_work,
+            friction_work,
+            external_work,
+            total,
+            kinetic_energy - initial_kinetic_energy + internal_work +
+              contact_work - external_work})
         row.push_back(value);
       for (unsigned int d = 0; d < dim; ++d)
         row.push_back(momentum[d]);

@@ -234,7 +234,8 @@ namespace tribos
                      const std::vector<types::global_dof_index> &dof_indices,
                      const std::vector<unsigned int>            &component,
                      const double                                density,
-                     FullMatrix<double>                         &mass) const;
+                     FullMatrix<double>                         &mass,
+                     const bool remove_contact_mass = true) const;
     /** M a_0 = f_ext - f_int - f_contact at t = 0 (if that is not zero). */
     void
     compute_initial_acceleration();
@@ -417,17 +418,24 @@ namespace tribos
     Vector old_contact_forces, old_external;
     /** Density per body id. */
     std::vector<double> densities;
-    /** Dofs whose lumped mass is moved away (Contact mass removal). */
+    /** Dofs whose lumped mass is moved away (Contact mass removal): the
+     * candidates (a cell whose every node is one keeps its mass), and those
+     * whose assembled mass is zero (their rows are quasi-static). */
     IndexSet massless_dofs;
-    /** Dofs with a Dirichlet condition (their reactions do work). */
+    IndexSet massless_rows;
+    /** The constrained components of the Dirichlet conditions: their
+     * motion is prescribed, and their reactions do work. */
     IndexSet dirichlet_dofs;
-    /** Energies of the last converged state: kinetic, stored, the work
-     * absorbed by contact, the friction dissipation and the work of the
-     * applied loads and Dirichlet reactions (sums since t = 0), and the
-     * initial kinetic plus stored energy. */
+    /** Energies of the last converged state: kinetic, stored, the work of
+     * the internal forces, the work absorbed by contact, the friction
+     * dissipation and the work of the applied loads and Dirichlet
+     * reactions (sums since t = 0), and the initial energies. */
     Tensor<1, dim> momentum;
-    double         kinetic_energy = 0, strain_energy = 0, contact_work = 0,
-           friction_work = 0, external_work = 0, initial_energy = 0;
+    double         kinetic_energy = 0, strain_energy = 0, internal_work = 0,
+           contact_work = 0, friction_work = 0, external_work = 0,
+           initial_energy = 0, initial_kinetic_energy = 0;
+    /** The internal forces f_int at the last converged time. */
+    Vector old_internal;
 
     /** The solvers (built by run()). */
     std::unique_ptr<LinearSolver> linear_solver;

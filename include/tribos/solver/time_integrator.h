@@ -54,6 +54,13 @@ namespace tribos
       return g;
     }
 
+    /** The step size dt. */
+    double
+    step() const
+    {
+      return dt;
+    }
+
     /** Weight of the forces at t_{n+1}: 1 - alpha_f. */
     double
     force_weight() const
@@ -89,6 +96,34 @@ namespace tribos
     velocity(const double v, const double a, const double a_new) const
     {
       return v + dt * ((1. - g) * a + g * a_new);
+    }
+
+    /**
+     * A prescribed (Dirichlet) dof follows its boundary function, not
+     * Newmark's recursion (which, started from a velocity that differs from
+     * the prescribed rate, makes the dof's acceleration alternate and grow
+     * linearly for beta = 1/4, gamma = 1/2): its velocity at t_{n+1} is the
+     * mean rate of the step, du / dt, its acceleration the change of that
+     * rate, (du / dt - v_n) / dt: exact for the piecewise linear motions of
+     * a load history, bounded at its kinks.
+     */
+    double
+    prescribed_acceleration(const double du, const double v) const
+    {
+      return (du / dt - v) / dt;
+    }
+
+    double
+    prescribed_velocity(const double du) const
+    {
+      return du / dt;
+    }
+
+    /** d a_{n+1-alpha_m} / d u_{n+1} of a prescribed dof. */
+    double
+    prescribed_mass_weight() const
+    {
+      return (1. - am) / (dt * dt);
     }
 
   private:
