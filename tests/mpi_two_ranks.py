@@ -1,8 +1,10 @@
 """MPI: `mpirun -np 2` gives the same history as the serial run (reactions
 and contact forces to 1e-8 relative) on a 3D and a 2D multi-body scene and
-two contact scenes (friction on a rigid plane; deformable non-matching
-interface), the same contact-NNNNN.csv, and writes the parallel VTU set
-(.pvtu plus one piece per rank)."""
+three contact scenes (friction on a rigid plane; deformable non-matching
+interface; 3D frictional sliding of two blocks, whose contact pattern
+changes: MUMPS' solver was destroyed after the matrix it referred to, and
+the run crashed), the same contact-NNNNN.csv, and writes the parallel VTU
+set (.pvtu plus one piece per rank)."""
 
 import os
 import sys
@@ -13,7 +15,8 @@ from tribos_test import (setup, run, strip_columns, numdiff, read_csv, check,
 tribos, tests, out = setup(sys.argv)
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all")
-for name in ("cylinder_3d", "ring_2d", "sliding_block", "patch_test"):
+for name in ("cylinder_3d", "ring_2d", "sliding_block", "patch_test",
+             "sliding_blocks_3d"):
     prm = "%s/%s.prm" % (tests, name)
     serial, parallel = out + "/" + name + "_serial", out + "/" + name + "_np2"
     run(tribos, prm, serial)

@@ -333,6 +333,9 @@ namespace tribos
                                                system_owned,
                                                mpi_communicator,
                                                system_relevant);
+    // Whatever holds on to the old matrix goes first.
+    if (linear_solver)
+      linear_solver->release_matrix();
     matrix.reinit(system_owned, system_owned, dsp, mpi_communicator);
     ++sparsity_version;
   }

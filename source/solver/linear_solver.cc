@@ -95,6 +95,15 @@ namespace tribos
 
 
   void
+  LinearSolver::release_matrix()
+  {
+    amesos.reset();
+    amg.reset();
+  }
+
+
+
+  void
   LinearSolver::solve_amesos(const TrilinosWrappers::SparseMatrix &matrix,
                              const unsigned long pattern_version,
                              Vector             &x,

@@ -70,6 +70,16 @@ namespace tribos
           const Vector                         &rhs,
           const double                          tolerance = 0);
 
+    /**
+     * Let go of everything that refers to the current system matrix (the
+     * Amesos solver, the AMG hierarchy): call before the matrix is
+     * rebuilt. Their destructors reach into the matrix (Amesos_Mumps
+     * frees MUMPS' data through the matrix's communicator), so destroying
+     * them after it crashed every MPI run whose contact pattern changed.
+     */
+    void
+    release_matrix();
+
     /** What the last solve used, for the log: "CHOLMOD (SuiteSparse)",
      * "UMFPACK (SuiteSparse)", "Amesos_Mumps", "GMRES + ML". */
     const std::string &
