@@ -2,7 +2,7 @@
  * tribos: multi-body contact with Coulomb friction at finite strain.
  *
  * Command line:
- *   tribos FILE.prm [--set "Section/Entry=value"]...
+ *   tribos FILE.prm [--set "Section/Entry=value"]... [--restart DIR]
  *   tribos --print-parameters [prm|json]
  *   tribos --help
  */
@@ -31,6 +31,10 @@ namespace
          "      Run the scene described by FILE.prm. Each --set overrides one\n"
          "      entry of the file (subsections separated by '/'); unknown\n"
          "      entries and values outside the allowed ones are errors.\n"
+         "  tribos FILE.prm [--set ...]... --restart DIR\n"
+         "      Go on from the checkpoint in DIR (Output/Checkpoint every\n"
+         "      of an earlier run of the same FILE.prm and mesh), with any\n"
+         "      number of MPI processes.\n"
          "  tribos --print-parameters [prm|json]\n"
          "      Print every parameter with its documentation, default and\n"
          "      allowed values.\n"
@@ -42,12 +46,15 @@ namespace
 
   template <int dim>
   void
-  run(dealii::ParameterHandler &prm, const std::string &filename)
+  run(dealii::ParameterHandler &prm,
+      const std::string        &filename,
+      const std::string        &restart)
   {
     tribos::Parameters::AllParameters parameters;
     parameters.parse_parameters(prm);
     parameters.input_warnings =
       tribos::Parameters::input_file_warnings(filename);
+    parameters.restart_directory = restart;
     // Let the problem (and its TimerOutput) be destroyed before a failure
     // propagates, so that its destructor runs outside of stack unwinding.
     std::exception_ptr failure;
@@ -110,6 +117,7 @@ main(int argc, char **argv)
     std::string              filename;
     std::vector<std::string> overrides;
     std::string              print_format;
+    std::string              restart;
     bool                     print = false;
 
     for (int i = 1; i < argc; ++i)
@@ -130,6 +138,14 @@ main(int argc, char **argv)
       }
       else if (argument.rfind("--set=", 0) == 0)
         overrides.push_back(argument.substr(6));
+      else if (argument == "--restart")
+      {
+        AssertThrow(i + 1 < argc,
+                    ExcMessage("--restart needs the checkpoint directory "
+                               "(<Output/Directory>/checkpoint of the run "
+                               "that wrote it)."));
+        restart = argv[++i];
+      }
       else if (argument == "--print-parameters")
       {
         print        = true;
@@ -176,9 +192,9 @@ main(int argc, char **argv)
       tribos::Parameters::read_dimension(filename, overrides);
     tribos::Parameters::read_input(prm, filename, overrides);
     if (dim == 2)
-      run<2>(prm, filename);
+      run<2>(prm, filename, restart);
     else
-      run<3>(prm, filename);
+      run<3>(prm, filename, restart);
   }
   catch (const tribos::NonConvergence &failure)
   {

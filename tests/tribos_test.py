@@ -18,11 +18,14 @@ def setup(argv):
     return tribos, tests, out
 
 
-def run(tribos, prm, out, sets=(), mpi_ranks=0, expect_success=True):
-    """Run tribos on prm with output into out and the --set overrides."""
+def run(tribos, prm, out, sets=(), mpi_ranks=0, expect_success=True,
+        extra=()):
+    """Run tribos on prm with output into out, the --set overrides and the
+    extra arguments."""
     command = [tribos, prm, "--set", "Output/Directory=" + out]
     for s in sets:
         command += ["--set", s]
+    command += list(extra)
     if mpi_ranks:
         command = [os.environ.get("MPIEXEC", "mpirun"), "-np",
                    str(mpi_ranks)] + command

@@ -6,7 +6,9 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
+#include <cstring>
 #include <set>
+#include <type_traits>
 
 namespace tribos
 {
@@ -276,6 +278,113 @@ namespace tribos
           sum += norm(r.traction) * r.slip_increment * pair.area[k];
         }
     return Utilities::MPI::sum(sum, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  std::vector<char>
+  ContactHandler<dim>::committed_state() const
+  {
+    static_assert(std::is_trivially_copyable_v<NodeState>,
+                  "NodeState is written as bytes");
+    // Per owned node: pair, node, state; gathered from every process.
+    std::vector<char> mine;
+    const auto        append = [&mine](const void *data, const size_t size)
+    {
+      const char *bytes = static_cast<const char *>(data);
+      mine.insert(mine.end(), bytes, bytes + size);
+    };
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+      for (unsigned int k = 0; k < contact_pairs[p].n_nodes(); ++k)
+        if (contact_pairs[p].owned[k])
+        {
+          append(&p, sizeof(p));
+          append(&k, sizeof(k));
+          append(&contact_pairs[p].committed[k], sizeof(NodeState));
+        }
+    std::vector<std::vector<NodeState>> states(contact_pairs.size());
+    std::vector<char>                   ever_near(contact_pairs.size(), 0);
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+    {
+      states[p].resize(contact_pairs[p].n_nodes());
+      ever_near[p] = Utilities::MPI::logical_or(contact_pairs[p].ever_near,
+                                                mpi_communicator);
+    }
+    const size_t record = 2 * sizeof(unsigned int) + sizeof(NodeState);
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, mine))
+      for (size_t offset = 0; offset + record <= part.size(); offset += record)
+      {
+        unsigned int p, k;
+        std::memcpy(&p, part.data() + offset, sizeof(p));
+        std::memcpy(&k, part.data() + offset + sizeof(p), sizeof(k));
+        std::memcpy(&states[p][k],
+                    part.data() + offset + 2 * sizeof(p),
+                    sizeof(NodeState));
+      }
+
+    // Layout: number of pairs; per pair the number of nodes, ever_near and
+    // the states.
+    std::vector<char> result;
+    const auto        put = [&result](const void *data, const size_t size)
+    {
+      const char *bytes = static_cast<const char *>(data);
+      result.insert(result.end(), bytes, bytes + size);
+    };
+    const unsigned int n_pairs = contact_pairs.size();
+    put(&n_pairs, sizeof(n_pairs));
+    for (unsigned int p = 0; p < n_pairs; ++p)
+    {
+      const unsigned int n = states[p].size();
+      put(&n, sizeof(n));
+      put(&ever_near[p], 1);
+      put(states[p].data(), n * sizeof(NodeState));
+    }
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::load_committed_state(const std::vector<char> &state,
+                                            const double             time)
+  {
+    size_t     offset = 0;
+    const auto get    = [&](void *data, const size_t size)
+    {
+      AssertThrow(offset + size <= state.size(),
+                  ExcMessage("The checkpoint's contact state is truncated."));
+      std::memcpy(data, state.data() + offset, size);
+      offset += size;
+    };
+    unsigned int n_pairs;
+    get(&n_pairs, sizeof(n_pairs));
+    AssertThrow(n_pairs == contact_pairs.size(),
+                ExcMessage("The checkpoint has " + std::to_string(n_pairs) +
+                           " contact pairs, this run " +
+                           std::to_string(contact_pairs.size()) +
+                           ": Contact/Pairs must be those of the run that "
+                           "wrote it."));
+    for (auto &pair : contact_pairs)
+    {
+      unsigned int n;
+      char         near;
+      get(&n, sizeof(n));
+      AssertThrow(n == pair.n_nodes(),
+                  ExcMessage("The checkpoint's contact pair has " +
+                             std::to_string(n) + " slave nodes, this run's " +
+                             std::to_string(pair.n_nodes()) +
+                             ": the mesh must be that of the run that wrote "
+                             "it."));
+      get(&near, 1);
+      get(pair.committed.data(), n * sizeof(NodeState));
+      pair.current              = pair.committed;
+      pair.ever_near            = near != 0;
+      pair.old_slave_positions  = pair.slave_positions;
+      pair.old_master_positions = pair.master_positions;
+    }
+    committed_time = time;
   }
 
 

@@ -413,6 +413,10 @@ namespace tribos
     if (parameters.output.is_output_step(step,
                                          parameters.time_stepping.n_steps))
       write_vtu(step, end_time);
+    const unsigned int every = parameters.output.checkpoint_every;
+    if (every > 0 &&
+        (step % every == 0 || step == parameters.time_stepping.n_steps))
+      write_checkpoint(step);
   }
 
 

@@ -51,11 +51,24 @@ namespace tribos
                              error.message() + ")."));
       // Remove the series files of an earlier run, so that the folder
       // holds one consistent run; other files are left alone.
+      // A restart keeps those of the steps up to its checkpoint.
       for (const auto &entry : std::filesystem::directory_iterator(dir))
       {
         const std::string name = entry.path().filename().string();
-        if (name.rfind("solution-", 0) == 0 || name.rfind("contact-", 0) == 0)
-          std::filesystem::remove(entry.path());
+        for (const std::string prefix : {"solution-", "contact-"})
+          if (name.rfind(prefix, 0) == 0)
+          {
+            unsigned int step = 0;
+            try
+            {
+              step = std::stoul(name.substr(prefix.size(), 5));
+            }
+            catch (...)
+            {
+            }
+            if (!restart || step > restart->stepper.step)
+              std::filesystem::remove(entry.path());
+          }
       }
     }
     MPI_Barrier(mpi_communicator);
@@ -130,8 +143,10 @@ namespace tribos
       columns.push_back("stabilization_ratio");
       columns.push_back("stabilization_relaxations");
     }
+    // A restart continues the earlier run's files after its checkpoint.
+    const long keep = restart ? long(restart->stepper.totals.n_increments) : -1;
     history_csv =
-      std::make_unique<CsvWriter>(dir + "/history.csv", columns, root);
+      std::make_unique<CsvWriter>(dir + "/history.csv", columns, root, keep);
     convergence_csv =
       std::make_unique<CsvWriter>(dir + "/convergence.csv",
                                   std::vector<std::string>{"step",
@@ -143,7 +158,8 @@ namespace tribos
                                                            "update_norm",
                                                            "line_search_step",
                                                            "order"},
-                                  root);
+                                  root,
+                                  keep);
   }
 
 
@@ -578,7 +594,9 @@ namespace tribos
             << "increments        " << totals.n_increments << '\n'
             << "newton iterations " << totals.n_newton_iterations << '\n'
             << "newton iterations (all attempts) "
-            << (newton ? newton->n_linear_solves() : 0) << '\n'
+            << (restart ? restart->stepper.totals.n_linear_solves : 0) +
+                 (newton ? newton->n_linear_solves() : 0)
+            << '\n'
             << "cutbacks          " << totals.n_cutbacks << '\n'
             << "linear solver     "
             << (linear_solver && !linear_solver->method().empty() ?

@@ -19,6 +19,12 @@ namespace tribos
     make_grid();
     setup_system();
     setup_dynamics();
+    if (!parameters.restart_directory.empty())
+    {
+      restart = std::make_unique<Checkpoint>();
+      restart->load(parameters.restart_directory);
+      check_checkpoint();
+    }
     open_output();
 
     pcout << "tribos: " << dim << "D scene <" << parameters.scene.name << ">, "
@@ -31,7 +37,11 @@ namespace tribos
       for (const auto &line : contact->describe())
         pcout << "  " << line << std::endl;
 
-    write_vtu(0, 0.);
+    StepperState start;
+    if (restart)
+      start = read_checkpoint();
+    else
+      write_vtu(0, 0.);
 
     // The solvers: the linear solve of a Newton iteration (AMG gets the
     // rigid-body modes as its near-null space), Newton, and the load
@@ -46,7 +56,10 @@ namespace tribos
     newton  = std::make_unique<NewtonSolver>(parameters.nonlinear_solver,
                                             *linear_solver);
     stepper = std::make_unique<LoadStepper>(parameters.time_stepping, *newton);
-    stepper->run(*this, [this](const std::string &text) { message(text); });
+    stepper->run(
+      *this,
+      [this](const std::string &text) { message(text); },
+      start);
 
     if (contact)
       for (const auto &w : contact->run_warnings())
@@ -55,9 +68,11 @@ namespace tribos
     const auto &totals = stepper->totals();
     pcout << "done: " << totals.n_increments << " increments, "
           << totals.n_newton_iterations << " Newton iterations ("
-          << newton->n_linear_solves() << " with failed attempts), "
-          << totals.n_cutbacks << " cutbacks, " << wall_clock.wall_time()
-          << " s; output in " << parameters.output.directory << std::endl;
+          << (restart ? restart->stepper.totals.n_linear_solves : 0) +
+               newton->n_linear_solves()
+          << " with failed attempts), " << totals.n_cutbacks << " cutbacks, "
+          << wall_clock.wall_time() << " s; output in "
+          << parameters.output.directory << std::endl;
   }
 
   template <int dim>

@@ -36,6 +36,15 @@ namespace tribos
                         "mesh vertex nearest to each (in the reference "
                         "configuration) is written to history.csv as "
                         "probeK_ux, probeK_uy(, probeK_uz).");
+      prm.declare_entry(
+        "Checkpoint every",
+        "0",
+        dealii::Patterns::Integer(0),
+        "Write a checkpoint after every this many nominal steps (and after "
+        "the last) into <Directory>/checkpoint-NNNNN (NNNNN: the step): the "
+        "converged state (solution, plastic history, contact state, "
+        "velocities, the stepping). 'tribos FILE.prm --restart DIR' goes "
+        "on from it, also with another number of MPI processes. 0: never.");
       prm.leave_subsection();
     }
 
@@ -53,6 +62,7 @@ namespace tribos
       for (const auto &item : Text::split_top_level(prm.get("Probes"), ';'))
         if (!Text::trim(item).empty())
           probes.push_back(Text::parse_doubles(item, "Output/Probes"));
+      checkpoint_every = prm.get_integer("Checkpoint every");
       AssertThrow(!directory.empty(),
                   dealii::ExcMessage(
                     "Parameter <Output/Directory> must not be empty."));

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -10,19 +11,43 @@ namespace tribos
 {
   CsvWriter::CsvWriter(const std::string              &filename,
                        const std::vector<std::string> &columns,
-                       const bool                      active)
+                       const bool                      active,
+                       const long                      keep_through_increment)
     : columns(columns)
     , active(active)
   {
     if (!active)
       return;
+    std::string header;
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      header += (i ? "," : "") + columns[i];
+
+    std::vector<std::string> kept;
+    const auto               increment_column =
+      std::find(columns.begin(), columns.end(), "increment") - columns.begin();
+    if (keep_through_increment >= 0 && increment_column < long(columns.size()))
+    {
+      std::ifstream in(filename);
+      std::string   line;
+      if (in && std::getline(in, line) && line == header)
+        while (std::getline(in, line))
+        {
+          std::istringstream fields(line);
+          std::string        field;
+          for (long i = 0; i <= increment_column; ++i)
+            std::getline(fields, field, ',');
+          if (!field.empty() && std::stol(field) <= keep_through_increment)
+            kept.push_back(line);
+        }
+    }
     file.open(filename);
     AssertThrow(file,
                 dealii::ExcMessage("Cannot open <" + filename +
                                    "> for writing: check Output/Directory."));
-    for (unsigned int i = 0; i < columns.size(); ++i)
-      file << (i ? "," : "") << columns[i];
-    file << '\n' << std::flush;
+    file << header << '\n';
+    for (const auto &line : kept)
+      file << line << '\n';
+    file << std::flush;
   }
 
 

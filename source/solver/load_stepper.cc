@@ -20,22 +20,27 @@ namespace tribos
 
   void
   LoadStepper::run(IncrementalProblem                             &problem,
-                   const std::function<void(const std::string &)> &print)
+                   const std::function<void(const std::string &)> &print,
+                   const StepperState                             &start)
   {
     const auto  &ts           = parameters;
     const double nominal_step = ts.end_time / ts.n_steps;
     const double epsilon      = 1e-12 * ts.end_time;
     Timer        wall_clock;
 
-    double                   time      = 0;
-    double                   increment = nominal_step;
+    const bool restarted = start.step > 0;
+    double     time      = restarted ? start.time : 0.;
+    double     increment = restarted ? start.increment : nominal_step;
     NonlinearProblem::Vector converged = problem.solution();
     // Converged increments since the last growth or cutback, and the
     // linear solves when the last increment was accepted.
-    unsigned int converged_in_row = 0;
+    unsigned int converged_in_row = restarted ? start.converged_in_row : 0;
     unsigned int solves_accepted  = newton.n_linear_solves();
+    if (restarted)
+      sums = start.totals;
+    progress = start;
 
-    for (unsigned int step = 1; step <= ts.n_steps; ++step)
+    for (unsigned int step = start.step + 1; step <= ts.n_steps; ++step)
     {
       const double target           = step * nominal_step;
       unsigned int n_iterations     = 0;
@@ -71,6 +76,7 @@ namespace tribos
           // increment's failed attempts included.
           report.n_iterations_all = newton.n_linear_solves() - solves_accepted;
           solves_accepted         = newton.n_linear_solves();
+          sums.n_linear_solves += report.n_iterations_all;
           sums.n_newton_iterations += report.n_iterations;
           sums.largest_stabilization_ratio =
             std::max(sums.largest_stabilization_ratio,
@@ -130,8 +136,8 @@ namespace tribos
         }
       }
 
-      const double       elapsed = wall_clock.wall_time();
-      const double       eta     = elapsed / time * (ts.end_time - time);
+      const double elapsed = wall_clock.wall_time();
+      const double eta = elapsed / (time - start.time) * (ts.end_time - time);
       std::ostringstream line;
       line << "step " << std::setw(4) << step << "/" << ts.n_steps
            << "  t=" << std::setw(9) << std::setprecision(4) << time
@@ -144,6 +150,7 @@ namespace tribos
            << problem.step_status() << "  " << std::setprecision(3) << elapsed
            << " s  ETA " << eta << " s";
       print(line.str());
+      progress = {step, time, increment, converged_in_row, sums};
       problem.end_step(step, time);
     }
   }

@@ -126,6 +126,25 @@ namespace tribos
     double
     frictional_dissipation() const;
 
+    /**
+     * The committed state of every slave node of every pair (pairing,
+     * traction, slip, multipliers), each from the process that owns the
+     * node, as bytes: the same on every process. For checkpoints.
+     * Collective.
+     */
+    std::vector<char>
+    committed_state() const;
+
+    /**
+     * Make @p state (committed_state() of a run on the same mesh and
+     * pairs) the committed and current state, and the last positions (of
+     * update(), which must have run at the restored solution) the
+     * committed ones, as at the end of the increment that ended at
+     * @p time.
+     */
+    void
+    load_committed_state(const std::vector<char> &state, const double time);
+
     /** Start an increment (the chattering monitor). */
     void
     begin_increment();

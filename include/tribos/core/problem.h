@@ -2,6 +2,7 @@
 #define tribos_core_problem_h
 
 #include <tribos/contact/contact_handler.h>
+#include <tribos/core/checkpoint.h>
 #include <tribos/material/material.h>
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/postprocess/contact_output.h>
@@ -252,6 +253,30 @@ namespace tribos
     };
     Energies
     energies() const;
+
+    /* restart.cc */
+    /** Write the converged state after nominal @p step into
+     * <Output/Directory>/checkpoint (Output/Checkpoint every). */
+    void
+    write_checkpoint(const unsigned int step);
+    /** Whether the checkpoint fits this run (mesh, dofs, pairs, integrator,
+     * steps): a clear error before any output is touched. */
+    void
+    check_checkpoint() const;
+    /** Read the checkpoint of parameters.restart_directory into the state
+     * of this (set up) problem; returns where the stepping stands. */
+    StepperState
+    read_checkpoint();
+    /** The values of @p v (dof-sized, owned) per active cell. */
+    std::vector<double>
+    cell_values(const Vector &v) const;
+    /** Set the owned entries of @p v (dof-sized or the system vector) from
+     * cell_values(). */
+    void
+    set_from_cell_values(const std::vector<double> &values, Vector &v) const;
+    /** The checkpoint a restart goes on from (read before the output is
+     * opened: it says which rows and files of the earlier run to keep). */
+    std::unique_ptr<Checkpoint> restart;
 
     /* output.cc */
     void

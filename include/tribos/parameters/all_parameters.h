@@ -44,6 +44,8 @@ namespace tribos
       /** Warnings about the input itself (e.g. a file that sets nothing),
        * reported by the run with its own. */
       std::vector<std::string> input_warnings;
+      /** The checkpoint directory to go on from (--restart), or empty. */
+      std::string restart_directory;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -19,6 +19,9 @@ namespace tribos
       bool                      write_vtu;
       /** Probe points (coordinates as given; checked against Dimension). */
       std::vector<std::vector<double>> probes;
+      /** Write a checkpoint after every this many nominal steps (0: never)
+       * into directory/checkpoint-NNNNN. */
+      unsigned int checkpoint_every;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -15,9 +15,16 @@ namespace tribos
   class CsvWriter
   {
   public:
+    /**
+     * With @p keep_through_increment >= 0 (a restart) an existing file with
+     * the same header keeps its rows whose column "increment" is at most
+     * that, and rows are appended after them; otherwise the file starts
+     * anew.
+     */
     CsvWriter(const std::string              &filename,
               const std::vector<std::string> &columns,
-              const bool                      active);
+              const bool                      active,
+              const long                      keep_through_increment = -1);
 
     /** Append one row; the number of values must match the header. */
     void

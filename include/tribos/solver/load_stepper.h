@@ -80,6 +80,24 @@ namespace tribos
     unsigned int n_newton_iterations         = 0;
     unsigned int n_cutbacks                  = 0;
     double       largest_stabilization_ratio = 0;
+    /** Linear solves of the converged increments, their failed attempts
+     * included. */
+    unsigned int n_linear_solves = 0;
+  };
+
+  /**
+   * Where the stepping stands after a nominal step: what a restart needs
+   * to go on exactly as the uninterrupted run would (the increment size
+   * and the growth counter included).
+   */
+  struct StepperState
+  {
+    /** The last completed nominal step (0: none). */
+    unsigned int  step             = 0;
+    double        time             = 0;
+    double        increment        = 0;
+    unsigned int  converged_in_row = 0;
+    StepperTotals totals;
   };
 
 
@@ -99,10 +117,22 @@ namespace tribos
     LoadStepper(const Parameters::TimeStepping &parameters,
                 NewtonSolver                   &newton);
 
-    /** Run every nominal step; throws NonConvergence when it stops. */
+    /**
+     * Run every nominal step after @p start (a restart's state; by default
+     * the beginning); throws NonConvergence when it stops.
+     */
     void
     run(IncrementalProblem                             &problem,
-        const std::function<void(const std::string &)> &print);
+        const std::function<void(const std::string &)> &print,
+        const StepperState                             &start = {});
+
+    /** The state after the last completed nominal step (for a checkpoint
+     * written at its end). */
+    const StepperState &
+    state() const
+    {
+      return progress;
+    }
 
     const StepperTotals &
     totals() const
@@ -114,6 +144,7 @@ namespace tribos
     const Parameters::TimeStepping &parameters;
     NewtonSolver                   &newton;
     StepperTotals                   sums;
+    StepperState                    progress;
   };
 } // namespace tribos
 

@@ -1,0 +1,80 @@
+#ifndef tribos_core_checkpoint_h
+#define tribos_core_checkpoint_h
+
+#include <tribos/solver/load_stepper.h>
+
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  /**
+   * The converged state of a run after a nominal step, in a form that does
+   * not depend on the number of MPI processes: dof vectors as the values
+   * of each active cell's dofs in the triangulation's cell order, the
+   * plastic history per cell, the contact state per slave node. A restart
+   * rebuilds the mesh and dofs from the same parameter file (the mesh is
+   * checked against the sizes stored here) and reads the state back, so
+   * that the run goes on as the uninterrupted one would (to round-off).
+   * Written with Boost.Serialization (binary archive) by rank 0.
+   */
+  struct Checkpoint
+  {
+    /** The layout version of this struct. */
+    static constexpr unsigned int format = 1;
+
+    unsigned int dimension      = 0;
+    unsigned int n_active_cells = 0;
+    unsigned int dofs_per_cell  = 0;
+    unsigned int n_dofs         = 0;
+    unsigned int n_multipliers  = 0;
+
+    StepperState stepper;
+
+    /** Per dof vector (solution, velocity, ...): n_active_cells x
+     * dofs_per_cell values. */
+    std::map<std::string, std::vector<double>> cell_values;
+    /** The contact multipliers (after the dofs in the solution). */
+    std::vector<double> multipliers;
+    /** Per cell with history, in cell order: its active cell index and
+     * its values. */
+    std::vector<std::pair<unsigned int, std::vector<double>>> history;
+    /** ContactHandler::committed_state(). */
+    std::vector<char> contact;
+    /** Scalars by name (dynamics' energies and times). */
+    std::map<std::string, double> scalars;
+    /** The VTU series written so far (time, file). */
+    std::vector<std::pair<double, std::string>> pvd_records;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      StepperState  &s = stepper;
+      StepperTotals &t = stepper.totals;
+
+      archive &dimension &n_active_cells &dofs_per_cell &n_dofs &n_multipliers;
+      archive &s.step &s.time &s.increment &s.converged_in_row;
+      archive &t.n_increments &t.n_newton_iterations &t.n_cutbacks;
+      archive &t.largest_stabilization_ratio &t.n_linear_solves;
+      archive &cell_values &multipliers &history &contact &scalars &pvd_records;
+    }
+
+    /** Write to @p directory/state.bin (through a temporary file and a
+     * rename of the directory, so that a checkpoint is whole or absent). */
+    void
+    save(const std::string &directory) const;
+
+    /** Read from @p directory/state.bin; a clear error if it is missing or
+     * not a checkpoint of this format. */
+    void
+    load(const std::string &directory);
+  };
+} // namespace tribos
+
+#endif

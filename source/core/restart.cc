@@ -1,0 +1,250 @@
+/**
+ * Checkpoints and restarts: the converged state written per active cell and
+ * per slave node, so that a run can go on from it with another number of
+ * MPI processes (the mesh is the same: every process builds it from the
+ * parameter file).
+ */
+
+#include <tribos/core/problem.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <map>
+
+namespace tribos
+{
+  template <int dim>
+  std::vector<double>
+  Problem<dim>::cell_values(const Vector &v) const
+  {
+    // Every value on every process (the mesh is shared anyway).
+    Vector replicated(locally_owned_dofs,
+                      complete_index_set(dof_handler.n_dofs()),
+                      mpi_communicator);
+    replicated                             = v;
+    const unsigned int                   n = fe->n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<double> values(triangulation.n_active_cells() * n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      cell->get_dof_indices(dofs);
+      for (unsigned int i = 0; i < n; ++i)
+        values[cell->active_cell_index() * n + i] = replicated[dofs[i]];
+    }
+    return values;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::set_from_cell_values(const std::vector<double> &values,
+                                     Vector                    &v) const
+  {
+    const unsigned int                   n = fe->n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    AssertThrow(values.size() == triangulation.n_active_cells() * n,
+                ExcMessage("The checkpoint's vector does not fit the mesh."));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+    {
+      cell->get_dof_indices(dofs);
+      for (unsigned int i = 0; i < n; ++i)
+        if (locally_owned_dofs.is_element(dofs[i]))
+          v[dofs[i]] = values[cell->active_cell_index() * n + i];
+    }
+    v.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::write_checkpoint(const unsigned int step)
+  {
+    TimerOutput::Scope t(timer, "output");
+    Checkpoint         c;
+    c.dimension      = dim;
+    c.n_active_cells = triangulation.n_active_cells();
+    c.dofs_per_cell  = fe->n_dofs_per_cell();
+    c.n_dofs         = dof_handler.n_dofs();
+    c.n_multipliers  = n_multipliers;
+    c.stepper        = stepper->state();
+    AssertThrow(c.stepper.step == step,
+                ExcInternalError("checkpoint of another step"));
+
+    // The displacement part of the solution, then the multipliers (one
+    // process only: every entry is here).
+    Vector owned(locally_owned_dofs, mpi_communicator);
+    for (const auto i : locally_owned_dofs)
+      owned[i] = owned_solution[i];
+    owned.compress(VectorOperation::insert);
+    c.cell_values["solution"] = cell_values(owned);
+    for (types::global_dof_index i = 0; i < n_multipliers; ++i)
+      c.multipliers.push_back(owned_solution[dof_handler.n_dofs() + i]);
+
+    // Plastic history of the owned cells, gathered in cell order.
+    std::vector<std::pair<unsigned int, std::vector<double>>> mine;
+    const unsigned int n_q = quadrature.size();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          history_offset[cell->active_cell_index()] !=
+            numbers::invalid_unsigned_int)
+      {
+        const unsigned int n      = n_history_variables(cell->material_id());
+        const auto         offset = history_offset[cell->active_cell_index()];
+        mine.emplace_back(cell->active_cell_index(),
+                          std::vector<double>(history_old.begin() + offset,
+                                              history_old.begin() + offset +
+                                                n * n_q));
+      }
+    for (const auto &part : Utilities::MPI::gather(mpi_communicator, mine))
+      c.history.insert(c.history.end(), part.begin(), part.end());
+    std::sort(c.history.begin(), c.history.end());
+
+    if (contact)
+      c.contact = contact->committed_state();
+
+    if (integrator)
+    {
+      c.cell_values["velocity"]           = cell_values(velocity);
+      c.cell_values["acceleration"]       = cell_values(acceleration);
+      c.cell_values["old_forces"]         = cell_values(old_forces);
+      c.cell_values["old_contact_forces"] = cell_values(old_contact_forces);
+      c.cell_values["old_external"]       = cell_values(old_external);
+      c.cell_values["old_internal"]       = cell_values(old_internal);
+      c.scalars                           = {{"kinetic_energy", kinetic_energy},
+                                             {"strain_energy", strain_energy},
+                                             {"internal_work", internal_work},
+                                             {"contact_work", contact_work},
+                                             {"friction_work", friction_work},
+                                             {"external_work", external_work},
+                                             {"initial_energy", initial_energy},
+                                             {"initial_kinetic_energy", initial_kinetic_energy}};
+    }
+    c.pvd_records = pvd_records;
+
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      c.save(parameters.output.directory + "/checkpoint-" +
+             Utilities::int_to_string(step, 5));
+    MPI_Barrier(mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::check_checkpoint() const
+  {
+    const Checkpoint &c = *restart;
+    const std::string where =
+      "--restart <" + parameters.restart_directory + ">: ";
+    const auto require = [&](const unsigned int stored,
+                             const unsigned int here,
+                             const std::string &what)
+    {
+      AssertThrow(stored == here,
+                  ExcMessage(where + "the checkpoint has " +
+                             std::to_string(stored) + " " + what +
+                             ", this run " + std::to_string(here) +
+                             ": restart with the parameter file (scene, "
+                             "mesh, finite element, contact pairs) of the "
+                             "run that wrote it."));
+    };
+    require(c.dimension, dim, "dimensions");
+    require(c.n_active_cells, triangulation.n_active_cells(), "cells");
+    require(c.dofs_per_cell, fe->n_dofs_per_cell(), "dofs per cell");
+    require(c.n_dofs, dof_handler.n_dofs(), "dofs");
+    require(c.n_multipliers, n_multipliers, "contact multipliers");
+    AssertThrow(c.stepper.step < parameters.time_stepping.n_steps,
+                ExcMessage(where + "the checkpoint is at step " +
+                           std::to_string(c.stepper.step) +
+                           ", the run has only " +
+                           std::to_string(parameters.time_stepping.n_steps) +
+                           " (Time stepping/Number of steps): nothing is "
+                           "left to do."));
+    AssertThrow(c.cell_values.count("velocity") == (integrator ? 1 : 0),
+                ExcMessage(where +
+                           "the checkpoint and this run disagree on "
+                           "Time stepping/Integrator (static or dynamic)."));
+  }
+
+
+
+  template <int dim>
+  StepperState
+  Problem<dim>::read_checkpoint()
+  {
+    const Checkpoint &c = *restart;
+    const std::string where =
+      "--restart <" + parameters.restart_directory + ">: ";
+    set_from_cell_values(c.cell_values.at("solution"), owned_solution);
+    for (types::global_dof_index i = 0; i < n_multipliers; ++i)
+      owned_solution[dof_handler.n_dofs() + i] = c.multipliers[i];
+    owned_solution.compress(VectorOperation::insert);
+    solution_changed();
+
+    std::map<unsigned int, const std::vector<double> *> by_cell;
+    for (const auto &[index, values] : c.history)
+      by_cell[index] = &values;
+    const unsigned int n_q = quadrature.size();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          history_offset[cell->active_cell_index()] !=
+            numbers::invalid_unsigned_int)
+      {
+        const unsigned int n  = n_history_variables(cell->material_id());
+        const auto         it = by_cell.find(cell->active_cell_index());
+        AssertThrow(it != by_cell.end() && it->second->size() == n * n_q,
+                    ExcMessage(where + "the checkpoint has no plastic "
+                                       "history for a cell that needs one: "
+                                       "Materials must be those of the run "
+                                       "that wrote it."));
+        std::copy(it->second->begin(),
+                  it->second->end(),
+                  history_old.begin() +
+                    history_offset[cell->active_cell_index()]);
+      }
+    history_new = history_old;
+
+    time = c.stepper.time;
+    if (contact)
+    {
+      contact->update(ghosted_solution, time);
+      contact->load_committed_state(c.contact, time);
+    }
+
+    if (integrator)
+    {
+      set_from_cell_values(c.cell_values.at("velocity"), velocity);
+      set_from_cell_values(c.cell_values.at("acceleration"), acceleration);
+      set_from_cell_values(c.cell_values.at("old_forces"), old_forces);
+      set_from_cell_values(c.cell_values.at("old_contact_forces"),
+                           old_contact_forces);
+      set_from_cell_values(c.cell_values.at("old_external"), old_external);
+      set_from_cell_values(c.cell_values.at("old_internal"), old_internal);
+      ghosted_velocity       = velocity;
+      ghosted_acceleration   = acceleration;
+      ghosted_start          = ghosted_displacement();
+      committed_time         = c.stepper.time;
+      kinetic_energy         = c.scalars.at("kinetic_energy");
+      strain_energy          = c.scalars.at("strain_energy");
+      internal_work          = c.scalars.at("internal_work");
+      contact_work           = c.scalars.at("contact_work");
+      friction_work          = c.scalars.at("friction_work");
+      external_work          = c.scalars.at("external_work");
+      initial_energy         = c.scalars.at("initial_energy");
+      initial_kinetic_energy = c.scalars.at("initial_kinetic_energy");
+      momentum               = energies().momentum;
+    }
+    pvd_records = c.pvd_records;
+    pcout << "  restarted from " << parameters.restart_directory
+          << " after step " << c.stepper.step << " (t = " << c.stepper.time
+          << ", " << c.stepper.totals.n_increments << " increments)"
+          << std::endl;
+    return c.stepper;
+  }
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos

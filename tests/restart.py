@@ -1,0 +1,98 @@
+"""Restart (Output/Checkpoint every, tribos --restart DIR): a run that goes
+on from a checkpoint reproduces the uninterrupted run's history.csv and
+last contact-NNNNN.csv to 1e-10 relative (numdiff; measured: bit for bit),
+restarted in a copy of the first run's output directory, whose history it
+truncates to the checkpoint and continues. Serial: frictional penalty,
+Lagrange multipliers and augmented Lagrangian (2D sliding block), J2
+plasticity with the plate (axisymmetric cylinder: the plastic history),
+dynamics with friction (block sliding to a stop: velocities, energies).
+MPI (only if mpirun is found): a frictional 3D two-block scene run with
+np 2 and restarted with np 1, 2 and 3 from its step-2 checkpoint, and
+with np 2 from the serial run's. Bad restarts (no checkpoint, another mesh)
+exit 1 with a message and leave the output alone."""
+
+import os
+import shutil
+import subprocess
+import sys
+
+from tribos_test import setup, run, strip_columns, numdiff, check, finish
+
+tribos, tests, out = setup(sys.argv)
+parameters = os.path.join(tests, "..", "parameters")
+noisy = ("wall_time", "residual", "newton_iterations",
+         "newton_iterations_all", "energy_error")
+has_mpi = shutil.which(os.environ.get("MPIEXEC", "mpirun")) is not None
+
+
+def compare(reference, restarted, name):
+    for folder in (reference, restarted):
+        strip_columns(folder + "/history.csv", folder + "/h.csv", drop=noisy)
+    numdiff(restarted + "/h.csv", reference + "/h.csv", relative=1e-10,
+            absolute=1e-14)
+    contact = sorted(f for f in os.listdir(reference)
+                     if f.startswith("contact-"))
+    for f in contact[-1:]:
+        numdiff(restarted + "/" + f, reference + "/" + f, relative=1e-10,
+                absolute=1e-14)
+    print("ok      %s: restarted history equals the uninterrupted one" % name)
+
+
+def restarted(tribos, prm, reference, step, sets, name, ranks=0,
+              from_folder=None):
+    folder = reference + "_restart_%s" % name
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(reference, folder)
+    source = from_folder or reference
+    command = ["--restart", "%s/checkpoint-%05d" % (source, step)]
+    run(tribos, prm, folder, list(sets), mpi_ranks=ranks, extra=command)
+    return folder
+
+
+cases = [
+    ("sliding_penalty", tests + "/sliding_block.prm", 4, []),
+    ("sliding_lagrange", tests + "/sliding_block.prm", 4,
+     ["Contact/Method=lagrange multiplier"]),
+    ("sliding_augmented", tests + "/sliding_block.prm", 4,
+     ["Contact/Method=augmented lagrangian"]),
+    ("cylinder_j2", parameters + "/cylinder_compression_axisymmetric.prm", 10,
+     ["Output/Write VTU=false"]),
+    ("dynamics_friction", parameters + "/block_slide_stop.prm", 60, []),
+]
+for name, prm, step, sets in cases:
+    reference = out + "/" + name
+    run(tribos, prm, reference,
+        sets + ["Output/Checkpoint every=%d" % step])
+    check(os.path.exists("%s/checkpoint-%05d/state.bin" % (reference, step)),
+          "%s: checkpoint of step %d written" % (name, step))
+    compare(reference, restarted(tribos, prm, reference, step, sets, "1"),
+            name)
+
+if has_mpi:
+    prm = tests + "/sliding_blocks_3d.prm"
+    sets = ["Output/Write VTU=false"]
+    serial, parallel = out + "/blocks_np1", out + "/blocks_np2"
+    run(tribos, prm, serial, sets + ["Output/Checkpoint every=2"])
+    run(tribos, prm, parallel, sets + ["Output/Checkpoint every=2"],
+        mpi_ranks=2)
+    for ranks in (1, 2, 3):
+        compare(parallel, restarted(tribos, prm, parallel, 2, sets,
+                                    "np%d" % ranks, ranks=ranks),
+                "3D sliding blocks, np 2 -> np %d" % ranks)
+    compare(serial, restarted(tribos, prm, serial, 2, sets, "np2", ranks=2),
+            "3D sliding blocks, np 1 -> np 2")
+
+# Bad restarts: a clear message, exit 1, the earlier output untouched.
+reference = out + "/sliding_penalty"
+before = open(reference + "/history.csv").read()
+for name, sets, directory, message in [
+        ("missing", [], out + "/no_such_checkpoint", "no checkpoint there"),
+        ("other mesh", ["Scene/Refinement=1"],
+         reference + "/checkpoint-00004", "cells")]:
+    result = run(tribos, tests + "/sliding_block.prm", reference, sets,
+                 expect_success=False, extra=["--restart", directory])
+    check(result.returncode == 1 and message in result.stderr and
+          open(reference + "/history.csv").read() == before,
+          "bad restart (%s): exit 1, message <%s>, output kept"
+          % (name, message))
+finish()
