@@ -3,8 +3,10 @@ and contact forces to 1e-8 relative) on a 3D and a 2D multi-body scene and
 three contact scenes (friction on a rigid plane; deformable non-matching
 interface; 3D frictional sliding of two blocks, whose contact pattern
 changes: MUMPS' solver was destroyed after the matrix it referred to, and
-the run crashed), the same contact-NNNNN.csv, and writes the parallel VTU
-set (.pvtu plus one piece per rank)."""
+the run crashed), the same contact-NNNNN.csv, reports the load balance
+(min and max over the processes of their own assembly and contact time) in
+summary.txt, and writes the parallel VTU set (.pvtu plus one piece per
+rank)."""
 
 import os
 import sys
@@ -31,6 +33,11 @@ for name in ("cylinder_3d", "ring_2d", "sliding_block", "patch_test",
         numdiff(parallel + "/" + f, serial + "/" + f, relative=1e-8,
                 absolute=1e-10)
         print("ok      %s: %s equals the serial one" % (name, f))
+    summary = open(parallel + "/summary.txt").read()
+    check("balance assembly  min" in summary and
+          "balance contact   min" in summary,
+          "%s: summary.txt reports the load balance over the processes"
+          % name)
     pieces = [f for f in os.listdir(parallel) if f.endswith(".vtu")]
     check(os.path.exists(parallel + "/solution-00001.pvtu") and
           "solution-00001.0001.vtu" in pieces,

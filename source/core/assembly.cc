@@ -7,10 +7,22 @@
 #include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <chrono>
+
 namespace tribos
 {
   namespace
   {
+    double
+    seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+        .count();
+    }
+
+
+
     /** Per-thread workspace of the bulk assembly (WorkStream). */
     template <int dim>
     struct AssemblyScratch
@@ -112,7 +124,9 @@ namespace tribos
     if (contact)
     {
       TimerOutput::Scope search_timer(timer, "contact search");
+      const auto         start = std::chrono::steady_clock::now();
       contact->update(ghosted_solution, time);
+      own_contact_time += seconds_since(start);
       if (with_matrix && contact->sparsity_outdated())
         make_sparsity();
     }
@@ -537,6 +551,7 @@ namespace tribos
                                                rhs);
     };
 
+    const auto bulk_start = std::chrono::steady_clock::now();
     WorkStream::run(
       CellFilter(IteratorFilters::LocallyOwnedCell(),
                  dof_handler.begin_active()),
@@ -545,6 +560,7 @@ namespace tribos
       copier,
       AssemblyScratch<dim>(*fe, quadrature, face_quadrature),
       AssemblyCopy(dofs_per_cell, stabilization > 0, track_external, dynamic));
+    own_assembly_time += seconds_since(bulk_start);
     if (!failure.empty())
       throw InvertedElement(failure);
 
@@ -552,7 +568,8 @@ namespace tribos
     if (contact)
     {
       TimerOutput::Scope contact_timer(timer, "contact assembly");
-      contact_forces = 0;
+      contact_forces   = 0;
+      const auto start = std::chrono::steady_clock::now();
       contact->assemble(with_matrix,
                         constraints,
                         homogeneous_constraints,
@@ -561,6 +578,7 @@ namespace tribos
                         free_residual,
                         full_residual,
                         contact_forces);
+      own_contact_time += seconds_since(start);
       contact_forces.compress(VectorOperation::add);
     }
 

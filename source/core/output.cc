@@ -567,6 +567,15 @@ namespace tribos
   void
   Problem<dim>::write_summary(const std::string &status)
   {
+    // Load balance: each process's time in the sections its share of the
+    // cells and of the contact zone sets (collective, so before rank 0
+    // alone goes on). A contact zone on one process makes the others wait.
+    const std::vector<std::pair<std::string, Utilities::MPI::MinMaxAvg>>
+      balance = {
+        {"assembly",
+         Utilities::MPI::min_max_avg(own_assembly_time, mpi_communicator)},
+        {"contact",
+         Utilities::MPI::min_max_avg(own_contact_time, mpi_communicator)}};
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     const StepperTotals totals = stepper ? stepper->totals() : StepperTotals();
@@ -610,6 +619,11 @@ namespace tribos
         if (parameters.nonlinear_solver.stabilization > 0)
           out << "largest stabilization ratio "
               << totals.largest_stabilization_ratio << '\n';
+        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+          for (const auto &[section, t] : balance)
+            out << "balance " << std::left << std::setw(10) << section
+                << std::right << "min " << t.min << " s, max " << t.max
+                << " s, max/min " << (t.min > 0 ? t.max / t.min : 0.) << '\n';
         for (const auto &w : warnings)
           out << "warning           " << w << '\n';
         out << "\nsection               calls    wall [s]  share\n";
