@@ -3,10 +3,11 @@ and contact forces to 1e-8 relative) on a 3D and a 2D multi-body scene and
 three contact scenes (friction on a rigid plane; deformable non-matching
 interface; 3D frictional sliding of two blocks, whose contact pattern
 changes: MUMPS' solver was destroyed after the matrix it referred to, and
-the run crashed), the same contact-NNNNN.csv, reports the load balance
-(min and max over the processes of their own assembly and contact time) in
-summary.txt, and writes the parallel VTU set (.pvtu plus one piece per
-rank)."""
+the run crashed); also with Lagrange multipliers (owned with their slave
+node, MUMPS) on four of them; the same contact-NNNNN.csv, reports the load
+balance (min and max over the processes of their own assembly and contact
+time) in summary.txt, and writes the parallel VTU set (.pvtu plus one piece
+per rank)."""
 
 import os
 import sys
@@ -17,12 +18,19 @@ from tribos_test import (setup, run, strip_columns, numdiff, read_csv, check,
 tribos, tests, out = setup(sys.argv)
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all")
-for name in ("cylinder_3d", "ring_2d", "sliding_block", "patch_test",
-             "sliding_blocks_3d"):
+lagrange = ["Contact/Method=lagrange multiplier"]
+cases = [(name, name, []) for name in ("cylinder_3d", "ring_2d",
+                                       "sliding_block", "patch_test",
+                                       "sliding_blocks_3d")]
+cases += [(name + "_lagrange", name, lagrange)
+          for name in ("sliding_block", "patch_test", "ring_2d",
+                       "sliding_blocks_3d")]
+for label, name, sets in cases:
     prm = "%s/%s.prm" % (tests, name)
+    name = label
     serial, parallel = out + "/" + name + "_serial", out + "/" + name + "_np2"
-    run(tribos, prm, serial)
-    run(tribos, prm, parallel, ["Output/Write VTU=true"], mpi_ranks=2)
+    run(tribos, prm, serial, sets)
+    run(tribos, prm, parallel, sets + ["Output/Write VTU=true"], mpi_ranks=2)
     strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
     strip_columns(parallel + "/history.csv", parallel + "/h.csv", drop=noisy)
     numdiff(parallel + "/h.csv", serial + "/h.csv", relative=1e-8,

@@ -8,7 +8,7 @@ plasticity with the plate (axisymmetric cylinder: the plastic history),
 dynamics with friction (block sliding to a stop: velocities, energies).
 MPI (only if mpirun is found): a frictional 3D two-block scene run with
 np 2 and restarted with np 1, 2 and 3 from its step-2 checkpoint, and
-with np 2 from the serial run's. Bad restarts (no checkpoint, another mesh)
+with np 2 from the serial run's; with Lagrange multipliers from np 2 to 3. Bad restarts (no checkpoint, another mesh)
 exit 1 with a message and leave the output alone."""
 
 import os
@@ -81,6 +81,14 @@ if has_mpi:
                 "3D sliding blocks, np 2 -> np %d" % ranks)
     compare(serial, restarted(tribos, prm, serial, 2, sets, "np2", ranks=2),
             "3D sliding blocks, np 1 -> np 2")
+    # Lagrange multipliers, owned with their slave nodes, onto 3 processes.
+    sets = sets + ["Contact/Method=lagrange multiplier"]
+    parallel = out + "/blocks_lagrange_np2"
+    run(tribos, prm, parallel, sets + ["Output/Checkpoint every=2"],
+        mpi_ranks=2)
+    compare(parallel, restarted(tribos, prm, parallel, 2, sets, "np3",
+                                ranks=3),
+            "3D sliding blocks, Lagrange multipliers, np 2 -> np 3")
 
 # Bad restarts: a clear message, exit 1, the earlier output untouched.
 reference = out + "/sliding_penalty"

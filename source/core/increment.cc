@@ -82,7 +82,6 @@ namespace tribos
   {
     if (n_multipliers == 0)
       return {v.l2_norm(), 0};
-    // Multipliers only in serial runs: every entry is owned here.
     double                        squared[2] = {0, 0};
     const types::global_dof_index n_dofs     = dof_handler.n_dofs();
     for (const auto i : system_owned)

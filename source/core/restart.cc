@@ -73,15 +73,15 @@ namespace tribos
     AssertThrow(c.stepper.step == step,
                 ExcInternalError("checkpoint of another step"));
 
-    // The displacement part of the solution, then the multipliers (one
-    // process only: every entry is here).
+    // The displacement part of the solution, then the multipliers (from
+    // the ghosted solution: every process has all of them).
     Vector owned(locally_owned_dofs, mpi_communicator);
     for (const auto i : locally_owned_dofs)
       owned[i] = owned_solution[i];
     owned.compress(VectorOperation::insert);
     c.cell_values["solution"] = cell_values(owned);
     for (types::global_dof_index i = 0; i < n_multipliers; ++i)
-      c.multipliers.push_back(owned_solution[dof_handler.n_dofs() + i]);
+      c.multipliers.push_back(ghosted_solution[dof_handler.n_dofs() + i]);
 
     // Plastic history of the owned cells, gathered in cell order.
     std::vector<std::pair<unsigned int, std::vector<double>>> mine;
@@ -180,7 +180,8 @@ namespace tribos
       "--restart <" + parameters.restart_directory + ">: ";
     set_from_cell_values(c.cell_values.at("solution"), owned_solution);
     for (types::global_dof_index i = 0; i < n_multipliers; ++i)
-      owned_solution[dof_handler.n_dofs() + i] = c.multipliers[i];
+      if (system_owned.is_element(dof_handler.n_dofs() + i))
+        owned_solution[dof_handler.n_dofs() + i] = c.multipliers[i];
     owned_solution.compress(VectorOperation::insert);
     solution_changed();
 

@@ -231,17 +231,23 @@ namespace tribos
     system_relevant.add_indices(locally_relevant_dofs);
     if (n_multipliers > 0)
     {
-      AssertThrow(Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
-                  ExcMessage("Contact/Method = lagrange multiplier runs on "
-                             "one MPI process; use penalty or augmented "
-                             "lagrangian with MPI."));
       AssertThrow(parameters.linear_solver.type !=
                     Parameters::LinearSolver::Type::iterative,
                   ExcMessage("Contact/Method = lagrange multiplier gives an "
                              "indefinite saddle-point system: it needs "
                              "Linear solver/Type = direct (a pivoting sparse "
                              "direct solver), not <iterative>."));
-      system_owned.add_range(dof_handler.n_dofs(), n_system);
+      // A node's multipliers belong to the process that owns the node (and
+      // evaluates it); every process reads all of them (the contact zone's
+      // unknowns, few against the dofs).
+      for (const auto &pair : contact->pairs())
+      {
+        const unsigned int n = pair.enforcement->n_node_unknowns();
+        for (unsigned int k = 0; k < pair.n_nodes() && n > 0; ++k)
+          if (pair.owned[k])
+            system_owned.add_range(pair.first_unknown + n * k,
+                                   pair.first_unknown + n * (k + 1));
+      }
       system_relevant.add_range(dof_handler.n_dofs(), n_system);
     }
     system_owned.compress();
