@@ -68,32 +68,17 @@ namespace tribos
     massless_rows = IndexSet(dof_handler.n_dofs());
     if (massless_dofs.n_elements() > 0)
     {
-      Vector             lumped(locally_owned_dofs, mpi_communicator);
-      FEValues<dim>      fe_values(*fe,
-                              quadrature,
-                              update_values | update_JxW_values |
-                                update_quadrature_points);
-      const unsigned int n = fe->n_dofs_per_cell();
-      std::vector<types::global_dof_index> dof_indices(n);
-      std::vector<unsigned int>            component(n);
-      std::vector<double>                  diagonal(n);
-      for (unsigned int i = 0; i < n; ++i)
-        component[i] = fe->system_to_component_index(i).first;
-      FullMatrix<double> cell_mass;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          cell->get_dof_indices(dof_indices);
-          cell_mass_matrix(fe_values,
-                           dof_indices,
-                           component,
-                           densities[cell->material_id()],
-                           cell_mass);
-          for (unsigned int i = 0; i < n; ++i)
-            diagonal[i] = cell_mass(i, i);
-          lumped.add(dof_indices, diagonal);
-        }
+      Vector              lumped(locally_owned_dofs, mpi_communicator);
+      std::vector<double> diagonal;
+      for_each_cell_mass(true,
+                         [&](const std::vector<types::global_dof_index> &dofs,
+                             const FullMatrix<double> &cell_mass)
+                         {
+                           diagonal.resize(dofs.size());
+                           for (unsigned int i = 0; i < dofs.size(); ++i)
+                             diagonal[i] = cell_mass(i, i);
+                           lumped.add(dofs, diagonal);
+                         });
       lumped.compress(VectorOperation::add);
       for (const auto i : locally_owned_dofs)
         if (lumped[i] == 0)
@@ -233,6 +218,40 @@ namespace tribos
 
   template <int dim>
   void
+  Problem<dim>::for_each_cell_mass(
+    const bool                                             remove_contact_mass,
+    const std::function<void(const std::vector<types::global_dof_index> &,
+                             const FullMatrix<double> &)> &f) const
+  {
+    FEValues<dim>                        fe_values(*fe,
+                            quadrature,
+                            update_values | update_JxW_values |
+                              update_quadrature_points);
+    const unsigned int                   n = fe->n_dofs_per_cell();
+    std::vector<types::global_dof_index> dof_indices(n);
+    std::vector<unsigned int>            component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe->system_to_component_index(i).first;
+    FullMatrix<double> cell_mass;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        fe_values.reinit(cell);
+        cell->get_dof_indices(dof_indices);
+        cell_mass_matrix(fe_values,
+                         dof_indices,
+                         component,
+                         densities[cell->material_id()],
+                         cell_mass,
+                         remove_contact_mass);
+        f(dof_indices, cell_mass);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   Problem<dim>::compute_initial_acceleration()
   {
     // The static residual at t = 0 (no inertia): zero for a body that
@@ -278,33 +297,14 @@ namespace tribos
                   locally_owned_dofs,
                   dsp,
                   mpi_communicator);
-      FEValues<dim>                        fe_values(*fe,
-                              quadrature,
-                              update_values | update_JxW_values |
-                                update_quadrature_points);
-      const unsigned int                   n = fe->n_dofs_per_cell();
-      std::vector<types::global_dof_index> dof_indices(n);
-      std::vector<unsigned int>            component(n);
-      for (unsigned int i = 0; i < n; ++i)
-        component[i] = fe->system_to_component_index(i).first;
-      FullMatrix<double> cell_mass;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          cell->get_dof_indices(dof_indices);
-          // The bodies' physical mass: a_0 of every node, the contact
-          // nodes' included (there it does not enter the balance).
-          cell_mass_matrix(fe_values,
-                           dof_indices,
-                           component,
-                           densities[cell->material_id()],
-                           cell_mass,
-                           false);
-          homogeneous_constraints.distribute_local_to_global(cell_mass,
-                                                             dof_indices,
-                                                             mass);
-        }
+      // The bodies' physical mass: a_0 of every node, the contact nodes'
+      // included (there it does not enter the balance).
+      for_each_cell_mass(false,
+                         [&](const std::vector<types::global_dof_index> &dofs,
+                             const FullMatrix<double> &cell_mass) {
+                           homogeneous_constraints
+                             .distribute_local_to_global(cell_mass, dofs, mass);
+                         });
       mass.compress(VectorOperation::add);
 
       SolverControl control(10 * dof_handler.n_dofs(), 1e-12 * force.l2_norm());

@@ -25,6 +25,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -237,6 +238,13 @@ namespace tribos
                      const double                                density,
                      FullMatrix<double>                         &mass,
                      const bool remove_contact_mass = true) const;
+    /** Call @p f with the dofs and the mass matrix of every locally owned
+     * cell (the contact mass removed or not). */
+    void
+    for_each_cell_mass(
+      const bool remove_contact_mass,
+      const std::function<void(const std::vector<types::global_dof_index> &,
+                               const FullMatrix<double> &)> &f) const;
     /** M a_0 = f_ext - f_int - f_contact at t = 0 (if that is not zero). */
     void
     compute_initial_acceleration();
