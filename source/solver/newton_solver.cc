@@ -186,11 +186,10 @@ namespace tribos
         throw NonConvergence("the linear solver (" + linear_solver.method() +
                              ") returned a non-finite update (singular "
                              "system?)");
-      if (linear_solver.method() != announced)
-      {
-        announced = linear_solver.method();
-        problem.message("  linear solver: " + announced);
-      }
+      // Each method once: frictional runs switch between Cholesky and LU
+      // as the tangent's symmetry comes and goes.
+      if (announced.insert(linear_solver.method()).second)
+        problem.message("  linear solver: " + linear_solver.method());
       problem.distribute(update, first);
 
       // No line search on the first iteration (it carries the Dirichlet

@@ -5,6 +5,7 @@
 #include <tribos/solver/linear_solver.h>
 #include <tribos/solver/nonlinear_problem.h>
 
+#include <set>
 #include <string>
 
 namespace tribos
@@ -60,8 +61,8 @@ namespace tribos
     const Parameters::NonlinearSolver &parameters;
     LinearSolver                      &linear_solver;
     unsigned int                       linear_solves = 0;
-    /** The linear solver method the log last named. */
-    std::string announced;
+    /** The linear solver methods the log has named. */
+    std::set<std::string> announced;
   };
 } // namespace tribos
 
