@@ -1,0 +1,35 @@
+"""MPI, every enforcement method with friction: `mpirun -np 2` and `-np 3`
+(oversubscribed on small machines) give the serial history to 1e-8
+relative (reactions, contact forces, stick/slip counts) for penalty,
+augmented Lagrangian and Lagrange multipliers, in 2D (a block dragged over
+a rigid plane; the ironing: large frictional sliding over a deformable
+master) and in 3D (two blocks sliding with friction over a deformable
+non-matching interface). Which process owns which slave node and master
+face is the partitioner's choice; these runs do not check it."""
+
+import sys
+
+from tribos_test import setup, run, strip_columns, numdiff, finish
+
+tribos, tests, out = setup(sys.argv)
+noisy = ("wall_time", "residual", "newton_iterations",
+         "newton_iterations_all")
+methods = ("penalty", "augmented lagrangian", "lagrange multiplier")
+for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d"):
+    prm = "%s/%s.prm" % (tests, scene)
+    for method in methods:
+        sets = ["Contact/Method=" + method, "Output/Write VTU=false"]
+        name = "%s_%s" % (scene, method.replace(" ", "_"))
+        serial = out + "/" + name + "_np1"
+        run(tribos, prm, serial, sets)
+        strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
+        for ranks in (2, 3):
+            parallel = out + "/%s_np%d" % (name, ranks)
+            run(tribos, prm, parallel, sets, mpi_ranks=ranks)
+            strip_columns(parallel + "/history.csv", parallel + "/h.csv",
+                          drop=noisy)
+            numdiff(parallel + "/h.csv", serial + "/h.csv", relative=1e-8,
+                    absolute=1e-8)
+            print("ok      %s, %s: np %d history equals the serial one"
+                  % (scene, method, ranks))
+finish()
