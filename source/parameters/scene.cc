@@ -318,6 +318,14 @@ namespace tribos
                         Patterns::Double(0),
                         "Distance between the ring's bottom and the "
                         "foundation's top (y = 0).");
+      prm.declare_entry("Whole ring",
+                        "false",
+                        Patterns::Bool(),
+                        "false: the lower half ring of the paper (its ends, "
+                        "the cut at the centre height, are boundaries 2 and "
+                        "3); true: the whole ring, 2 x Circumferential cells "
+                        "around (no ends), e.g. for a ring dropped in "
+                        "dynamics.");
       prm.leave_subsection();
     }
 
@@ -336,6 +344,7 @@ namespace tribos
       foundation_height      = positive(prm, "Foundation height");
       foundation_cells       = cell_counts(prm, "Foundation cells");
       gap                    = prm.get_double("Gap");
+      whole_ring             = prm.get_bool("Whole ring");
       AssertThrow(inner_radius < interface_radius &&
                     interface_radius < outer_radius,
                   dealii::ExcMessage(

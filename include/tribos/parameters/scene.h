@@ -105,6 +105,9 @@ namespace tribos
       double                    foundation_height;
       std::vector<unsigned int> foundation_cells;
       double                    gap;
+      /** The whole ring instead of its lower half (dynamics: a ring in
+       * flight). */
+      bool whole_ring;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
