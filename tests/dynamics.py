@@ -26,6 +26,12 @@ Cases (argv[4]):
                  recursion before, from v = 0: their acceleration alternated
                  in sign and grew, and the mean reaction while pushing came
                  out -9.3e-4 instead of 5e-4.)
+  ring           the paper's whole ring dropped on its foundation
+                 (parameters/ring_drop.prm to t = 8: the impact and the
+                 first rebound of the soft outer layer): in contact at some
+                 step, kinetic + strain energy + contact work within 1e-3
+                 of the initial, integrator balance (energy_error) below
+                 1e-6 of it.
   quasi_static   the axisymmetric J2 cylinder loaded slowly (wave transit
                  1e-4 of the loading time): the dynamic plate force equals
                  the quasi-static one within 0.1 % at every step.
@@ -145,6 +151,24 @@ elif case == "pushed":
           min(held), 1e-6)
     check("energy after the push", held[-1], rho * c * V ** 2 * A * 1.0,
           0.02)
+
+elif case == "ring":
+    tt.run(tribos, os.path.join(parameters, "ring_drop.prm"), out,
+           ["Time stepping/End time=8", "Time stepping/Number of steps=160",
+            "Output/Write VTU=false"])
+    rows = tt.read_csv(out + "/history.csv")
+    initial = rows[0]["total_energy"]
+    in_contact = sum(1 for r in rows if r["n_active"] > 0)
+    print("%-6s %-44s %d of %d" % ("ok" if in_contact else "FAILED",
+                                   "steps in contact", in_contact,
+                                   len(rows)))
+    if in_contact == 0:
+        failures.append("steps in contact")
+    check("largest total energy change (+1)",
+          1 + max(abs(r["total_energy"] / initial - 1) for r in rows), 1,
+          1e-3)
+    check("largest integrator imbalance (+1)",
+          1 + max(abs(r["energy_error"]) for r in rows) / initial, 1, 1e-6)
 
 elif case == "order":
     prm = os.path.join(tests, "vibrating_bar.prm")
