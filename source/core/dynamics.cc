@@ -5,7 +5,6 @@
  * assembly.cc.
  */
 
-#include <tribos/core/f_bar.h>
 #include <tribos/core/problem.h>
 #include <tribos/core/vector_function.h>
 
@@ -134,7 +133,6 @@ namespace tribos
     kinetic_energy         = e.kinetic;
     strain_energy          = e.stored;
     momentum               = e.momentum;
-    initial_energy         = e.kinetic + e.stored;
     initial_kinetic_energy = e.kinetic;
     pcout << "  dynamics: "
           << (ts.integrator == Parameters::Integrator::newmark ?
@@ -390,104 +388,40 @@ namespace tribos
   typename Problem<dim>::Energies
   Problem<dim>::energies() const
   {
-    const bool         axisymmetric = parameters.finite_element.axisymmetric;
-    const bool         f_bar        = parameters.finite_element.f_bar;
-    const Vector      &u            = ghosted_displacement();
-    FEValues<dim>      fe_values(*fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values | update_quadrature_points);
-    FEValues<dim>      fe_centre(*fe,
-                            QGauss<dim>(1),
-                            update_values | update_gradients |
-                              update_quadrature_points);
-    const unsigned int n   = fe->n_dofs_per_cell();
-    const unsigned int n_q = quadrature.size();
-    std::vector<types::global_dof_index>     dof_indices(n);
-    std::vector<unsigned int>                component(n);
-    std::vector<std::vector<Tensor<1, dim>>> gradients(
-      n_q,
-      std::vector<Tensor<1, dim>>(dim));
-    std::vector<dealii::Vector<double>>      values(n_q,
-                                               dealii::Vector<double>(dim));
-    std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
-      1,
-      std::vector<Tensor<1, dim>>(dim));
-    std::vector<dealii::Vector<double>> centre_values(1,
-                                                      dealii::Vector<double>(
-                                                        dim));
-    for (unsigned int i = 0; i < n; ++i)
-      component[i] = fe->system_to_component_index(i).first;
-    FullMatrix<double> cell_mass;
-    Energies           e;
-
-    for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      if (!cell->is_locally_owned())
-        continue;
-      fe_values.reinit(cell);
-      cell->get_dof_indices(dof_indices);
-      cell_mass_matrix(fe_values,
-                       dof_indices,
-                       component,
-                       densities[cell->material_id()],
-                       cell_mass);
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < n; ++j)
-        {
-          const double p = cell_mass(i, j) * ghosted_velocity[dof_indices[j]];
-          e.kinetic += 0.5 * ghosted_velocity[dof_indices[i]] * p;
-          e.momentum[component[i]] += p;
-        }
-
-      // The stored energy at the deformation gradient the stress sees (the
-      // F-bar one where F-bar is on).
-      fe_values.get_function_gradients(u, gradients);
-      fe_values.get_function_values(u, values);
-      double J0 = 1;
-      if (f_bar)
+    Energies e;
+    for_each_cell_mass(
+      true,
+      [&](const std::vector<types::global_dof_index> &dofs,
+          const FullMatrix<double>                   &cell_mass)
       {
-        fe_centre.reinit(cell);
-        fe_centre.get_function_gradients(u, centre_gradients);
-        fe_centre.get_function_values(u, centre_values);
-        Tensor<2, dim> F0 = unit_symmetric_tensor<dim>();
-        for (unsigned int c = 0; c < dim; ++c)
-          F0[c] += centre_gradients[0][c];
-        J0 = determinant(F0);
-        if (axisymmetric)
-          J0 *= 1. + centre_values[0](0) / fe_centre.quadrature_point(0)[0];
-      }
-      const unsigned int n_history = n_history_variables(cell->material_id());
-      const unsigned int offset    = history_offset[cell->active_cell_index()];
-      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          for (unsigned int j = 0; j < dofs.size(); ++j)
+          {
+            const double p = cell_mass(i, j) * ghosted_velocity[dofs[j]];
+            e.kinetic += 0.5 * ghosted_velocity[dofs[i]] * p;
+            e.momentum[fe->system_to_component_index(i).first] += p;
+          }
+      });
+    // The stored energy at the deformation gradient the stress sees.
+    const bool axisymmetric = parameters.finite_element.axisymmetric;
+    for_each_material_point(
+      [&](const auto           &cell,
+          const FEValues<dim>  &fe_values,
+          const unsigned int    q,
+          const Tensor<2, dim> &F,
+          const Tensor<2, 3>   &F3,
+          const double         *history)
       {
-        Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-        for (unsigned int c = 0; c < dim; ++c)
-          F[c] += gradients[q][c];
-        const double *history =
-          n_history ? &history_old[offset + q * n_history] : nullptr;
         if (axisymmetric)
-        {
-          const double radius = fe_values.quadrature_point(q)[0];
-          Tensor<2, 3> F3;
-          for (unsigned int a = 0; a < 2; ++a)
-            for (unsigned int b = 0; b < 2; ++b)
-              F3[a][b] = F[a][b];
-          F3[2][2]       = 1. + values[q](0) / radius;
-          const double s = f_bar ? FBar<3>::scale(F3, J0) : 1.;
           e.stored += axisymmetric_materials[cell->material_id()]
-                        ->stored_energy(s * F3, history) *
-                      fe_values.JxW(q) * 2. * numbers::PI * radius;
-        }
+                        ->stored_energy(F3, history) *
+                      fe_values.JxW(q) * 2. * numbers::PI *
+                      fe_values.quadrature_point(q)[0];
         else
-        {
-          const double s = f_bar ? FBar<dim>::scale(F, J0) : 1.;
           e.stored +=
-            materials[cell->material_id()]->stored_energy(s * F, history) *
+            materials[cell->material_id()]->stored_energy(F, history) *
             fe_values.JxW(q);
-        }
-      }
-    }
+      });
     e.kinetic  = Utilities::MPI::sum(e.kinetic, mpi_communicator);
     e.stored   = Utilities::MPI::sum(e.stored, mpi_communicator);
     e.momentum = Utilities::MPI::sum(e.momentum, mpi_communicator);

@@ -1,4 +1,3 @@
-#include <tribos/core/f_bar.h>
 #include <tribos/core/problem.h>
 
 #include <deal.II/base/utilities.h>
@@ -325,98 +324,45 @@ namespace tribos
     for (const auto &m : axisymmetric_materials)
       any_history = any_history || m->n_history_variables() > 0;
 
-    const bool    axisymmetric = parameters.finite_element.axisymmetric;
-    FEValues<dim> fe_values(*fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
-    std::vector<dealii::Vector<double>>      values(quadrature.size(),
-                                               dealii::Vector<double>(dim));
-    std::vector<std::vector<Tensor<1, dim>>> gradients(
-      quadrature.size(),
-      std::vector<Tensor<1, dim>>(dim));
-    FEValues<dim>                            fe_values_centre(*fe,
-                                   QGauss<dim>(1),
-                                   update_values | update_gradients |
-                                     update_quadrature_points);
-    std::vector<std::vector<Tensor<1, dim>>> centre_gradients(
-      1,
-      std::vector<Tensor<1, dim>>(dim));
-    std::vector<dealii::Vector<double>> centre_values(1,
-                                                      dealii::Vector<double>(
-                                                        dim));
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    const bool axisymmetric = parameters.finite_element.axisymmetric;
+    std::vector<SymmetricTensor<2, 3>> sums(triangulation.n_active_cells());
+    std::vector<double>                volume(triangulation.n_active_cells()),
+      peeq(triangulation.n_active_cells());
+    for_each_material_point(
+      [&](const auto           &cell,
+          const FEValues<dim>  &fe_values,
+          const unsigned int    q,
+          const Tensor<2, dim> &F,
+          const Tensor<2, 3>   &F3,
+          const double         *history)
+      {
+        // Axisymmetric: stress_zz is the hoop stress.
+        const unsigned int index = cell->active_cell_index();
+        const double       JxW   = fe_values.JxW(q);
+        if (axisymmetric)
+        {
+          const auto &material = *axisymmetric_materials[cell->material_id()];
+          sums[index] += JxW * material.cauchy_stress(F3, history);
+          peeq[index] += JxW * material.equivalent_plastic_strain(history);
+        }
+        else
+        {
+          const auto &material = *materials[cell->material_id()];
+          sums[index] += JxW * material.cauchy_stress(F, history);
+          peeq[index] += JxW * material.equivalent_plastic_strain(history);
+        }
+        volume[index] += JxW;
+      });
+    for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
       {
-        const unsigned int index = cell->active_cell_index();
-        fe_values.reinit(cell);
-        fe_values.get_function_gradients(ghosted_displacement(), gradients);
-        if (axisymmetric)
-          fe_values.get_function_values(ghosted_displacement(), values);
-        double J0 = 1;
-        if (parameters.finite_element.f_bar)
-        {
-          // The stress of the F-bar element is that of F_bar = s F.
-          fe_values_centre.reinit(cell);
-          fe_values_centre.get_function_gradients(ghosted_displacement(),
-                                                  centre_gradients);
-          Tensor<2, dim> F0 = unit_symmetric_tensor<dim>();
-          for (unsigned int c = 0; c < dim; ++c)
-            F0[c] += centre_gradients[0][c];
-          J0 = determinant(F0);
-          if (axisymmetric)
-          {
-            // With the hoop stretch of the centre (as in assembly).
-            fe_values_centre.get_function_values(ghosted_displacement(),
-                                                 centre_values);
-            J0 *= 1. +
-                  centre_values[0](0) / fe_values_centre.quadrature_point(0)[0];
-          }
-        }
-        const auto        &material  = *materials[cell->material_id()];
-        const unsigned int n_history = n_history_variables(cell->material_id());
-        SymmetricTensor<2, 3> average;
-        double                volume = 0, peeq = 0;
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
-        {
-          Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-          for (unsigned int c = 0; c < dim; ++c)
-            F[c] += gradients[q][c];
-          const double *history =
-            n_history ? &history_old[history_offset[index] + q * n_history] :
-                        nullptr;
-          if (parameters.finite_element.f_bar && !axisymmetric)
-            F *= FBar<dim>::scale(F, J0);
-          if (axisymmetric)
-          {
-            // stress_zz is the hoop stress.
-            Tensor<2, 3> F3;
-            for (unsigned int a = 0; a < 2; ++a)
-              for (unsigned int b = 0; b < 2; ++b)
-                F3[a][b] = F[a][b];
-            F3[2][2] = 1. + values[q](0) / fe_values.quadrature_point(q)[0];
-            if (parameters.finite_element.f_bar)
-              F3 *= FBar<3>::scale(F3, J0);
-            const auto &material3 =
-              *axisymmetric_materials[cell->material_id()];
-            average += fe_values.JxW(q) * material3.cauchy_stress(F3, history);
-            peeq +=
-              fe_values.JxW(q) * material3.equivalent_plastic_strain(history);
-          }
-          else
-          {
-            average += fe_values.JxW(q) * material.cauchy_stress(F, history);
-            peeq +=
-              fe_values.JxW(q) * material.equivalent_plastic_strain(history);
-          }
-          volume += fe_values.JxW(q);
-        }
-        average /= volume;
+        const unsigned int          index   = cell->active_cell_index();
+        const SymmetricTensor<2, 3> average = sums[index] / volume[index];
         for (unsigned int s = 0; s < n_stress; ++s)
           stress[s][index] = average[stress_index[s][0]][stress_index[s][1]];
         const SymmetricTensor<2, 3> dev = deviator(average);
         von_mises[index]                = std::sqrt(1.5 * (dev * dev));
-        plastic_strain[index]           = peeq / volume;
+        plastic_strain[index]           = peeq[index] / volume[index];
         body_id[index]                  = cell->material_id();
         subdomain[index]                = cell->subdomain_id();
       }

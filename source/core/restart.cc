@@ -119,7 +119,6 @@ namespace tribos
                                              {"contact_work", contact_work},
                                              {"friction_work", friction_work},
                                              {"external_work", external_work},
-                                             {"initial_energy", initial_energy},
                                              {"initial_kinetic_energy", initial_kinetic_energy}};
     }
     c.pvd_records = pvd_records;
@@ -234,7 +233,6 @@ namespace tribos
       contact_work           = c.scalars.at("contact_work");
       friction_work          = c.scalars.at("friction_work");
       external_work          = c.scalars.at("external_work");
-      initial_energy         = c.scalars.at("initial_energy");
       initial_kinetic_energy = c.scalars.at("initial_kinetic_energy");
       momentum               = energies().momentum;
     }

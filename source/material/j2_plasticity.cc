@@ -462,25 +462,12 @@ namespace tribos
   {
     // Hencky: tau = 2 G dev(eps_e) + K tr(eps_e) 1, so the elastic energy
     // G |dev eps_e|^2 + K/2 tr(eps_e)^2 is |dev tau|^2 / (4 G) +
-    // tr(tau)^2 / (18 K).
-    const Mat3<double> F = embed<double>(F_in);
-    Mat3<double>       tau;
-    return_map(F,
-               history,
-               bulk_modulus,
-               shear_modulus,
-               hardening,
-               tau,
-               nullptr);
-    const double trace       = tau[0][0] + tau[1][1] + tau[2][2];
-    double       dev_squared = 0;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-      {
-        const double d = tau[i][j] - (i == j ? trace / 3. : 0.);
-        dev_squared += d * d;
-      }
-    return dev_squared / (4. * shear_modulus) +
+    // tr(tau)^2 / (18 K), with tau = J sigma.
+    const SymmetricTensor<2, 3> tau =
+      determinant(F_in) * cauchy_stress(F_in, history);
+    const double                trace = dealii::trace(tau);
+    const SymmetricTensor<2, 3> dev   = deviator(tau);
+    return (dev * dev) / (4. * shear_modulus) +
            trace * trace / (18. * bulk_modulus);
   }
 

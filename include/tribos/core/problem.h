@@ -286,6 +286,26 @@ namespace tribos
      * opened: it says which rows and files of the earlier run to keep). */
     std::unique_ptr<Checkpoint> restart;
 
+    /* material_points.cc */
+    /** What for_each_material_point() calls: the cell, its FEValues, the
+     * quadrature point, the deformation gradient the material sees (F, or
+     * in an axisymmetric model F3 with the hoop stretch, F then being the
+     * in-plane part) and the converged history. */
+    using MaterialPointFunction = std::function<
+      void(const typename DoFHandler<dim>::active_cell_iterator &cell,
+           const FEValues<dim>                                  &fe_values,
+           const unsigned int                                    q,
+           const Tensor<2, dim>                                 &F,
+           const Tensor<2, 3>                                   &F3,
+           const double                                         *history)>;
+    /**
+     * Call @p f at every quadrature point of every locally owned cell at
+     * the converged displacement and history, with the deformation
+     * gradient its material sees (F-bar scaled where F-bar is on).
+     */
+    void
+    for_each_material_point(const MaterialPointFunction &f) const;
+
     /* output.cc */
     void
     open_output();
@@ -462,11 +482,11 @@ namespace tribos
     /** Energies of the last converged state: kinetic, stored, the work of
      * the internal forces, the work absorbed by contact, the friction
      * dissipation and the work of the applied loads and Dirichlet
-     * reactions (sums since t = 0), and the initial energies. */
+     * reactions (sums since t = 0), and the initial kinetic energy. */
     Tensor<1, dim> momentum;
     double         kinetic_energy = 0, strain_energy = 0, internal_work = 0,
            contact_work = 0, friction_work = 0, external_work = 0,
-           initial_energy = 0, initial_kinetic_energy = 0;
+           initial_kinetic_energy = 0;
     /** The internal forces f_int at the last converged time. */
     Vector old_internal;
 
