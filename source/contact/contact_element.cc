@@ -2,7 +2,7 @@
 
 namespace tribos
 {
-  namespace
+  namespace internal
   {
     using AD = ContactAD;
 
@@ -23,6 +23,134 @@ namespace tribos
       const Vec3<Number> w = cross(f, onto);
       return scale(c, v) + cross(w, v) + scale(dot(w, v) / (1. + c), w);
     }
+
+    /** Seed @p n_values entries of @p x as independent AD variables. */
+    template <int dim>
+    Vec3<ContactAD>
+    seed(const Vec3<double> &x, const unsigned int first, const unsigned int n)
+    {
+      Vec3<AD> result;
+      for (unsigned int d = 0; d < 3; ++d)
+        result[d] = (d < dim ? AD(n, first + d, x[d]) : AD(x[d]));
+      return result;
+    }
+
+
+
+    /**
+     * The slip increment of the step, written once for every element: the
+     * tangential part (at the current @p normal) of @p moved - xbar_n,
+     * @p moved being where the master material point under the slave's
+     * projection point was at the last converged step (a face: sum N_a(xi)
+     * x_a,n; a rigid surface: the projection point less the surface's
+     * translation in the step) and xbar_n the committed projection point.
+     */
+    Vec3<AD>
+    slip_increment(const Vec3<AD>  &moved,
+                   const NodeState &committed,
+                   const Vec3<AD>  &normal)
+    {
+      const Vec3<AD> relative = moved - to<AD>(committed.point);
+      return relative - scale(dot(relative, normal), normal);
+    }
+
+
+
+    /** The committed traction turned with the normal (zero if the node was
+     * open, or if the normal turned over). */
+    Vec3<AD>
+    committed_traction(const NodeState &committed, const Vec3<AD> &normal)
+    {
+      Vec3<AD> turned = {{AD(0.), AD(0.), AD(0.)}};
+      if (committed.closed() &&
+          value_of(dot(to<AD>(committed.result.normal), normal)) > 0)
+        turned = turn(committed.result.normal,
+                      normal,
+                      to<AD>(committed.result.traction));
+      return turned;
+    }
+
+
+
+    template <int dim>
+    void
+    finish_weighted(const PointKinematics  &kinematics,
+                    const ContactAD        *weights,
+                    const unsigned int      n_force_nodes,
+                    const unsigned int      n_displacements,
+                    const ContactAD        &row_area,
+                    const SlaveInput       &slave,
+                    const Enforcement<dim> &enforcement,
+                    double                 *R,
+                    double                 *K,
+                    ContactPointResult     &result)
+    {
+      result.gap = value_of(kinematics.gap);
+      for (unsigned int d = 0; d < 3; ++d)
+        result.normal[d] = value_of(kinematics.normal[d]);
+
+      const unsigned int n_unknowns = enforcement.n_node_unknowns();
+      const unsigned int n_out      = n_displacements + n_unknowns;
+      Vec3<AD>           unknowns, force, constraint;
+      if (n_unknowns > 0)
+        unknowns = seed<dim>(*slave.unknowns, n_displacements, n_out);
+      enforcement.local_law(kinematics,
+                            slave.law,
+                            n_unknowns > 0 ? &unknowns : nullptr,
+                            force,
+                            constraint,
+                            result);
+      result.area = value_of(row_area);
+
+      for (unsigned int i = 0; i < n_out; ++i)
+      {
+        AD residual = 0.;
+        if (i < dim * n_force_nodes)
+          residual = weights[i / dim] * force[i % dim];
+        else if (i >= n_displacements)
+          residual = row_area * constraint[i - n_displacements];
+        R[i] = residual.val();
+        if (K != nullptr)
+          for (unsigned int j = 0; j < n_out; ++j)
+            K[i * n_out + j] = residual.dx(j);
+      }
+    }
+
+    template Vec3<ContactAD>
+    seed<2>(const Vec3<double> &, const unsigned int, const unsigned int);
+    template Vec3<ContactAD>
+    seed<3>(const Vec3<double> &, const unsigned int, const unsigned int);
+    template void
+    finish_weighted<2>(const PointKinematics &,
+                       const ContactAD *,
+                       const unsigned int,
+                       const unsigned int,
+                       const ContactAD &,
+                       const SlaveInput &,
+                       const Enforcement<2> &,
+                       double *,
+                       double *,
+                       ContactPointResult &);
+    template void
+    finish_weighted<3>(const PointKinematics &,
+                       const ContactAD *,
+                       const unsigned int,
+                       const unsigned int,
+                       const ContactAD &,
+                       const SlaveInput &,
+                       const Enforcement<3> &,
+                       double *,
+                       double *,
+                       ContactPointResult &);
+  } // namespace internal
+
+  namespace
+  {
+    using AD = ContactAD;
+    using internal::committed_traction;
+    using internal::seed;
+    using internal::slip_increment;
+    using internal::turn;
 
     /**
      * The committed traction @p T (tangent to the committed face) turned with
@@ -77,62 +205,11 @@ namespace tribos
 
 
 
-    /** Seed @p n_values entries of @p x as independent AD variables. */
-    template <int dim>
-    Vec3<AD>
-    seed(const Vec3<double> &x, const unsigned int first, const unsigned int n)
-    {
-      Vec3<AD> result;
-      for (unsigned int d = 0; d < 3; ++d)
-        result[d] = (d < dim ? AD(n, first + d, x[d]) : AD(x[d]));
-      return result;
-    }
-
-
-
     /**
-     * The slip increment of the step, written once for every element: the
-     * tangential part (at the current @p normal) of @p moved - xbar_n,
-     * @p moved being where the master material point under the slave's
-     * projection point was at the last converged step (a face: sum N_a(xi)
-     * x_a,n; a rigid surface: the projection point less the surface's
-     * translation in the step) and xbar_n the committed projection point.
-     */
-    Vec3<AD>
-    slip_increment(const Vec3<AD>  &moved,
-                   const NodeState &committed,
-                   const Vec3<AD>  &normal)
-    {
-      const Vec3<AD> relative = moved - to<AD>(committed.point);
-      return relative - scale(dot(relative, normal), normal);
-    }
-
-
-
-    /** The committed traction turned with the normal (zero if the node was
-     * open, or if the normal turned over). */
-    Vec3<AD>
-    committed_traction(const NodeState &committed, const Vec3<AD> &normal)
-    {
-      Vec3<AD> turned = {{AD(0.), AD(0.), AD(0.)}};
-      if (committed.closed() &&
-          value_of(dot(to<AD>(committed.result.normal), normal)) > 0)
-        turned = turn(committed.result.normal,
-                      normal,
-                      to<AD>(committed.result.traction));
-      return turned;
-    }
-
-
-
-    /**
-     * Every element type ends here: the enforcement's local law at the
-     * point of @p kinematics gives the force on the slave (per unit area)
-     * and, with unknowns, the node's conditions; the residual is A force on
+     * Every node-to-surface element ends here: the residual is A force on
      * the slave's dim rows, -N_a A force on the rows of the
      * @p n_master_nodes master nodes that carry it, A times the conditions
-     * on the unknowns' rows after the @p n_displacements displacement rows,
-     * and its AD derivative the tangent.
+     * on the unknowns' rows (internal::finish_weighted()).
      */
     template <int dim>
     void
@@ -146,37 +223,20 @@ namespace tribos
            double                 *K,
            ContactPointResult     &result)
     {
-      result.gap = value_of(kinematics.gap);
-      for (unsigned int d = 0; d < 3; ++d)
-        result.normal[d] = value_of(kinematics.normal[d]);
-
-      const unsigned int n_unknowns = enforcement.n_node_unknowns();
-      const unsigned int n_out      = n_displacements + n_unknowns;
-      Vec3<AD>           unknowns, force, constraint;
-      if (n_unknowns > 0)
-        unknowns = seed<dim>(*slave.unknowns, n_displacements, n_out);
-      enforcement.local_law(kinematics,
-                            slave.law,
-                            n_unknowns > 0 ? &unknowns : nullptr,
-                            force,
-                            constraint,
-                            result);
-
-      const double area = slave.area;
-      for (unsigned int i = 0; i < n_out; ++i)
-      {
-        AD residual = 0.;
-        if (i < dim)
-          residual = area * force[i];
-        else if (i < dim * (1 + n_master_nodes))
-          residual = -area * N[i / dim - 1] * force[i % dim];
-        else if (i >= n_displacements)
-          residual = area * constraint[i - n_displacements];
-        R[i] = residual.val();
-        if (K != nullptr)
-          for (unsigned int j = 0; j < n_out; ++j)
-            K[i * n_out + j] = residual.dx(j);
-      }
+      AD weights[5];
+      weights[0] = slave.area;
+      for (unsigned int a = 0; a < n_master_nodes; ++a)
+        weights[1 + a] = -slave.area * N[a];
+      internal::finish_weighted<dim>(kinematics,
+                                     weights,
+                                     1 + n_master_nodes,
+                                     n_displacements,
+                                     AD(slave.area),
+                                     slave,
+                                     enforcement,
+                                     R,
+                                     K,
+                                     result);
     }
   } // namespace
 

@@ -1,6 +1,7 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/contact/contact_element.h>
 #include <tribos/contact/contact_handler.h>
+#include <tribos/contact/mortar_element.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
@@ -62,11 +63,29 @@ namespace tribos
     std::vector<types::global_dof_index> dofs;
     for (const auto &pair : contact_pairs)
     {
-      for (const auto &[k, f] : pair.couplings)
+      if (pair.mortar)
       {
-        pair.element_dofs(k, f, dofs);
-        constraints.add_entries_local_to_global(dofs, dsp, false);
+        // A mortar element couples all the master faces of its node with
+        // each other: one element per node over the union of its faces.
+        for (auto c = pair.couplings.begin(); c != pair.couplings.end();)
+        {
+          const unsigned int k = c->first;
+          pair.element_dofs(k, -1, dofs);
+          for (; c != pair.couplings.end() && c->first == k; ++c)
+            for (const unsigned int m : pair.master->faces()[c->second].nodes)
+              for (const auto dof : pair.master->nodes()[m].dofs)
+                dofs.push_back(dof);
+          std::sort(dofs.begin(), dofs.end());
+          dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+          constraints.add_entries_local_to_global(dofs, dsp, false);
+        }
       }
+      else
+        for (const auto &[k, f] : pair.couplings)
+        {
+          pair.element_dofs(k, f, dofs);
+          constraints.add_entries_local_to_global(dofs, dsp, false);
+        }
       // The rows of a node's unknowns exist whether it is paired or not.
       if (pair.enforcement->n_node_unknowns() > 0)
         for (unsigned int k = 0; k < pair.n_nodes(); ++k)
@@ -92,7 +111,9 @@ namespace tribos
                                 TrilinosWrappers::MPI::Vector   &contact_forces)
   {
     constexpr unsigned int n_max =
-      std::max(NodeToSegment<dim>::n_dofs, NodeToSmoothedSegment::max_dofs) +
+      std::max({NodeToSegment<dim>::n_dofs,
+                NodeToSmoothedSegment::max_dofs,
+                2 * (3 + max_mortar_master_nodes)}) +
       dim;
     double     R[n_max], K[n_max * n_max];
     const bool consistent =
@@ -162,7 +183,110 @@ namespace tribos
         state.result                  = ContactPointResult();
         state.slip                    = committed.slip;
         state.point                   = x;
-        if (!state.paired)
+        // Mortar: the node's element over its slave segments (its weight
+        // may still leave it without a master).
+        MortarInput               mortar;
+        std::vector<unsigned int> stencil, master_nodes;
+        SlaveInput                slave;
+        if constexpr (dim == 2)
+          if (pair.mortar && state.paired)
+          {
+            pair.slave_stencil(k, stencil);
+            mortar.n_slave_nodes = stencil.size();
+            for (unsigned int i = 0; i < stencil.size(); ++i)
+            {
+              mortar.xs[i]     = pair.slave_positions[stencil[i]];
+              mortar.xs_old[i] = pair.old_slave_positions[stencil[i]];
+            }
+            const auto local =
+              [](std::vector<unsigned int> &list, const unsigned int node)
+            {
+              const auto at = std::find(list.begin(), list.end(), node);
+              if (at != list.end())
+                return static_cast<unsigned int>(at - list.begin());
+              list.push_back(node);
+              return static_cast<unsigned int>(list.size() - 1);
+            };
+            for (const unsigned int f : pair.slave->nodes()[k].faces)
+            {
+              auto &segment = mortar.slave_segment[mortar.n_slave_segments++];
+              for (unsigned int v = 0; v < 2; ++v)
+                segment[v] = local(stencil, pair.slave->faces()[f].nodes[v]);
+            }
+            for (const unsigned int f : pair.mortar_faces[k])
+            {
+              std::array<unsigned int, 2> segment;
+              for (unsigned int v = 0; v < 2; ++v)
+                segment[v] =
+                  local(master_nodes, pair.master->faces()[f].nodes[v]);
+              AssertThrow(master_nodes.size() <= max_mortar_master_nodes,
+                          ExcMessage(
+                            "Contact pair <" + pair.description.text +
+                            ">: the mortar element of slave node at (" +
+                            std::to_string(x[0]) + ", " + std::to_string(x[1]) +
+                            ") overlaps more than " +
+                            std::to_string(max_mortar_master_nodes) +
+                            " master nodes; make the finer side the slave."));
+              mortar.master_segment[mortar.n_master_segments++] = segment;
+            }
+            mortar.n_master_nodes = master_nodes.size();
+            for (unsigned int l = 0; l < master_nodes.size(); ++l)
+            {
+              mortar.xm[l]     = pair.master_positions[master_nodes[l]];
+              mortar.xm_old[l] = pair.old_master_positions[master_nodes[l]];
+            }
+            mortar.dual         = pair.dual_basis;
+            mortar.axisymmetric = pair.axisymmetric;
+            mortar.min_weight   = 1e-3 * pair.area[k];
+
+            slave.position  = x;
+            slave.committed = &committed;
+            slave.law       = enforcement.law(pair, k, state, homogeneous);
+            slave.law.frozen_closed = monitor.frozen(p, k);
+            slave.area              = pair.area[k];
+            slave.unknowns          = n_unknowns > 0 ? &state.lambda : nullptr;
+            slave.consistent        = consistent;
+            bool         paired     = false;
+            Vec3<double> point;
+            state.result = Mortar2D::evaluate(slave,
+                                              mortar,
+                                              enforcement,
+                                              R,
+                                              K,
+                                              paired,
+                                              point);
+            if (paired)
+            {
+              const auto &r  = state.result;
+              state.point    = point;
+              state.slip     = committed.slip + r.slip_increment;
+              pair.ever_near = true;
+              if (n_unknowns == 0 && r.status == ContactStatus::open)
+                continue;
+              dofs.clear();
+              for (const unsigned int node : stencil)
+                for (const auto dof : pair.slave->nodes()[node].dofs)
+                  dofs.push_back(dof);
+              for (const unsigned int node : master_nodes)
+                for (const auto dof : pair.master->nodes()[node].dofs)
+                  dofs.push_back(dof);
+              for (unsigned int d = 0; d < n_unknowns; ++d)
+                dofs.push_back(pair.first_unknown + n_unknowns * k + d);
+              if (n_unknowns > 0)
+                enforcement.finish_rows(dofs,
+                                        dofs.size() - n_unknowns,
+                                        homogeneous,
+                                        pair.area[k],
+                                        state,
+                                        R,
+                                        K);
+              add(dofs.size());
+              continue;
+            }
+            state.result = ContactPointResult();
+          }
+
+        if (!state.paired || pair.mortar)
         {
           // Off the master (beyond its end or the search distance), or
           // excluded: the distance to the master surface, a positive, open
@@ -173,7 +297,7 @@ namespace tribos
           if (n_unknowns > 0)
           {
             pair.element_dofs(k, -1, dofs);
-            dofs.erase(dofs.begin(), dofs.begin() + dim);
+            dofs.erase(dofs.begin(), dofs.end() - n_unknowns);
             enforcement.unpaired_rows(state,
                                       pair.slave->nodes()[k].area *
                                         pair.area_factor,
@@ -184,7 +308,6 @@ namespace tribos
           continue;
         }
 
-        SlaveInput slave;
         slave.position          = x;
         slave.committed         = &committed;
         slave.law               = enforcement.law(pair, k, state, homogeneous);
@@ -275,7 +398,7 @@ namespace tribos
         if (pair.owned[k] && pair.current[k].closed())
         {
           const auto &r = pair.current[k].result;
-          sum += norm(r.traction) * r.slip_increment * pair.area[k];
+          sum += norm(r.traction) * r.slip_increment * r.area;
         }
     return Utilities::MPI::sum(sum, mpi_communicator);
   }
@@ -461,7 +584,13 @@ namespace tribos
       {
         const int face = pair.current[k].face;
         if (pair.owned[k] && !pair.excluded[k] && face >= 0)
-          pair.insert_couplings(k, face, used[p]);
+        {
+          if (pair.mortar)
+            for (const unsigned int f : pair.mortar_faces[k])
+              pair.insert_couplings(k, f, used[p]);
+          else
+            pair.insert_couplings(k, face, used[p]);
+        }
       }
       n_kept += used[p].size();
       n_stale += pair.couplings.size() - used[p].size();

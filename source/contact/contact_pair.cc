@@ -4,6 +4,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -104,6 +105,20 @@ namespace tribos
 
   template <int dim>
   void
+  ContactPair<dim>::slave_stencil(const unsigned int         k,
+                                  std::vector<unsigned int> &nodes) const
+  {
+    nodes.assign(1, k);
+    for (const unsigned int f : slave->nodes()[k].faces)
+      for (const unsigned int m : slave->faces()[f].nodes)
+        if (std::find(nodes.begin(), nodes.end(), m) == nodes.end())
+          nodes.push_back(m);
+  }
+
+
+
+  template <int dim>
+  void
   ContactPair<dim>::element_dofs(
     const unsigned int                    k,
     const int                             face,
@@ -111,6 +126,14 @@ namespace tribos
   {
     const auto &slave_dofs = slave->nodes()[k].dofs;
     dofs.assign(slave_dofs.begin(), slave_dofs.end());
+    if (mortar)
+    {
+      std::vector<unsigned int> stencil;
+      slave_stencil(k, stencil);
+      for (unsigned int i = 1; i < stencil.size(); ++i)
+        for (const auto dof : slave->nodes()[stencil[i]].dofs)
+          dofs.push_back(dof);
+    }
     if (master && face >= 0)
     {
       for (const unsigned int m : master->faces()[face].nodes)
@@ -218,6 +241,10 @@ namespace tribos
         pair.area_factor     = parameters.two_pass ? 0.5 : 1.;
         pair.smoothed =
           dim == 2 && parameters.smoothing != Parameters::MasterSmoothing::none;
+        pair.mortar =
+          description.discretization == Parameters::Discretization::mortar;
+        pair.dual_basis =
+          parameters.mortar_basis == Parameters::MortarBasis::dual;
       }
       else
         pair.rigid = rigid_surfaces.at(description.rigid_surface);
@@ -235,8 +262,24 @@ namespace tribos
         pair.current[k].point = nodes[k].reference;
         pair.slave_positions.push_back(nodes[k].reference);
       }
+      pair.axisymmetric = axisymmetric;
+      if (pair.mortar)
+        pair.mortar_faces.resize(n_slaves);
       if (pair.enforcement->n_node_unknowns() > 0)
         exclude_dependent_nodes(pair, pairs, hanging);
+      if (pair.mortar)
+        for (unsigned int k = 0; k < n_slaves; ++k)
+          AssertThrow(!pair.excluded[k],
+                      ExcMessage(
+                        "Contact pair <" + description.text +
+                        ">: mortar with multipliers needs every slave node "
+                        "to carry its own multiplier; this slave surface has "
+                        "a hanging node or a node shared with another pair "
+                        "(node at " +
+                        std::to_string(nodes[k].reference[0]) + ", " +
+                        std::to_string(nodes[k].reference[1]) +
+                        "). Refine the slave surface as a whole, or use "
+                        "node to segment."));
       pair.first_unknown = dof_handler.n_dofs() + n_unknowns;
       n_unknowns += pair.enforcement->n_node_unknowns() * n_slaves;
       pair.committed           = pair.current;

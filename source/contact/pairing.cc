@@ -1,6 +1,7 @@
 #include <tribos/contact/pairing.h>
 #include <tribos/contact/smoothed_segment.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -84,6 +85,17 @@ namespace tribos
     {
       if (!pair.owned[k] || pair.excluded[k])
         continue;
+      if (pair.mortar)
+      {
+        pair_mortar(pair, k);
+        for (const unsigned int face : pair.mortar_faces[k])
+          if (pair.couplings.count({k, face}) == 0)
+          {
+            new_coupling = true;
+            pair.insert_couplings(k, face, pair.couplings);
+          }
+        continue;
+      }
       if (pair.smoothed)
         pair_smoothed(pair, k);
       else
@@ -269,6 +281,107 @@ namespace tribos
       }
     }
     state.paired = best_kind > 0;
+  }
+
+  template <int dim>
+  void
+  Pairing<dim>::pair_mortar(ContactPair<dim> &pair, const unsigned int k) const
+  {
+    NodeState &state = pair.current[k];
+    auto      &found = pair.mortar_faces[k];
+    found.clear();
+    state.paired   = false;
+    state.face     = -1;
+    state.distance = std::numeric_limits<double>::quiet_NaN();
+    if constexpr (dim == 2)
+    {
+      const auto        &slave_faces = pair.slave->faces();
+      const auto        &faces       = pair.master->faces();
+      const Vec3<double> ez{{0., 0., 1.}};
+      double             closest = std::numeric_limits<double>::max();
+      for (const unsigned int f : pair.slave->nodes()[k].faces)
+      {
+        const Vec3<double> &x_a = pair.slave_positions[slave_faces[f].nodes[0]];
+        const Vec3<double> &x_b = pair.slave_positions[slave_faces[f].nodes[1]];
+        const Vec3<double>  e   = x_b - x_a;
+        const double        length_squared = dot(e, e);
+        const Vec3<double>  n_s =
+          scale(1. / std::sqrt(length_squared), cross(ez, e));
+
+        // Whether master face m faces this slave segment, overlaps it in
+        // the projection onto its line and lies within the search
+        // distance along its normal.
+        const auto overlaps = [&](const unsigned int m)
+        {
+          const Vec3<double> &y_c = pair.master_positions[faces[m].nodes[0]];
+          const Vec3<double> &y_d = pair.master_positions[faces[m].nodes[1]];
+          // Faces steeper than 75 degrees to the slave segment cannot
+          // carry its contact (the sides of a body above the slave).
+          const Vec3<double> n_m = cross(ez, y_d - y_c);
+          if (dot(n_m, n_s) >= -0.25 * norm(n_m))
+            return false;
+          const double s_c = dot(y_c - x_a, e) / length_squared;
+          const double s_d = dot(y_d - x_a, e) / length_squared;
+          if (std::abs(s_c - s_d) < 1e-12)
+            return false;
+          const double lo = std::max(0., std::min(s_c, s_d));
+          const double hi = std::min(1., std::max(s_c, s_d));
+          if (hi <= lo)
+            return false;
+          // Within reach: closer than the search distance and the
+          // segment's length (a farther face cannot close within an
+          // increment; the node is paired again when it comes near), and
+          // not wholly more than that behind the slave (the far side of a
+          // thin master).
+          double gap_min = std::numeric_limits<double>::max(),
+                 gap_max = -gap_min;
+          for (const double t : {lo, hi})
+          {
+            const Vec3<double> y =
+              y_c + scale((t - s_c) / (s_d - s_c), y_d - y_c);
+            const double gap = dot(y - (x_a + scale(t, e)), n_s);
+            gap_min          = std::min(gap_min, gap);
+            gap_max          = std::max(gap_max, gap);
+          }
+          const double length = std::sqrt(length_squared);
+          return gap_min <= std::min(parameters.search_distance, length) &&
+                 gap_max >= -length;
+        };
+
+        // From the faces closest to the segment's ends and middle through
+        // their neighbours, as long as they overlap.
+        std::vector<unsigned int> queue;
+        for (const Vec3<double> &point : {x_a, x_b, scale(0.5, x_a + x_b)})
+        {
+          unsigned int face;
+          double       squared_distance;
+          if (!pair.search.closest_face(point, face, squared_distance))
+            return;
+          closest = std::min(closest, std::sqrt(squared_distance));
+          if (std::find(queue.begin(), queue.end(), face) == queue.end())
+            queue.push_back(face);
+        }
+        const unsigned int n_start = queue.size();
+        for (unsigned int i = 0; i < queue.size(); ++i)
+        {
+          const unsigned int m       = queue[i];
+          const bool         overlap = overlaps(m);
+          if (overlap &&
+              std::find(found.begin(), found.end(), m) == found.end())
+            found.push_back(m);
+          if (overlap || i < n_start)
+            for (const unsigned int g : faces[m].neighbours)
+              if (std::find(queue.begin(), queue.end(), g) == queue.end())
+                queue.push_back(g);
+        }
+      }
+      state.distance = closest;
+      if (!found.empty())
+      {
+        state.paired = true;
+        state.face   = found[0];
+      }
+    }
   }
 
   template class Pairing<2>;

@@ -122,7 +122,8 @@ namespace tribos
         "faces) or the name of a rigid surface. A list (e.g. '10, 11, 12') "
         "makes one connected surface: a node on the edge between two of its "
         "parts is one node, and master faces continue across that edge. "
-        "Per-pair keys: method, penalty, tangential penalty, mu. Example: "
+        "Per-pair keys: method, penalty, tangential penalty, mu, "
+        "discretization (node to segment | mortar). Example: "
         "'10 : 3 ; 4 : plate : mu=0.2 ; 3 : 10, 11, 12'.");
       prm.declare_entry("Method",
                         "penalty",
@@ -138,6 +139,29 @@ namespace tribos
                         "solver, one MPI process); the active set and "
                         "stick/slip follow from lambda - eps_N g_N inside "
                         "Newton, so eps_N then only affects the iterates.");
+      prm.declare_entry(
+        "Discretization",
+        "node to segment",
+        dealii::Patterns::Selection("node to segment|mortar"),
+        "Default discretization of every pair with a deformable master. "
+        "node to segment: each slave node is projected onto the master "
+        "(the paper's); mortar (2D): the gap, slip and force of each slave "
+        "node are integrals over the overlap of its slave segments with "
+        "the master segments, weighted by the node's multiplier function "
+        "(segment-to-segment; passes the contact patch test). Pairs with a "
+        "rigid master are always node to rigid surface. Mortar is one-pass "
+        "and not combined with Master smoothing.");
+      prm.declare_entry(
+        "Mortar basis",
+        "dual",
+        dealii::Patterns::Selection("dual|standard"),
+        "Mortar: the functions that weight the gap and the traction of a "
+        "slave node. dual: biorthogonal to the slave's shape functions, so "
+        "each node's traction acts on that node alone (a diagonal slave "
+        "matrix D); a slave segment only partly overlapped by the master "
+        "(at the master's end) uses the standard functions instead, whose "
+        "weights stay positive. standard: the slave's shape functions "
+        "everywhere.");
       prm.declare_entry(
         "Penalty factor",
         "100*E/h",
@@ -296,6 +320,24 @@ namespace tribos
                                      "complementarity parameter> must not be "
                                      "empty (default: E/h)."));
 
+      const auto parse_discretization =
+        [](const std::string &text, const std::string &entry)
+      {
+        AssertThrow(text == "node to segment" || text == "mortar",
+                    dealii::ExcMessage("Parameter <" + entry +
+                                       ">: discretization <" + text +
+                                       "> is unknown. Allowed: node to "
+                                       "segment, mortar."));
+        return text == "mortar" ? Discretization::mortar :
+                                  Discretization::node_to_segment;
+      };
+      const Discretization default_discretization =
+        parse_discretization(prm.get("Discretization"),
+                             "Contact/Discretization");
+      mortar_basis = prm.get("Mortar basis") == "standard" ?
+                       MortarBasis::standard :
+                       MortarBasis::dual;
+
       rigid_surfaces.clear();
       const std::string rigid_entry = "Contact/Rigid surfaces";
       for (const auto &item :
@@ -392,6 +434,9 @@ namespace tribos
         pair.normal_penalty       = default_normal;
         pair.tangential_penalty   = default_tangential;
         pair.friction_coefficient = default_mu;
+        pair.discretization       = pair.rigid_surface.empty() ?
+                                      default_discretization :
+                                      Discretization::node_to_segment;
         bool tangential_given     = false;
         if (parts.size() == 3)
           for (const auto &option : Text::split_top_level(parts[2], ','))
@@ -423,15 +468,27 @@ namespace tribos
                                              ">: mu = <" + value +
                                              "> must be a number >= 0."));
             }
+            else if (key == "discretization")
+            {
+              pair.discretization = parse_discretization(value, pair_entry);
+              AssertThrow(pair.discretization ==
+                              Discretization::node_to_segment ||
+                            pair.rigid_surface.empty(),
+                          dealii::ExcMessage(
+                            "Parameter <" + pair_entry + ">: item <" + item +
+                            ">: discretization = mortar needs a deformable "
+                            "master; a rigid surface is always met node to "
+                            "surface."));
+            }
             else
               AssertThrow(false,
-                          dealii::ExcMessage(
-                            "Parameter <" + pair_entry +
-                            ">: unknown "
-                            "option <" +
-                            key +
-                            ">. Allowed: method, "
-                            "penalty, tangential penalty, mu."));
+                          dealii::ExcMessage("Parameter <" + pair_entry +
+                                             ">: unknown "
+                                             "option <" +
+                                             key +
+                                             ">. Allowed: method, "
+                                             "penalty, tangential penalty, mu, "
+                                             "discretization."));
           }
         if (!tangential_given && parts.size() == 3 &&
             !PenaltyValue::parse(prm.get("Tangential penalty factor"), "")
@@ -477,6 +534,27 @@ namespace tribos
     void
     Contact::check(const unsigned int dim) const
     {
+      for (const auto &pair : pairs)
+        if (pair.discretization == Discretization::mortar)
+        {
+          AssertThrow(dim == 2,
+                      dealii::ExcMessage(
+                        "Contact pair <" + pair.text +
+                        ">: Discretization = mortar is implemented in 2D "
+                        "only; 3D pairs use node to segment."));
+          AssertThrow(!two_pass,
+                      dealii::ExcMessage(
+                        "Contact pair <" + pair.text +
+                        ">: Discretization = mortar is one-pass (it passes "
+                        "the patch test with either side as slave); set "
+                        "Contact/Passes = one-pass."));
+          AssertThrow(smoothing == MasterSmoothing::none,
+                      dealii::ExcMessage(
+                        "Contact pair <" + pair.text +
+                        ">: Discretization = mortar integrates over the "
+                        "master's segments; set Contact/Master smoothing = "
+                        "none."));
+        }
       for (const auto &surface : rigid_surfaces)
       {
         AssertThrow(surface.motion.size() == dim,

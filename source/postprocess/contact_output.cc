@@ -32,7 +32,7 @@ namespace tribos
         const auto &r = pair.current[k].result;
         if (!pair.owned[k] || r.status == ContactStatus::open)
           continue;
-        const double area = pair.area[k];
+        const double area = r.area;
         forces[0] += area * r.pressure;
         forces[1] += area * norm(r.traction);
         for (unsigned int d = 0; d < 3; ++d)
@@ -163,7 +163,7 @@ namespace tribos
       AssertThrow(out, ExcMessage("Cannot write <" + temporary + ">."));
       out << "pair,body,x,y,z,CPRESS,CSHEAR_x,CSHEAR_y,CSHEAR_z,COPEN,CSLIP,"
              "CSTATUS,X,Y,Z\n"
-          << std::setprecision(10);
+          << std::setprecision(15);
       for (const auto &row : all)
       {
         out << int(row[0]) << ',' << int(row[1]);

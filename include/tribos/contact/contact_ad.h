@@ -8,12 +8,17 @@
 namespace tribos
 {
   /**
-   * The forward AD number of the contact elements: at most 18 derivatives
-   * (3D: the slave and a bilinear face, 5 nodes x 3, plus the slave's 3
-   * multipliers). The element residual is written once in this type and
-   * its derivative is the consistent tangent.
+   * The forward AD number of the contact elements: at most 32 derivatives
+   * (3D node to segment: the slave and a bilinear face, 5 nodes x 3, plus
+   * the slave's 3 multipliers = 18; 2D mortar: 3 slave and up to 12 master
+   * nodes x 2, plus 2 multipliers). Operations run over the derivatives in
+   * use only. The element residual is written once in this type and its
+   * derivative is the consistent tangent.
    */
-  using ContactAD = Sacado::Fad::SLFad<double, 18>;
+  using ContactAD = Sacado::Fad::SLFad<double, 32>;
+
+  /** The most master nodes a 2D mortar element couples to one slave node. */
+  constexpr unsigned int max_mortar_master_nodes = 12;
 
   /** The value of a number (AD or double). */
   inline double

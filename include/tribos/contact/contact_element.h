@@ -26,6 +26,59 @@ namespace tribos
     bool consistent = true;
   };
 
+  namespace internal
+  {
+    /** @p n entries (dim of them from @p first on) of @p x seeded as
+     * independent AD variables. */
+    template <int dim>
+    Vec3<ContactAD>
+    seed(const Vec3<double> &x, const unsigned int first, const unsigned int n);
+
+    /**
+     * The slip increment of the step, written once for every element: the
+     * tangential part (at the current @p normal) of @p moved - xbar_n,
+     * @p moved being where the master material point under the slave's
+     * contact point was at the last converged step and xbar_n the
+     * committed contact point.
+     */
+    Vec3<ContactAD>
+    slip_increment(const Vec3<ContactAD> &moved,
+                   const NodeState       &committed,
+                   const Vec3<ContactAD> &normal);
+
+    /** The committed traction turned with the normal (zero if the node was
+     * open, or if the normal turned over). */
+    Vec3<ContactAD>
+    committed_traction(const NodeState       &committed,
+                       const Vec3<ContactAD> &normal);
+
+    /**
+     * Every element type ends here: the enforcement's local law at the
+     * point of @p kinematics gives the force on the slave (per unit area)
+     * and, with unknowns, the node's conditions. The residual of node i of
+     * the @p n_force_nodes that carry the force is @p weights[i] times the
+     * force (node-to-segment: A on the slave, -N_a A on the master nodes;
+     * mortar: D on the slave nodes, -M on the master nodes), the
+     * unknowns' rows after the @p n_displacements displacement rows are
+     * @p row_area times the conditions, and the AD derivative is the
+     * tangent.
+     */
+    template <int dim>
+    void
+    finish_weighted(const PointKinematics  &kinematics,
+                    const ContactAD        *weights,
+                    const unsigned int      n_force_nodes,
+                    const unsigned int      n_displacements,
+                    const ContactAD        &row_area,
+                    const SlaveInput       &slave,
+                    const Enforcement<dim> &enforcement,
+                    double                 *R,
+                    double                 *K,
+                    ContactPointResult     &result);
+  } // namespace internal
+
+
+
   /** A face of a deformable master: its nodes now and at the last
    * converged step, the slave's projection onto it, and whether the
    * committed state lies on this face. */

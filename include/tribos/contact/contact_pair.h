@@ -50,6 +50,12 @@ namespace tribos
     double area_factor = 1;
     /** The master is smoothed by averaged normals (2D). */
     bool smoothed = false;
+    /** Contact/Discretization = mortar (2D, deformable master). */
+    bool mortar = false;
+    /** Mortar basis = dual. */
+    bool dual_basis = true;
+    /** Areas and mortar integrals over the surface of revolution. */
+    bool axisymmetric = false;
     /** The number of the first of the enforcement's unknowns (if any):
      * node k's are first_unknown + n_node_unknowns k + d. */
     types::global_dof_index first_unknown = 0;
@@ -64,6 +70,10 @@ namespace tribos
     /** Per slave node: the state at the last evaluation and at the last
      * converged increment. */
     std::vector<NodeState> current, committed;
+    /** Mortar: per slave node, the master faces that overlap its slave
+     * faces at the last search (the first one is also NodeState::face). */
+    std::vector<std::vector<unsigned int>> mortar_faces;
+
     /** Node positions, now and at the last converged increment. */
     std::vector<Vec3<double>> slave_positions, old_slave_positions;
     std::vector<Vec3<double>> master_positions, old_master_positions;
@@ -82,10 +92,17 @@ namespace tribos
     }
 
     /**
+     * Mortar: the slave nodes of slave node @p k's element, @p k first,
+     * then the other nodes of its slave faces.
+     */
+    void
+    slave_stencil(const unsigned int k, std::vector<unsigned int> &nodes) const;
+
+    /**
      * The dofs of the element of slave node @p k against master @p face
-     * (-1: none): the slave's, then the face's nodes' (with a smoothed
-     * master also the segment's neighbour nodes), then the node's
-     * unknowns.
+     * (-1: none): the slave's (mortar: of slave_stencil()), then the
+     * face's nodes' (with a smoothed master also the segment's neighbour
+     * nodes), then the node's unknowns.
      */
     void
     element_dofs(const unsigned int                    k,

@@ -86,6 +86,10 @@ namespace tribos
     double slip_increment = 0;
     /** Local coordinates of the projection (deformable master). */
     double xi[2] = {0, 0};
+    /** The area the traction acts on: node to surface, the node's
+     * tributary area in the reference configuration; mortar, its weight
+     * w_j in the current one. */
+    double area = 0;
   };
 
 

@@ -70,6 +70,16 @@ namespace tribos
     void
     pair_smoothed(ContactPair<dim> &pair, const unsigned int k) const;
 
+    /**
+     * Mortar (2D): the master faces that face one of slave @p k's
+     * segments, overlap it in the orthogonal projection onto its line and
+     * lie within Search distance along its normal, found from the faces
+     * closest to the segment's ends and middle through their neighbours.
+     * Paired if there is one.
+     */
+    void
+    pair_mortar(ContactPair<dim> &pair, const unsigned int k) const;
+
     const Parameters::Contact &parameters;
   };
 

@@ -74,6 +74,20 @@ namespace tribos
       averaged_normals
     };
 
+    /** Contact/Discretization: how a pair's contact is integrated. */
+    enum class Discretization
+    {
+      node_to_segment,
+      mortar
+    };
+
+    /** Contact/Mortar basis: the multiplier (weight) functions of mortar. */
+    enum class MortarBasis
+    {
+      dual,
+      standard
+    };
+
     /** Contact/Chattering remedy. */
     enum class ChatteringRemedy
     {
@@ -119,6 +133,7 @@ namespace tribos
       PenaltyValue      normal_penalty;
       PenaltyValue      tangential_penalty;
       double            friction_coefficient;
+      Discretization    discretization = Discretization::node_to_segment;
     };
 
     /**
@@ -142,6 +157,7 @@ namespace tribos
       ChatteringRemedy chattering_remedy;
       /** Lagrange multipliers: the semismooth stick/slip parameter c_T. */
       PenaltyValue friction_complementarity;
+      MortarBasis  mortar_basis;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

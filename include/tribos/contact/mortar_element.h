@@ -1,0 +1,106 @@
+#ifndef tribos_contact_mortar_element_h
+#define tribos_contact_mortar_element_h
+
+#include <tribos/contact/contact_element.h>
+
+#include <array>
+
+namespace tribos
+{
+  /**
+   * What the 2D mortar element of one slave node j needs: the slave nodes
+   * of its segments (j first, then its neighbours), now and at the last
+   * converged step, the segments as pairs of those local numbers (ordered
+   * so that the MasterFace normal points out of the slave body), and the
+   * master nodes and segments that the search found facing them.
+   */
+  struct MortarInput
+  {
+    unsigned int n_slave_nodes = 0;
+    Vec3<double> xs[3], xs_old[3];
+    unsigned int n_slave_segments = 0;
+    unsigned int slave_segment[2][2];
+
+    unsigned int n_master_nodes = 0;
+    Vec3<double> xm[max_mortar_master_nodes], xm_old[max_mortar_master_nodes];
+    unsigned int n_master_segments = 0;
+    std::array<unsigned int, 2> master_segment[max_mortar_master_nodes];
+
+    /** Mortar basis = dual (else standard). */
+    bool dual = true;
+    /** Integrate over the surface of revolution (x = r, weight 2 pi r). */
+    bool axisymmetric = false;
+    /** A node whose weight w_j (below) is below this has no master (its
+     * segments barely overlap the master). */
+    double min_weight = 0;
+  };
+
+
+
+  /**
+   * The mortar (segment-to-segment) element of slave node j in 2D, after
+   * Yang, Laursen and Meng (2005) and Popp, Gee and Wall (2009): the
+   * node's multiplier function Phi_j weights the gap and the traction over
+   * the overlap of its slave segments with the master segments.
+   *
+   * On each slave segment [x_a, x_b] (coordinate s in [0, 1]) the master
+   * segments that face it are projected orthogonally onto its line; the
+   * overlap is clipped to [0, 1] and integrated by 2-point Gauss, which is
+   * exact: along the overlap the master coordinate is an affine function of
+   * s, so every integrand is quadratic. With it
+   *
+   *   D_jk = int Phi_j N_k,   M_jl = int Phi_j N_l(chi(s)),
+   *   w_j  = sum_k D_jk = sum_l M_jl  (the overlap's weight),
+   *
+   * and the node's point quantities for the enforcement are
+   *
+   *   g_j = n_j . (sum_l M_jl y_l - sum_k D_jk x_k) / w_j  (weighted gap),
+   *   dg_T = P_T [ sum_l M_jl y_l,n - sum_k D_jk x_k,n ] / w_j - (xbar_n -
+   * x_j,n)
+   *
+   * with n_j the slave's averaged nodal normal (the sum of its segments'
+   * normals), y_l,n and x_k,n the nodes at the last converged step and
+   * xbar_n - x_j,n the committed offset of the weighted master point: like
+   * node to segment, the slip is the change of where the slave sits on the
+   * master as it was, so a rigid motion of both bodies slips nothing.
+   * Force on slave node k: D_jk f, on master node l: -M_jl f, for the
+   * traction f of the enforcement's local law (penalty, multipliers or
+   * augmented, with the Coulomb return map); the unknowns' rows are w_j
+   * times the conditions. Everything, D and M included, is Sacado AD of
+   * the positions: the tangent is the exact derivative of the residual.
+   *
+   * Dual basis: Phi_a = 2 N_a - N_b on a segment, biorthogonal to the
+   * slave's shape functions, so D is diagonal where the segment is fully
+   * overlapped and the traction of node j acts on node j. On a segment
+   * the master covers only in part (the master's end) the dual functions
+   * can have a negative weight over the covered part; such segments use
+   * the standard functions (still a partition of unity, so a uniform
+   * traction is still transmitted exactly).
+   *
+   * For a flat interface and a uniform traction p, the forces are p int
+   * N_k on the slave and p int N_l on the master nodes: the contact patch
+   * test holds to round-off, with either side as slave.
+   */
+  struct Mortar2D
+  {
+    /**
+     * Evaluate the element of slave node j (@p input) with the law of
+     * @p enforcement. Dofs: the slave nodes of input (2 each), the master
+     * nodes (2 each), then the enforcement's unknowns; R and K as in
+     * NodeToSegment::evaluate(). @p paired is set to whether the node's
+     * weight reaches input.min_weight; if not, R and K are untouched.
+     * @p weighted_point gets x_j + (weighted master point - weighted slave
+     * point), the node's contact point.
+     */
+    static ContactPointResult
+    evaluate(const SlaveInput     &slave,
+             const MortarInput    &input,
+             const Enforcement<2> &enforcement,
+             double               *R,
+             double               *K,
+             bool                 &paired,
+             Vec3<double>         &weighted_point);
+  };
+} // namespace tribos
+
+#endif

@@ -1,0 +1,166 @@
+#include <tribos/contact/mortar_element.h>
+
+#include <cmath>
+
+namespace tribos
+{
+  ContactPointResult
+  Mortar2D::evaluate(const SlaveInput     &slave,
+                     const MortarInput    &input,
+                     const Enforcement<2> &enforcement,
+                     double               *R,
+                     double               *K,
+                     bool                 &paired,
+                     Vec3<double>         &weighted_point)
+  {
+    using AD = ContactAD;
+    ContactPointResult result;
+    const unsigned int n_s             = input.n_slave_nodes;
+    const unsigned int n_m             = input.n_master_nodes;
+    const unsigned int n_displacements = 2 * (n_s + n_m);
+    const unsigned int n_out = n_displacements + enforcement.n_node_unknowns();
+
+    Vec3<AD> xs[3], xm[max_mortar_master_nodes];
+    for (unsigned int i = 0; i < n_s; ++i)
+      xs[i] = internal::seed<2>(input.xs[i], 2 * i, n_out);
+    for (unsigned int l = 0; l < n_m; ++l)
+      xm[l] = internal::seed<2>(input.xm[l], 2 * (n_s + l), n_out);
+
+    const Vec3<double> ez{{0., 0., 1.}};
+    const Vec3<AD>     ez_ad = to<AD>(ez);
+    const AD           zero(0.);
+
+    AD D[3] = {zero, zero, zero};
+    AD M[max_mortar_master_nodes];
+    for (unsigned int l = 0; l < n_m; ++l)
+      M[l] = zero;
+
+    struct Overlap
+    {
+      unsigned int c, d;
+      AD           s_c, s_d, lo, hi;
+    };
+    // The nodal normal: the segments' unit normals (out of the slave body)
+    // weighted by their share of w_j, so that a segment that leaves the
+    // master (at a corner of the slave) fades out of it continuously.
+    Vec3<AD>     normal_j = {{zero, zero, zero}};
+    const double gauss    = 1. / std::sqrt(3.);
+    for (unsigned int s = 0; s < input.n_slave_segments; ++s)
+    {
+      const unsigned int a              = input.slave_segment[s][0],
+                         b              = input.slave_segment[s][1];
+      const Vec3<AD>     e              = xs[b] - xs[a];
+      const AD           length_squared = dot(e, e);
+      const AD           length         = sqrt(length_squared);
+      const Vec3<double> n_s            = cross(ez, input.xs[b] - input.xs[a]);
+      const bool         j_is_a         = (a == 0);
+
+      // The master segments facing this one, projected onto its line.
+      Overlap      overlaps[max_mortar_master_nodes];
+      unsigned int n_overlaps = 0;
+      double       covered    = 0;
+      for (unsigned int m = 0; m < input.n_master_segments; ++m)
+      {
+        const unsigned int c   = input.master_segment[m][0],
+                           d   = input.master_segment[m][1];
+        const Vec3<double> n_m = cross(ez, input.xm[d] - input.xm[c]);
+        if (dot(n_m, n_s) >= 0)
+          continue;
+        Overlap o;
+        o.c   = c;
+        o.d   = d;
+        o.s_c = dot(xm[c] - xs[a], e) / length_squared;
+        o.s_d = dot(xm[d] - xs[a], e) / length_squared;
+        if (std::abs(o.s_c.val() - o.s_d.val()) < 1e-12)
+          continue;
+        const AD &low  = o.s_c.val() < o.s_d.val() ? o.s_c : o.s_d;
+        const AD &high = o.s_c.val() < o.s_d.val() ? o.s_d : o.s_c;
+        o.lo           = low.val() > 0 ? low : zero;
+        o.hi           = high.val() < 1 ? high : AD(1.);
+        if (o.hi.val() <= o.lo.val())
+          continue;
+        covered += o.hi.val() - o.lo.val();
+        overlaps[n_overlaps++] = o;
+      }
+      const bool dual_here      = input.dual && covered >= 1. - 1e-9;
+      AD         segment_weight = zero;
+
+      for (unsigned int i = 0; i < n_overlaps; ++i)
+      {
+        const Overlap &o = overlaps[i];
+        for (const double g : {-gauss, gauss})
+        {
+          const AD t      = 0.5 * (o.lo + o.hi) + 0.5 * (o.hi - o.lo) * g;
+          AD       weight = 0.5 * (o.hi - o.lo) * length;
+          if (input.axisymmetric)
+            weight *= 2. * M_PI * (xs[a][0] + t * (xs[b][0] - xs[a][0]));
+          const AD N_a   = 1. - t;
+          const AD N_b   = t;
+          const AD N_j   = j_is_a ? N_a : N_b;
+          const AD N_o   = j_is_a ? N_b : N_a;
+          const AD phi   = dual_here ? 2. * N_j - N_o : N_j;
+          const AD eta   = (t - o.s_c) / (o.s_d - o.s_c);
+          const AD w_phi = weight * phi;
+          D[a] += w_phi * N_a;
+          D[b] += w_phi * N_b;
+          M[o.c] += w_phi * (1. - eta);
+          M[o.d] += w_phi * eta;
+          segment_weight += w_phi;
+        }
+      }
+      normal_j = normal_j + scale(segment_weight / length, cross(ez_ad, e));
+    }
+    if (norm(normal_j).val() > 0)
+      normal_j = scale(1. / norm(normal_j), normal_j);
+
+    AD w = zero;
+    for (unsigned int i = 0; i < n_s; ++i)
+      w += D[i];
+    paired = w.val() >= input.min_weight && w.val() > 0;
+    if (!paired)
+      return result;
+
+    Vec3<AD> slave_point  = {{zero, zero, zero}};
+    Vec3<AD> master_point = {{zero, zero, zero}};
+    Vec3<AD> moved        = to<AD>(input.xs_old[0]);
+    for (unsigned int i = 0; i < n_s; ++i)
+    {
+      slave_point = slave_point + scale(D[i] / w, xs[i]);
+      moved       = moved - scale(D[i] / w, to<AD>(input.xs_old[i]));
+    }
+    for (unsigned int l = 0; l < n_m; ++l)
+    {
+      master_point = master_point + scale(M[l] / w, xm[l]);
+      moved        = moved + scale(M[l] / w, to<AD>(input.xm_old[l]));
+    }
+
+    PointKinematics kinematics;
+    kinematics.normal          = scale(-1., normal_j);
+    kinematics.gap             = dot(master_point - slave_point, normal_j);
+    const NodeState &committed = *slave.committed;
+    kinematics.slip =
+      internal::slip_increment(moved, committed, kinematics.normal);
+    kinematics.committed =
+      internal::committed_traction(committed, kinematics.normal);
+
+    AD weights[3 + max_mortar_master_nodes];
+    for (unsigned int i = 0; i < n_s; ++i)
+      weights[i] = D[i];
+    for (unsigned int l = 0; l < n_m; ++l)
+      weights[n_s + l] = -M[l];
+    internal::finish_weighted<2>(kinematics,
+                                 weights,
+                                 n_s + n_m,
+                                 n_displacements,
+                                 w,
+                                 slave,
+                                 enforcement,
+                                 R,
+                                 K,
+                                 result);
+    for (unsigned int d = 0; d < 3; ++d)
+      weighted_point[d] =
+        input.xs[0][d] + master_point[d].val() - slave_point[d].val();
+    return result;
+  }
+} // namespace tribos

@@ -1,0 +1,155 @@
+"""Verification of the 2D mortar discretization (Contact/Discretization =
+mortar).
+
+1. Contact patch test (tests/patch_test.prm: two stacked blocks, uniform
+   pressure p = 0.01 E on the top, the lower one on rollers) with
+   non-matching meshes at several size ratios, each side as slave, with
+   penalty, Lagrange multipliers and augmented Lagrangian, dual and
+   standard basis: every slave node's pressure CPRESS equal to the others
+   to 1e-10 relative with multipliers and 1e-9 with penalty (the
+   penetration, 1e-6 of coordinates of order 1, carries 1e-10 of
+   round-off), and the total contact force p
+   times the width to 1e-8 (Newton's tolerance). Node-to-segment one-pass
+   on the same meshes is run too and must fail it by more than 1 %.
+2. Frictional sliding (tests/ironing_2d.prm: neo-Hookean half cylinder slid
+   across a deformable block, mu = 0.3): penalty and multipliers converge,
+   the observed Newton order near convergence is >= 1.8 in the median
+   sliding increment (the consistent AD tangent through D, M and the
+   normal), the tangential force is mu times the normal force in the
+   steady slide to 1e-6, and mortar needs no more Newton iterations than
+   node to segment.
+3. Hertz 2D on an elastic block (parameters/hertz_2d.prm): contact
+   half-width and peak pressure within 3 % of Hertz; the pressure profile's
+   L2 error is reported next to node to segment's on the same mesh.
+"""
+
+import math
+import sys
+
+from tribos_test import setup, run, read_csv, check, finish, hertz_compare
+
+tribos, tests, out = setup(sys.argv)
+p, width = 0.01, 1.0
+
+# 1. Patch test.
+ratios = [(5, 3), (7, 3), (9, 4), (4, 11)]
+methods = ["penalty", "lagrange multiplier", "augmented lagrangian"]
+worst_spread, worst_total, n_runs = 0.0, 0.0, 0
+for lower, upper in ratios:
+    for pair in ("12 : 3", "3 : 12"):
+        for method in methods:
+            for basis in ("dual", "standard"):
+                if basis == "standard" and method != "lagrange multiplier":
+                    continue
+                name = "patch_%d_%d_%s_%s_%s" % (
+                    lower, upper, "upper" if pair.startswith("12") else
+                    "lower", method.replace(" ", "_"), basis)
+                folder = out + "/" + name
+                run(tribos, tests + "/patch_test.prm", folder, [
+                    "Scene/Two blocks/Lower subdivisions=%d, 2" % lower,
+                    "Scene/Two blocks/Upper subdivisions=%d, 2" % upper,
+                    "Contact/Pairs=" + pair,
+                    "Contact/Method=" + method,
+                    "Contact/Discretization=mortar",
+                    "Contact/Mortar basis=" + basis])
+                rows = read_csv(folder + "/contact-00001.csv")
+                pressures = [r["CPRESS"] for r in rows]
+                mean = sum(pressures) / len(pressures)
+                spread = (max(pressures) - min(pressures)) / mean
+                history = read_csv(folder + "/history.csv")[-1]
+                # The vertical resultant of the slave's contact forces.
+                total = abs(abs(history["pair0_Fy"]) - p * width) / (
+                    p * width)
+                worst_spread = max(worst_spread, spread)
+                worst_total = max(worst_total, total)
+                n_runs += 1
+                # Penalty: t_N = eps_N (-g_N) with a penetration of 1e-6 of
+                # coordinates of order 1, so round-off alone is 1e-10 of it.
+                bound = 1e-10 if method == "lagrange multiplier" else 1e-9
+                check(spread < bound and total < 1e-8,
+                      "%s: pressure spread %.1e, total force error %.1e"
+                      % (name, spread, total))
+print("patch test, %d mortar runs: worst pressure spread %.2e, worst total "
+      "force error %.2e" % (n_runs, worst_spread, worst_total))
+
+for lower, upper in ratios[:2]:
+    for pair in ("12 : 3", "3 : 12"):
+        folder = out + "/patch_nts_%d_%d_%s" % (lower, upper, pair[0])
+        run(tribos, tests + "/patch_test.prm", folder, [
+            "Scene/Two blocks/Lower subdivisions=%d, 2" % lower,
+            "Scene/Two blocks/Upper subdivisions=%d, 2" % upper,
+            "Contact/Pairs=" + pair,
+            "Contact/Method=lagrange multiplier"])
+        pressures = [r["CPRESS"] for r in
+                     read_csv(folder + "/contact-00001.csv")]
+        spread = (max(pressures) - min(pressures)) / (
+            sum(pressures) / len(pressures))
+        check(spread > 0.01, "node to segment %d/%d, pair %s fails the "
+              "patch test: pressure spread %.3f" % (lower, upper, pair,
+                                                    spread))
+
+
+# 2. Frictional sliding: order, friction law, iterations.
+def orders(folder):
+    rows = read_csv(folder + "/convergence.csv")
+    history = read_csv(folder + "/history.csv")
+    best = []
+    for h in history:
+        if h["time"] <= 1 + 1e-12:
+            continue
+        r = [x["residual"] for x in rows if x["increment"] ==
+             h["increment"] and x["iteration"] > 0 and
+             x["relative_residual"] > 1e-12]
+        o = [math.log(r[k] / r[k - 1]) / math.log(r[k - 1] / r[k - 2])
+             for k in range(2, len(r))]
+        best.append(max(o[-2:]) if o else 0.0)
+    return best, sum(h["newton_iterations"] for h in history), history[-1]
+
+
+_, nts_iterations, _ = (None, None, None)
+folder = out + "/sliding_nts"
+run(tribos, tests + "/ironing_2d.prm", folder)
+_, nts_iterations, _ = orders(folder)
+for method in ("penalty", "lagrange multiplier"):
+    folder = out + "/sliding_" + method.replace(" ", "_")
+    run(tribos, tests + "/ironing_2d.prm", folder,
+        ["Contact/Discretization=mortar", "Contact/Method=" + method])
+    best, iterations, last = orders(folder)
+    median = sorted(best)[len(best) // 2]
+    ratio = last["pair0_tangential_force"] / last["pair0_normal_force"]
+    print("sliding, mortar %s: %d Newton iterations (node to segment %d); "
+          "orders %s; F_T / F_N = %.8f" % (
+              method, iterations, nts_iterations,
+              " ".join("%.2f" % b for b in best), ratio))
+    check(median >= 1.8, "sliding, mortar %s: median order %.2f >= 1.8"
+          % (method, median))
+    check(abs(ratio - 0.3) < 1e-6, "sliding, mortar %s: F_T / F_N = mu "
+          "(%.8f)" % (method, ratio))
+    check(iterations <= nts_iterations, "sliding, mortar %s: %d Newton "
+          "iterations, node to segment %d" % (method, iterations,
+                                              nts_iterations))
+
+# 3. Hertz 2D on an elastic block.
+E, nu, R = 1.0, 0.3, 1.0
+prm = tests + "/../parameters/hertz_2d.prm"
+block = ["Scene/Cylinder over block/With block=true", "Contact/Pairs=10 : 3",
+         "Boundary conditions/Dirichlet=11 : xy : 0, -0.01*t ; 2 : xy : 0, 0",
+         "Output/Write VTU=false"]
+profiles = {}
+for discretization in ("node to segment", "mortar"):
+    for method in ("penalty", "lagrange multiplier"):
+        name = "hertz_%s_%s" % (discretization.replace(" ", "_"),
+                                method.replace(" ", "_"))
+        run(tribos, prm, out + "/" + name, block + [
+            "Contact/Discretization=" + discretization,
+            "Contact/Method=" + method])
+        a, p0, a_h, p0_h, profile, n, P = hertz_compare(
+            out + "/" + name, 2, E / (2 * (1 - nu * nu)), R, 1)
+        profiles[name] = profile
+        print("%s: a error %.2f %%, p0 error %.2f %%, profile L2 error "
+              "%.4f, %d nodes in contact" % (
+                  name, 100 * abs(a_h - a) / a, 100 * abs(p0_h - p0) / p0,
+                  profile, n))
+        check(abs(a_h - a) / a < 0.03 and abs(p0_h - p0) / p0 < 0.03,
+              "%s: a and p0 within 3 %% of Hertz" % name)
+finish()

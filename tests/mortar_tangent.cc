@@ -1,0 +1,236 @@
+/**
+ * Unit test: the 2D mortar element's tangent (Sacado AD through the
+ * segment projections, the clipped overlaps, D, M, the weighted nodal
+ * normal and the enforcement's law) against central finite differences of
+ * its residual. Random configurations: a slave node with one or two
+ * segments (a curved slave surface), three or four master segments below
+ * it (finer and coarser than the slave), overlaps clipped at the slave
+ * segments' ends and at the master's end (standard basis there), dual and
+ * standard basis; frictionless, stick and slip; with the penalty law and
+ * with the Lagrange multiplier law (the rows and columns of the node's
+ * multipliers included). Asserts a relative error below 1e-6 and that the
+ * weights D, M reproduce the patch-test identity sum_k D_jk = sum_l M_jl
+ * = w_j > 0 (checked through the residual of a uniform traction: the sum
+ * of the forces vanishes).
+ */
+
+#include <tribos/contact/lagrange_multiplier.h>
+#include <tribos/contact/mortar_element.h>
+#include <tribos/contact/penalty.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+using namespace tribos;
+
+int
+main()
+{
+  std::mt19937                           random(20261123);
+  std::uniform_real_distribution<double> u(-1, 1);
+  static const Parameters::Contact       parameters{};
+  static const Penalty<2>                penalty;
+  static const LagrangeMultiplier<2>     multipliers(parameters);
+
+  bool         ok          = true;
+  double       worst_error = 0, worst_balance = 0;
+  unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0};
+  for (unsigned int sample = 0; sample < 2000; ++sample)
+  {
+    const bool            with_multipliers = sample % 2 == 1;
+    const Enforcement<2> &enforcement =
+      with_multipliers ? static_cast<const Enforcement<2> &>(multipliers) :
+                         static_cast<const Enforcement<2> &>(penalty);
+
+    // Slave: node j at the origin, neighbours left and right (slave body
+    // above, so the segments run right to left for an outward normal
+    // pointing down); sometimes only one segment (an end of the slave).
+    MortarInput  input;
+    const double h_slave   = 0.5 + 0.3 * u(random);
+    input.xs[0]            = {{0.05 * u(random), 0.02 * u(random), 0}};
+    input.xs[1]            = {{h_slave, 0.1 * h_slave + 0.05 * u(random), 0}};
+    input.xs[2]            = {{-h_slave + 0.05 * u(random), 0.1 * h_slave, 0}};
+    const bool one_segment = sample % 7 == 0;
+    input.n_slave_nodes    = one_segment ? 2 : 3;
+    input.n_slave_segments = one_segment ? 1 : 2;
+    input.slave_segment[0][0] = 1;
+    input.slave_segment[0][1] = 0;
+    input.slave_segment[1][0] = 0;
+    input.slave_segment[1][1] = 2;
+
+    // Master: a polyline below, left to right (body below, normal up),
+    // spacing finer or coarser than the slave; sometimes ending under
+    // the slave segment (partial coverage).
+    const unsigned int n_master = 3 + sample % 2;
+    const double       h_master = (sample % 3 == 0 ? 0.4 : 1.0) * h_slave;
+    const double       start =
+      -0.5 * n_master * h_master + 0.3 * h_master * u(random);
+    const bool short_master = sample % 5 == 0;
+    input.n_master_nodes    = n_master + 1;
+    input.n_master_segments = n_master;
+    for (unsigned int l = 0; l <= n_master; ++l)
+      input.xm[l] = {{start + l * h_master * (short_master ? 0.6 : 1.),
+                      0.01 * u(random) - 0.02 * std::abs(u(random)),
+                      0}};
+    for (unsigned int m = 0; m < n_master; ++m)
+      input.master_segment[m] = {{m, m + 1}};
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int d = 0; d < 2; ++d)
+        input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
+    for (unsigned int l = 0; l <= n_master; ++l)
+      for (unsigned int d = 0; d < 2; ++d)
+        input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
+    input.dual         = sample % 3 != 2;
+    input.axisymmetric = false;
+    input.min_weight   = 0;
+    // Shift the slave up or down: open or closed.
+    const double lift = -0.03 + 0.04 * u(random);
+    for (unsigned int i = 0; i < 3; ++i)
+      input.xs[i][1] += lift;
+
+    ContactLaw law;
+    law.normal_penalty       = 1e3;
+    law.tangential_penalty   = (sample % 4 == 0 ? 1e5 : 1e2);
+    law.friction_coefficient = sample % 6 == 0 ? 0. : 0.3;
+    NodeState history;
+    history.result.status   = ContactStatus::stick;
+    history.result.normal   = {{0, 1, 0}};
+    history.result.traction = {{2 * u(random), 0, 0}};
+    history.point           = {
+                {input.xs_old[0][0] + 0.01 * u(random), input.xs_old[0][1] - 0.01, 0}};
+    const Vec3<double> lambda{{3 * u(random), 5 + 3 * u(random), 0}};
+
+    SlaveInput slave;
+    slave.position   = input.xs[0];
+    slave.committed  = &history;
+    slave.law        = law;
+    slave.area       = h_slave;
+    slave.consistent = true;
+    slave.unknowns   = with_multipliers ? &lambda : nullptr;
+
+    const unsigned int n_displacements =
+      2 * (input.n_slave_nodes + input.n_master_nodes);
+    const unsigned int       n = n_displacements + (with_multipliers ? 2 : 0);
+    std::vector<double>      R(n), K(n * n), Rp(n), Rm(n);
+    bool                     paired;
+    Vec3<double>             point;
+    const ContactPointResult result = Mortar2D::evaluate(slave,
+                                                         input,
+                                                         enforcement,
+                                                         R.data(),
+                                                         K.data(),
+                                                         paired,
+                                                         point);
+    if (!paired)
+      continue;
+    ++n_status[static_cast<int>(result.status)];
+
+    // Force balance: the forces on all nodes sum to zero (sum D = sum M).
+    if (!with_multipliers || result.status != ContactStatus::open)
+      for (unsigned int d = 0; d < 2; ++d)
+      {
+        double sum = 0, scale = 0;
+        for (unsigned int i = d; i < n_displacements; i += 2)
+        {
+          sum += R[i];
+          scale = std::max(scale, std::abs(R[i]));
+        }
+        if (scale > 0)
+          worst_balance = std::max(worst_balance, std::abs(sum) / scale);
+      }
+
+    // Central differences, the same branches.
+    const double step  = 1e-7;
+    double       error = 0, scale = 0;
+    bool         same_branch = true;
+    for (unsigned int j = 0; j < n; ++j)
+    {
+      MortarInput  plus = input, minus = input;
+      Vec3<double> lambda_plus = lambda, lambda_minus = lambda;
+      if (j < 2 * input.n_slave_nodes)
+      {
+        plus.xs[j / 2][j % 2] += step;
+        minus.xs[j / 2][j % 2] -= step;
+      }
+      else if (j < n_displacements)
+      {
+        const unsigned int l = (j - 2 * input.n_slave_nodes) / 2;
+        plus.xm[l][j % 2] += step;
+        minus.xm[l][j % 2] -= step;
+      }
+      else
+      {
+        lambda_plus[j - n_displacements] += step;
+        lambda_minus[j - n_displacements] -= step;
+      }
+      SlaveInput s_plus = slave, s_minus = slave;
+      s_plus.position  = plus.xs[0];
+      s_minus.position = minus.xs[0];
+      if (with_multipliers)
+      {
+        s_plus.unknowns  = &lambda_plus;
+        s_minus.unknowns = &lambda_minus;
+      }
+      bool       paired_p, paired_m;
+      const auto r_p = Mortar2D::evaluate(s_plus,
+                                          plus,
+                                          enforcement,
+                                          Rp.data(),
+                                          nullptr,
+                                          paired_p,
+                                          point);
+      const auto r_m = Mortar2D::evaluate(s_minus,
+                                          minus,
+                                          enforcement,
+                                          Rm.data(),
+                                          nullptr,
+                                          paired_m,
+                                          point);
+      if (!paired_p || !paired_m || r_p.status != result.status ||
+          r_m.status != result.status)
+      {
+        same_branch = false;
+        break;
+      }
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const double fd = (Rp[i] - Rm[i]) / (2 * step);
+        error           = std::max(error, std::abs(fd - K[i * n + j]));
+        scale           = std::max(scale, std::abs(K[i * n + j]));
+      }
+    }
+    if (!same_branch || scale == 0)
+      continue;
+    ++n_checked;
+    const double relative = error / scale;
+    worst_error           = std::max(worst_error, relative);
+    if (relative > 1e-6)
+    {
+      ok = false;
+      std::cout << "sample " << sample << ": tangent error " << relative
+                << " (status " << static_cast<int>(result.status)
+                << (with_multipliers ? ", multipliers" : ", penalty")
+                << (input.dual ? ", dual" : ", standard") << ")\n";
+    }
+  }
+  std::cout << "checked " << n_checked << " mortar elements (open "
+            << n_status[0] << ", stick " << n_status[1] << ", slip "
+            << n_status[2] << ", frictionless " << n_status[3]
+            << "); worst relative tangent error " << worst_error
+            << ", worst force balance " << worst_balance << "\n";
+  if (n_checked < 500 || n_status[1] < 50 || n_status[2] < 50 ||
+      n_status[3] < 20)
+  {
+    std::cout << "FAILED: too few elements of some kind were checked\n";
+    ok = false;
+  }
+  if (worst_balance > 1e-10)
+  {
+    std::cout << "FAILED: the forces of a mortar element do not balance\n";
+    ok = false;
+  }
+  std::cout << (ok ? "OK" : "FAILED") << std::endl;
+  return ok ? 0 : 1;
+}
