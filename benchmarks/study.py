@@ -6,6 +6,8 @@ scenes through `tribos --set ...` and writes one CSV row per run.
     python3 benchmarks/study.py --full          # adds finer meshes (~40 min)
     python3 benchmarks/study.py --smoke --out /tmp/smoke   # CI: seconds
     python3 benchmarks/study.py --plots-only    # redraw from doc/data/study.csv
+    python3 benchmarks/study.py --mortar        # node to segment vs mortar
+                                                # (~3 min) -> study_mortar.csv
 
 Default output: doc/data/study.csv and the plots doc/study_*.png (gnuplot),
 which doc/benchmarks.md shows. Every number in doc/benchmarks.md comes from
@@ -187,6 +189,9 @@ def main():
     level.add_argument("--smoke", action="store_true")
     level.add_argument("--plots-only", action="store_true",
                        help="redraw the plots from an existing study.csv")
+    level.add_argument("--mortar", action="store_true",
+                       help="node to segment against mortar only "
+                       "(study_mortar.csv)")
     args = parser.parse_args()
     if args.plots_only:
         plots(args.out or os.path.join(ROOT, "doc", "data"))
@@ -197,6 +202,10 @@ def main():
     os.makedirs(data, exist_ok=True)
     rows = []
     go = lambda *a, **k: record(rows, *a, tribos=args.tribos, **k)
+    if args.mortar:
+        mortar_study(go, work)
+        write(rows, data, "study_mortar.csv")
+        return
 
     E, nu = 1.0, 0.3
     hertz2 = "parameters/hertz_2d.prm"
@@ -310,8 +319,54 @@ def main():
     plots(data)
 
 
-def write(rows, data):
-    path = os.path.join(data, "study.csv")
+def mortar_study(go, work):
+    """Node to segment against mortar (2D, deformable master): Hertz on an
+    elastic block over three contact refinements (penalty 1000 E/h and
+    multipliers), the frictional ironing of tests/ironing_2d.prm (Newton
+    iterations) and the contact patch test (pressure spread in error)."""
+    E, nu = 1.0, 0.3
+    hertz2 = "parameters/hertz_2d.prm"
+    block2 = ["Scene/Cylinder over block/With block=true",
+              "Contact/Pairs=10 : 3",
+              "Boundary conditions/Dirichlet=11 : xy : 0, -0.01*t ; "
+              "2 : xy : 0, 0"]
+    on_block = hertz_errors(2, E / (2 * (1 - nu * nu)), 1)
+    discretizations = ("node to segment", "mortar")
+    for lv in (3, 4, 5):
+        for d in discretizations:
+            for m in ("1000E/h", "lagrange"):
+                go("mortar_hertz_block", "%s %s L%d" % (d, m, lv), hertz2,
+                   os.path.join(work, "mortar_hertz_%s_%s_%d" % (
+                       d.split()[0], m, lv)),
+                   method_sets(m) + block2 + [
+                       "Contact/Discretization=" + d,
+                       "Scene/Cylinder over block/Contact refinements=%d"
+                       % lv], on_block, level=lv, method=METHODS[m][0],
+                   factor=METHODS[m][1])
+    for d in discretizations:
+        for m in ("10E/h", "lagrange"):
+            go("mortar_ironing_2d", "%s %s" % (d, m), "tests/ironing_2d.prm",
+               os.path.join(work, "mortar_ironing_%s_%s" % (d.split()[0], m)),
+               method_sets(m) + ["Contact/Discretization=" + d],
+               lambda f, h: {}, method=METHODS[m][0], factor=METHODS[m][1])
+
+    def spread(folder, h):
+        with open(os.path.join(folder, "contact-00001.csv")) as f:
+            p = [float(r["CPRESS"]) for r in csv.DictReader(f)]
+        return {"error": (max(p) - min(p)) / (sum(p) / len(p))}
+    for d in discretizations:
+        for pair in ("12 : 3", "3 : 12"):
+            go("mortar_patch", "%s slave %s" % (d, pair.split()[0]),
+               "tests/patch_test.prm",
+               os.path.join(work, "mortar_patch_%s_%s" % (d.split()[0],
+                                                          pair[0])),
+               method_sets("lagrange") + ["Contact/Discretization=" + d,
+                                          "Contact/Pairs=" + pair],
+               spread, method="lagrange multiplier")
+
+
+def write(rows, data, name="study.csv"):
+    path = os.path.join(data, name)
     with open(path, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()

@@ -4,7 +4,8 @@ relative (reactions, contact forces, stick/slip counts) for penalty,
 augmented Lagrangian and Lagrange multipliers, in 2D (a block dragged over
 a rigid plane; the ironing: large frictional sliding over a deformable
 master) and in 3D (two blocks sliding with friction over a deformable
-non-matching interface). Which process owns which slave node and master
+non-matching interface); the ironing also with mortar (2D), whose
+elements reach the slave node's neighbours. Which process owns which slave node and master
 face is the partitioner's choice; these runs do not check it."""
 
 import sys
@@ -15,10 +16,13 @@ tribos, tests, out = setup(sys.argv)
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all")
 methods = ("penalty", "augmented lagrangian", "lagrange multiplier")
-for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d"):
-    prm = "%s/%s.prm" % (tests, scene)
+for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d",
+              "ironing_2d_mortar"):
+    prm = "%s/%s.prm" % (tests, scene.replace("_mortar", ""))
     for method in methods:
         sets = ["Contact/Method=" + method, "Output/Write VTU=false"]
+        if scene.endswith("mortar"):
+            sets.append("Contact/Discretization=mortar")
         name = "%s_%s" % (scene, method.replace(" ", "_"))
         serial = out + "/" + name + "_np1"
         run(tribos, prm, serial, sets)

@@ -160,6 +160,9 @@ namespace tribos
       }
     };
 
+    // A mortar element too large for the AD type: the iterate is void
+    // (the increment is cut back on every process).
+    std::string too_large;
     for (unsigned int p = 0; p < contact_pairs.size(); ++p)
     {
       auto                   &pair        = contact_pairs[p];
@@ -219,16 +222,22 @@ namespace tribos
               for (unsigned int v = 0; v < 2; ++v)
                 segment[v] =
                   local(master_nodes, pair.master->faces()[f].nodes[v]);
-              AssertThrow(master_nodes.size() <= max_mortar_master_nodes,
-                          ExcMessage(
-                            "Contact pair <" + pair.description.text +
-                            ">: the mortar element of slave node at (" +
-                            std::to_string(x[0]) + ", " + std::to_string(x[1]) +
-                            ") overlaps more than " +
-                            std::to_string(max_mortar_master_nodes) +
-                            " master nodes; make the finer side the slave."));
+              if (master_nodes.size() > max_mortar_master_nodes &&
+                  too_large.empty())
+                too_large =
+                  "contact pair <" + pair.description.text +
+                  ">: the mortar element of the slave node at (" +
+                  to_scientific(x[0]) + ", " + to_scientific(x[1]) +
+                  ") overlaps more than " +
+                  std::to_string(max_mortar_master_nodes) +
+                  " master nodes (an iterate gone astray, or a master much "
+                  "finer than the slave: make the finer side the slave)";
+              if (master_nodes.size() > max_mortar_master_nodes)
+                break;
               mortar.master_segment[mortar.n_master_segments++] = segment;
             }
+            if (master_nodes.size() > max_mortar_master_nodes)
+              continue;
             mortar.n_master_nodes = master_nodes.size();
             for (unsigned int l = 0; l < master_nodes.size(); ++l)
             {
@@ -384,6 +393,11 @@ namespace tribos
         add(dofs.size());
       }
     }
+    if (Utilities::MPI::max(too_large.empty() ? 0 : 1, mpi_communicator) > 0)
+      throw NonConvergence(too_large.empty() ?
+                             "a mortar element on another process is too "
+                             "large" :
+                             too_large);
   }
 
 

@@ -55,15 +55,16 @@ namespace tribos
    * and the node's point quantities for the enforcement are
    *
    *   g_j = n_j . (sum_l M_jl y_l - sum_k D_jk x_k) / w_j  (weighted gap),
-   *   dg_T = P_T [ sum_l M_jl y_l,n - sum_k D_jk x_k,n ] / w_j - (xbar_n -
-   * x_j,n)
+   *   dg_T = P_T [ (sum_l M_jl y_l,n - sum_k D_jk x_k,n) / w_j
+   *                - (xbar_n - x_j,n) ]
    *
-   * with n_j the slave's averaged nodal normal (the sum of its segments'
-   * normals), y_l,n and x_k,n the nodes at the last converged step and
-   * xbar_n - x_j,n the committed offset of the weighted master point: like
-   * node to segment, the slip is the change of where the slave sits on the
-   * master as it was, so a rigid motion of both bodies slips nothing.
-   * Force on slave node k: D_jk f, on master node l: -M_jl f, for the
+   * with n_j the slave's nodal normal (the unit normals of its segments
+   * weighted by their share of w_j, so that a segment leaving the master
+   * fades out of it continuously), y_l,n and x_k,n the nodes at the last
+   * converged step and xbar_n - x_j,n the committed offset of the weighted
+   * master point: like node to segment, the slip is the change of where the
+   * slave sits on the master as it was, so a rigid motion of both bodies slips
+   * nothing. Force on slave node k: D_jk f, on master node l: -M_jl f, for the
    * traction f of the enforcement's local law (penalty, multipliers or
    * augmented, with the Coulomb return map); the unknowns' rows are w_j
    * times the conditions. Everything, D and M included, is Sacado AD of
