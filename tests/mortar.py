@@ -5,7 +5,8 @@ mortar).
    pressure p = 0.01 E on the top, the lower one on rollers) with
    non-matching meshes at several size ratios, each side as slave, with
    penalty, Lagrange multipliers and augmented Lagrangian, dual and
-   standard basis: every slave node's pressure CPRESS equal to the others
+   standard basis, plane strain and axisymmetric (the dual functions are
+   biorthogonal in the measure 2 pi r dr there): every slave node's pressure CPRESS equal to the others
    to 1e-10 relative with multipliers and 1e-9 with penalty (the
    penetration, 1e-6 of coordinates of order 1, carries 1e-10 of
    round-off), and the total contact force p
@@ -35,15 +36,19 @@ p, width = 0.01, 1.0
 ratios = [(5, 3), (7, 3), (9, 4), (4, 11)]
 methods = ["penalty", "lagrange multiplier", "augmented lagrangian"]
 worst_spread, worst_total, n_runs = 0.0, 0.0, 0
-for lower, upper in ratios:
+# Plane strain at every ratio; axisymmetric (the blocks are discs of radius
+# 1 about x = 0, the load p pi R^2) at two.
+geometries = [(r, False) for r in ratios] + [(r, True) for r in ratios[:2]]
+for (lower, upper), axisymmetric in geometries:
     for pair in ("12 : 3", "3 : 12"):
         for method in methods:
             for basis in ("dual", "standard"):
                 if basis == "standard" and method != "lagrange multiplier":
                     continue
-                name = "patch_%d_%d_%s_%s_%s" % (
+                name = "patch_%d_%d_%s_%s_%s%s" % (
                     lower, upper, "upper" if pair.startswith("12") else
-                    "lower", method.replace(" ", "_"), basis)
+                    "lower", method.replace(" ", "_"), basis,
+                    "_axisymmetric" if axisymmetric else "")
                 folder = out + "/" + name
                 run(tribos, tests + "/patch_test.prm", folder, [
                     "Scene/Two blocks/Lower subdivisions=%d, 2" % lower,
@@ -51,15 +56,17 @@ for lower, upper in ratios:
                     "Contact/Pairs=" + pair,
                     "Contact/Method=" + method,
                     "Contact/Discretization=mortar",
-                    "Contact/Mortar basis=" + basis])
+                    "Contact/Mortar basis=" + basis,
+                    "Finite element/Axisymmetric=%s" % str(
+                        axisymmetric).lower()])
                 rows = read_csv(folder + "/contact-00001.csv")
                 pressures = [r["CPRESS"] for r in rows]
                 mean = sum(pressures) / len(pressures)
                 spread = (max(pressures) - min(pressures)) / mean
                 history = read_csv(folder + "/history.csv")[-1]
                 # The vertical resultant of the slave's contact forces.
-                total = abs(abs(history["pair0_Fy"]) - p * width) / (
-                    p * width)
+                load = p * (math.pi * width ** 2 if axisymmetric else width)
+                total = abs(abs(history["pair0_Fy"]) - load) / load
                 worst_spread = max(worst_spread, spread)
                 worst_total = max(worst_total, total)
                 n_runs += 1

@@ -6,7 +6,8 @@
  * segments (a curved slave surface), three or four master segments below
  * it (finer and coarser than the slave), overlaps clipped at the slave
  * segments' ends and at the master's end (standard basis there), dual and
- * standard basis; frictionless, stick and slip; with the penalty law and
+ * standard basis, plane and axisymmetric (weight 2 pi r); frictionless,
+ * stick and slip; with the penalty law and
  * with the Lagrange multiplier law (the rows and columns of the node's
  * multipliers included). Asserts a relative error below 1e-6 and that the
  * weights D, M reproduce the patch-test identity sum_k D_jk = sum_l M_jl
@@ -82,9 +83,24 @@ main()
     for (unsigned int l = 0; l <= n_master; ++l)
       for (unsigned int d = 0; d < 2; ++d)
         input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
-    input.dual         = sample % 3 != 2;
-    input.axisymmetric = false;
-    input.min_weight   = 0;
+    input.dual = sample % 3 != 2;
+    // Every fourth: axisymmetric (x = r > 0), weight 2 pi r in every
+    // integral and in the dual functions.
+    input.axisymmetric = sample % 4 == 1;
+    if (input.axisymmetric)
+    {
+      for (unsigned int i = 0; i < 3; ++i)
+      {
+        input.xs[i][0] += 3.;
+        input.xs_old[i][0] += 3.;
+      }
+      for (unsigned int l = 0; l <= n_master; ++l)
+      {
+        input.xm[l][0] += 3.;
+        input.xm_old[l][0] += 3.;
+      }
+    }
+    input.min_weight = 0;
     // Shift the slave up or down: open or closed.
     const double lift = -0.03 + 0.04 * u(random);
     for (unsigned int i = 0; i < 3; ++i)

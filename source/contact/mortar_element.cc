@@ -82,8 +82,34 @@ namespace tribos
         covered += o.hi.val() - o.lo.val();
         overlaps[n_overlaps++] = o;
       }
-      const bool dual_here      = input.dual && covered >= 1. - 1e-9;
-      AD         segment_weight = zero;
+      const bool dual_here = input.dual && covered >= 1. - 1e-9;
+      // The dual functions of the segment, Phi = A N with A = D_e M_e^-1
+      // (M_e the segment's mass matrix, D_e its row sums) in the measure
+      // of the integrals: 2 N_j - N_o on a plane; with the weight 2 pi r of
+      // axisymmetry they differ, and the plane ones would give the node on
+      // the axis a zero weight. c_j, c_o: the row of A of node j.
+      AD c_j = 1., c_o = 0.;
+      if (dual_here)
+      {
+        AD mass[2][2] = {{zero, zero}, {zero, zero}};
+        for (const double g : {-gauss, gauss})
+        {
+          const AD t = 0.5 + 0.5 * g;
+          AD       r = 1.;
+          if (input.axisymmetric)
+            r = xs[a][0] + t * (xs[b][0] - xs[a][0]);
+          const AD N[2] = {j_is_a ? 1. - t : t, j_is_a ? t : 1. - t};
+          for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int k = 0; k < 2; ++k)
+              mass[i][k] += 0.5 * r * N[i] * N[k];
+        }
+        // Row j of D_e M_e^-1 (index 0: node j, 1: the other node).
+        const AD det = mass[0][0] * mass[1][1] - mass[0][1] * mass[1][0];
+        const AD d_j = mass[0][0] + mass[0][1];
+        c_j          = d_j * mass[1][1] / det;
+        c_o          = -d_j * mass[0][1] / det;
+      }
+      AD segment_weight = zero;
 
       for (unsigned int i = 0; i < n_overlaps; ++i)
       {
@@ -98,7 +124,7 @@ namespace tribos
           const AD N_b   = t;
           const AD N_j   = j_is_a ? N_a : N_b;
           const AD N_o   = j_is_a ? N_b : N_a;
-          const AD phi   = dual_here ? 2. * N_j - N_o : N_j;
+          const AD phi   = c_j * N_j + c_o * N_o;
           const AD eta   = (t - o.s_c) / (o.s_d - o.s_c);
           const AD w_phi = weight * phi;
           D[a] += w_phi * N_a;
