@@ -1,8 +1,8 @@
 """Golden outputs: small contact scenes that pin the behaviour of every
 enforcement method (penalty, Lagrange multipliers, augmented Lagrangian),
 with and without friction, 2D and 3D, one- and two-pass, rigid, faceted and
-smoothed deformable masters, axisymmetric. Each case's history.csv and its
-last contact-NNNNN.csv are compared with tests/golden/<case>.history.csv
+smoothed deformable masters, mortar, axisymmetric. Each case's history.csv
+and its last contact-NNNNN.csv are compared with tests/golden/<case>.history.csv
 and tests/golden/<case>.contact.csv.
 
 Tolerances: every number through numdiff at 1e-6 relative and 1e-10
@@ -49,6 +49,10 @@ CASES = {
     "penalty_friction_smoothed_2d": (
         "ironing_2d.prm", IRONING + ["Contact/Master smoothing=averaged normals"]),
     "penalty_two_pass_2d": ("patch_test.prm", ["Contact/Passes=two-pass"]),
+    "penalty_friction_mortar_2d": (
+        "ironing_2d.prm", IRONING + ["Contact/Discretization=mortar"]),
+    "lagrange_friction_mortar_2d": (
+        "ironing_2d.prm", IRONING + LM + ["Contact/Discretization=mortar"]),
     "penalty_friction_3d": ("sliding_blocks_3d.prm", []),
     "lagrange_friction_3d": ("sliding_blocks_3d.prm", LM),
     "augmented_frictionless_rigid_3d": ("../parameters/hertz_3d.prm",
