@@ -13,6 +13,91 @@
 
 namespace tribos
 {
+  namespace
+  {
+    /**
+     * The input of slave node @p k's mortar element (2D): its slave stencil
+     * and segments, the master nodes and segments the search found, now
+     * and at the last converged step; @p dofs gets the element's dofs
+     * (slave stencil, master nodes, the node's unknowns). Returns false,
+     * with the reason in @p too_large (the first one), if the element
+     * couples more master nodes than the AD number holds.
+     */
+    bool
+    mortar_input(const ContactPair<2>                 &pair,
+                 const unsigned int                    k,
+                 MortarInput                          &mortar,
+                 std::vector<types::global_dof_index> &dofs,
+                 std::string                          &too_large)
+    {
+      std::vector<unsigned int> stencil, master_nodes;
+      const auto                local =
+        [](std::vector<unsigned int> &list, const unsigned int node)
+      {
+        const auto at = std::find(list.begin(), list.end(), node);
+        if (at != list.end())
+          return static_cast<unsigned int>(at - list.begin());
+        list.push_back(node);
+        return static_cast<unsigned int>(list.size() - 1);
+      };
+      pair.slave_stencil(k, stencil);
+      for (const unsigned int f : pair.slave->nodes()[k].faces)
+      {
+        auto &segment = mortar.slave_segment[mortar.n_slave_segments++];
+        for (unsigned int v = 0; v < 2; ++v)
+          segment[v] = local(stencil, pair.slave->faces()[f].nodes[v]);
+      }
+      for (const unsigned int f : pair.mortar_faces[k])
+      {
+        std::array<unsigned int, 2> segment;
+        for (unsigned int v = 0; v < 2; ++v)
+          segment[v] = local(master_nodes, pair.master->faces()[f].nodes[v]);
+        if (master_nodes.size() > max_mortar_master_nodes)
+        {
+          const Vec3<double> &x = pair.slave_positions[k];
+          if (too_large.empty())
+            too_large =
+              "contact pair <" + pair.description.text +
+              ">: the mortar element of the slave node at (" +
+              to_scientific(x[0]) + ", " + to_scientific(x[1]) +
+              ") overlaps more than " +
+              std::to_string(max_mortar_master_nodes) +
+              " master nodes (an iterate gone astray, or a master much "
+              "finer than the slave: make the finer side the slave)";
+          return false;
+        }
+        mortar.master_segment[mortar.n_master_segments++] = segment;
+      }
+
+      mortar.n_slave_nodes = stencil.size();
+      dofs.clear();
+      for (unsigned int i = 0; i < stencil.size(); ++i)
+      {
+        mortar.xs[i]     = pair.slave_positions[stencil[i]];
+        mortar.xs_old[i] = pair.old_slave_positions[stencil[i]];
+        for (const auto dof : pair.slave->nodes()[stencil[i]].dofs)
+          dofs.push_back(dof);
+      }
+      mortar.n_master_nodes = master_nodes.size();
+      for (unsigned int l = 0; l < master_nodes.size(); ++l)
+      {
+        mortar.xm[l]     = pair.master_positions[master_nodes[l]];
+        mortar.xm_old[l] = pair.old_master_positions[master_nodes[l]];
+        for (const auto dof : pair.master->nodes()[master_nodes[l]].dofs)
+          dofs.push_back(dof);
+      }
+      const unsigned int n = pair.enforcement->n_node_unknowns();
+      for (unsigned int d = 0; d < n; ++d)
+        dofs.push_back(pair.first_unknown + n * k + d);
+      mortar.dual         = pair.dual_basis;
+      mortar.axisymmetric = pair.axisymmetric;
+      mortar.min_weight   = 1e-3 * pair.area[k];
+      return true;
+    }
+  } // namespace
+
+
+
   template <int dim>
   ContactHandler<dim>::ContactHandler(
     const Parameters::Contact                       &parameters,
@@ -163,6 +248,22 @@ namespace tribos
     // A mortar element too large for the AD type: the iterate is void
     // (the increment is cut back on every process).
     std::string too_large;
+    // The rows of an evaluated element (R, K) with the dofs in dofs: the
+    // enforcement's last look at the unknowns' rows, then the system.
+    const auto add_element =
+      [&](const ContactPair<dim> &pair, const unsigned int k, NodeState &state)
+    {
+      const unsigned int n_unknowns = pair.enforcement->n_node_unknowns();
+      if (n_unknowns > 0)
+        pair.enforcement->finish_rows(dofs,
+                                      dofs.size() - n_unknowns,
+                                      homogeneous,
+                                      pair.area[k],
+                                      state,
+                                      R,
+                                      K);
+      add(dofs.size());
+    };
     for (unsigned int p = 0; p < contact_pairs.size(); ++p)
     {
       auto                   &pair        = contact_pairs[p];
@@ -188,74 +289,24 @@ namespace tribos
         state.point                   = x;
         // Mortar: the node's element over its slave segments (its weight
         // may still leave it without a master).
-        MortarInput               mortar;
-        std::vector<unsigned int> stencil, master_nodes;
-        SlaveInput                slave;
+        SlaveInput slave;
+        if (state.paired)
+        {
+          slave.position  = x;
+          slave.committed = &committed;
+          slave.law       = enforcement.law(pair, k, state, homogeneous);
+          slave.law.frozen_closed = monitor.frozen(p, k);
+          slave.area              = pair.area[k];
+          slave.unknowns          = n_unknowns > 0 ? &state.lambda : nullptr;
+          slave.consistent        = consistent;
+        }
         if constexpr (dim == 2)
           if (pair.mortar && state.paired)
           {
-            pair.slave_stencil(k, stencil);
-            mortar.n_slave_nodes = stencil.size();
-            for (unsigned int i = 0; i < stencil.size(); ++i)
-            {
-              mortar.xs[i]     = pair.slave_positions[stencil[i]];
-              mortar.xs_old[i] = pair.old_slave_positions[stencil[i]];
-            }
-            const auto local =
-              [](std::vector<unsigned int> &list, const unsigned int node)
-            {
-              const auto at = std::find(list.begin(), list.end(), node);
-              if (at != list.end())
-                return static_cast<unsigned int>(at - list.begin());
-              list.push_back(node);
-              return static_cast<unsigned int>(list.size() - 1);
-            };
-            for (const unsigned int f : pair.slave->nodes()[k].faces)
-            {
-              auto &segment = mortar.slave_segment[mortar.n_slave_segments++];
-              for (unsigned int v = 0; v < 2; ++v)
-                segment[v] = local(stencil, pair.slave->faces()[f].nodes[v]);
-            }
-            for (const unsigned int f : pair.mortar_faces[k])
-            {
-              std::array<unsigned int, 2> segment;
-              for (unsigned int v = 0; v < 2; ++v)
-                segment[v] =
-                  local(master_nodes, pair.master->faces()[f].nodes[v]);
-              if (master_nodes.size() > max_mortar_master_nodes &&
-                  too_large.empty())
-                too_large =
-                  "contact pair <" + pair.description.text +
-                  ">: the mortar element of the slave node at (" +
-                  to_scientific(x[0]) + ", " + to_scientific(x[1]) +
-                  ") overlaps more than " +
-                  std::to_string(max_mortar_master_nodes) +
-                  " master nodes (an iterate gone astray, or a master much "
-                  "finer than the slave: make the finer side the slave)";
-              if (master_nodes.size() > max_mortar_master_nodes)
-                break;
-              mortar.master_segment[mortar.n_master_segments++] = segment;
-            }
-            if (master_nodes.size() > max_mortar_master_nodes)
+            MortarInput mortar;
+            if (!mortar_input(pair, k, mortar, dofs, too_large))
               continue;
-            mortar.n_master_nodes = master_nodes.size();
-            for (unsigned int l = 0; l < master_nodes.size(); ++l)
-            {
-              mortar.xm[l]     = pair.master_positions[master_nodes[l]];
-              mortar.xm_old[l] = pair.old_master_positions[master_nodes[l]];
-            }
-            mortar.dual         = pair.dual_basis;
-            mortar.axisymmetric = pair.axisymmetric;
-            mortar.min_weight   = 1e-3 * pair.area[k];
-
-            slave.position  = x;
-            slave.committed = &committed;
-            slave.law       = enforcement.law(pair, k, state, homogeneous);
-            slave.law.frozen_closed = monitor.frozen(p, k);
-            slave.area              = pair.area[k];
-            slave.unknowns          = n_unknowns > 0 ? &state.lambda : nullptr;
-            slave.consistent        = consistent;
-            bool         paired     = false;
+            bool         paired = false;
             Vec3<double> point;
             state.result = Mortar2D::evaluate(slave,
                                               mortar,
@@ -270,26 +321,8 @@ namespace tribos
               state.point    = point;
               state.slip     = committed.slip + r.slip_increment;
               pair.ever_near = true;
-              if (n_unknowns == 0 && r.status == ContactStatus::open)
-                continue;
-              dofs.clear();
-              for (const unsigned int node : stencil)
-                for (const auto dof : pair.slave->nodes()[node].dofs)
-                  dofs.push_back(dof);
-              for (const unsigned int node : master_nodes)
-                for (const auto dof : pair.master->nodes()[node].dofs)
-                  dofs.push_back(dof);
-              for (unsigned int d = 0; d < n_unknowns; ++d)
-                dofs.push_back(pair.first_unknown + n_unknowns * k + d);
-              if (n_unknowns > 0)
-                enforcement.finish_rows(dofs,
-                                        dofs.size() - n_unknowns,
-                                        homogeneous,
-                                        pair.area[k],
-                                        state,
-                                        R,
-                                        K);
-              add(dofs.size());
+              if (n_unknowns > 0 || r.status != ContactStatus::open)
+                add_element(pair, k, state);
               continue;
             }
             state.result = ContactPointResult();
@@ -316,14 +349,6 @@ namespace tribos
           }
           continue;
         }
-
-        slave.position          = x;
-        slave.committed         = &committed;
-        slave.law               = enforcement.law(pair, k, state, homogeneous);
-        slave.law.frozen_closed = monitor.frozen(p, k);
-        slave.area              = pair.area[k];
-        slave.unknowns          = n_unknowns > 0 ? &state.lambda : nullptr;
-        slave.consistent        = consistent;
 
         const int face = state.face;
         if (pair.smoothed)
@@ -382,15 +407,7 @@ namespace tribos
         // The element: the slave, its master nodes (with smoothing also the
         // segment's neighbours) and the node's unknowns.
         pair.element_dofs(k, face, dofs);
-        if (n_unknowns > 0)
-          enforcement.finish_rows(dofs,
-                                  dofs.size() - n_unknowns,
-                                  homogeneous,
-                                  pair.area[k],
-                                  state,
-                                  R,
-                                  K);
-        add(dofs.size());
+        add_element(pair, k, state);
       }
     }
     if (Utilities::MPI::max(too_large.empty() ? 0 : 1, mpi_communicator) > 0)
