@@ -72,8 +72,10 @@ namespace tribos
 
     /**
      * Mortar (2D): the master faces that face one of slave @p k's
-     * segments, overlap it in the orthogonal projection onto its line and
-     * lie within Search distance along its normal, found from the faces
+     * segments (normals more than 75 degrees apart), overlap it in the
+     * orthogonal projection onto its line and lie within reach along its
+     * normal (a gap below Search distance and the segment's length, not
+     * wholly deeper than that length behind it), found from the faces
      * closest to the segment's ends and middle through their neighbours.
      * Paired if there is one.
      */
