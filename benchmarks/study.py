@@ -51,8 +51,8 @@ COLUMNS = ["scene", "variant", "method", "penalty_factor", "tangent", "level",
            "wall_time", "t_compute", "t_assembly", "t_search",
            "t_contact_assembly",
            "t_linear_solve", "peak_memory_mb", "error", "error_a",
-           "error_p0", "error_profile", "error_force", "max_penetration",
-           "status"]
+           "error_p0", "error_profile", "error_force", "error_reference",
+           "max_penetration", "status"]
 
 METHODS = {"10E/h": ("penalty", "10"), "100E/h": ("penalty", "100"),
            "1000E/h": ("penalty", "1000"), "1e4E/h": ("penalty", "10000"),
@@ -322,7 +322,7 @@ def main():
 def mortar_study(go, work):
     """Node to segment against mortar (2D, deformable master): Hertz on an
     elastic block over three contact refinements (penalty 1000 E/h and
-    multipliers), the frictional ironing of tests/ironing_2d.prm (Newton
+    multipliers; against Hertz and against a reference two levels finer), the frictional ironing of tests/ironing_2d.prm (Newton
     iterations) and the contact patch test (pressure spread in error)."""
     E, nu = 1.0, 0.3
     hertz2 = "parameters/hertz_2d.prm"
@@ -330,7 +330,38 @@ def mortar_study(go, work):
               "Contact/Pairs=10 : 3",
               "Boundary conditions/Dirichlet=11 : xy : 0, -0.01*t ; "
               "2 : xy : 0, 0"]
-    on_block = hertz_errors(2, E / (2 * (1 - nu * nu)), 1)
+    hertz_block = hertz_errors(2, E / (2 * (1 - nu * nu)), 1)
+    # Reference: mortar with multipliers two levels finer than the finest
+    # compared (182k dofs, about a minute); error_reference is the relative
+    # L2 difference of the nodal pressures from it (linear interpolation of
+    # the reference's nodal pressures along x), the discretization error
+    # without Hertz's half-space idealization.
+    reference = os.path.join(work, "mortar_hertz_reference_7")
+    go("mortar_hertz_block", "reference mortar lagrange L7", hertz2,
+       reference, method_sets("lagrange") + block2 + [
+           "Contact/Discretization=mortar",
+           "Scene/Cylinder over block/Contact refinements=7"], hertz_block,
+       level=7, method="lagrange multiplier")
+    with open(os.path.join(reference, "contact-00002.csv")) as f:
+        ref = sorted((float(r["x"]), float(r["CPRESS"]))
+                     for r in csv.DictReader(f))
+
+    def p_ref(x):
+        for (x0, p0), (x1, p1) in zip(ref, ref[1:]):
+            if x0 <= x <= x1:
+                return p0 + (p1 - p0) * (x - x0) / (x1 - x0)
+        return 0.0
+
+    def on_block(folder, h):
+        errors = hertz_block(folder, h)
+        with open(os.path.join(folder, "contact-00002.csv")) as f:
+            nodes = [(float(r["x"]), float(r["CPRESS"]))
+                     for r in csv.DictReader(f)]
+        num = sum((p - p_ref(x)) ** 2 for x, p in nodes)
+        den = sum(p_ref(x) ** 2 for x, p in nodes)
+        errors["error_reference"] = math.sqrt(num / den)
+        return errors
+
     discretizations = ("node to segment", "mortar")
     for lv in (3, 4, 5):
         for d in discretizations:
