@@ -17,13 +17,15 @@ this command. Columns:
   contact_dofs, multipliers, load_steps, increments, newton_iterations,
   iterations_per_step, cutbacks, wall_time, t_compute, t_assembly, t_search,
   t_contact_assembly, t_linear_solve, peak_memory_mb, error, error_a,
-  error_p0, error_profile, error_force, max_penetration, status
+  error_p0, error_profile, error_force, error_reference, max_penetration,
+  status
 
 `error` is the scene's headline error: Hertz max(|a error|, |p0 error|)
 against the analytic values for the run's load; cylinder |force error| at
 the last step against the analytic homogeneous compression; ring |final
 foundation reaction - reference| / reference with the finest Lagrange run
-of the study as reference; modelling choices: the quantity each pair
+of the study as reference (error_reference, --mortar only: the Hertz
+pressures against a run two levels finer); modelling choices: the quantity each pair
 compares (see doc/benchmarks.md). Wall time is that of the process (start
 to exit, ~0.7 s of it loading libraries and MPI), t_compute the sum of the
 timer sections (setup, assembly, search, solve, output), peak memory the

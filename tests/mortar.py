@@ -11,7 +11,9 @@ mortar).
    penetration, 1e-6 of coordinates of order 1, carries 1e-10 of
    round-off), and the total contact force p
    times the width to 1e-8 (Newton's tolerance). Node-to-segment one-pass
-   on the same meshes is run too and must fail it by more than 1 %.
+   on the same meshes is run too and must fail it by more than 1 %. An
+   upper block overhanging the lower one (a half-covered end segment) must
+   converge in one increment, at most 12 Newton iterations, every method.
 2. Frictional sliding (tests/ironing_2d.prm: neo-Hookean half cylinder slid
    across a deformable block, mu = 0.3): penalty and multipliers converge,
    the observed Newton order near convergence is >= 1.8 in the median
@@ -78,6 +80,28 @@ for (lower, upper), axisymmetric in geometries:
                       % (name, spread, total))
 print("patch test, %d mortar runs: worst pressure spread %.2e, worst total "
       "force error %.2e" % (n_runs, worst_spread, worst_total))
+
+# The upper block overhangs the lower one by 0.2: the slave's end segment
+# is half covered (upper as slave), or the master's (lower as slave). The
+# dual basis used to switch to the standard one at full coverage exactly,
+# and the segment at the symmetry plane, tilting by round-off, flipped
+# between the two: with multipliers Newton cycled and never converged.
+for pair in ("12 : 3", "3 : 12"):
+    for method in methods:
+        folder = out + "/overhang_%s_%s" % (pair[0], method.replace(" ", "_"))
+        run(tribos, tests + "/patch_test.prm", folder, [
+            "Scene/Two blocks/Upper block size=1.2, 0.5",
+            "Contact/Pairs=" + pair, "Contact/Method=" + method,
+            "Contact/Discretization=mortar"])
+        rows = read_csv(folder + "/history.csv")
+        history = rows[-1]
+        total = abs(abs(history["pair0_Fy"]) - p * 1.2) / (p * 1.2)
+        check(len(rows) == 1 and history["cutbacks"] == 0 and
+              history["newton_iterations"] <= 12 and total < 1e-8,
+              "overhanging slave/master, pair %s, %s: one increment, %d "
+              "Newton iterations (augmented: all Uzawa passes), resultant "
+              "p x 1.2 to %.1e" % (pair, method,
+                                   history["newton_iterations"], total))
 
 for lower, upper in ratios[:2]:
     for pair in ("12 : 3", "3 : 12"):

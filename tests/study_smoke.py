@@ -29,7 +29,7 @@ expected = ["scene", "variant", "method", "penalty_factor", "tangent",
             "cutbacks", "wall_time", "t_compute", "t_assembly", "t_search",
             "t_contact_assembly", "t_linear_solve", "peak_memory_mb",
             "error", "error_a", "error_p0", "error_profile", "error_force",
-            "max_penetration", "status"]
+            "error_reference", "max_penetration", "status"]
 check(header == expected, "columns as documented")
 check(len(rows) == 2, "one row per run (%d)" % len(rows))
 numeric = ["dofs", "contact_dofs", "load_steps", "newton_iterations",

@@ -58,7 +58,7 @@ namespace tribos
       // The master segments facing this one, projected onto its line.
       Overlap      overlaps[max_mortar_master_nodes];
       unsigned int n_overlaps = 0;
-      double       covered    = 0;
+      AD           covered    = zero;
       for (unsigned int m = 0; m < input.n_master_segments; ++m)
       {
         const unsigned int c   = input.master_segment[m][0],
@@ -79,10 +79,18 @@ namespace tribos
         o.hi           = high.val() < 1 ? high : AD(1.);
         if (o.hi.val() <= o.lo.val())
           continue;
-        covered += o.hi.val() - o.lo.val();
+        covered += o.hi - o.lo;
         overlaps[n_overlaps++] = o;
       }
-      const bool dual_here = input.dual && covered >= 1. - 1e-9;
+      // Dual where the master covers the segment, standard where it covers
+      // half of it or less, blended in between (theta): the switch at the
+      // master's end is continuous, so a segment whose end lines up with
+      // the master's (a symmetry plane) is not flipped between the two
+      // bases by round-off, and the weights stay positive.
+      const AD   theta     = !input.dual || covered.val() <= 0.5 ? zero :
+                             covered.val() >= 1.                 ? AD(1.) :
+                                                   2. * covered - 1.;
+      const bool dual_here = theta.val() > 0;
       // The dual functions of the segment, Phi = A N with A = D_e M_e^-1
       // (M_e the segment's mass matrix, D_e its row sums) in the measure
       // of the integrals: 2 N_j - N_o on a plane; with the weight 2 pi r of
@@ -106,8 +114,8 @@ namespace tribos
         // Row j of D_e M_e^-1 (index 0: node j, 1: the other node).
         const AD det = mass[0][0] * mass[1][1] - mass[0][1] * mass[1][0];
         const AD d_j = mass[0][0] + mass[0][1];
-        c_j          = d_j * mass[1][1] / det;
-        c_o          = -d_j * mass[0][1] / det;
+        c_j          = theta * d_j * mass[1][1] / det + (1. - theta);
+        c_o          = -theta * d_j * mass[0][1] / det;
       }
       AD segment_weight = zero;
 

@@ -158,9 +158,9 @@ namespace tribos
         "Mortar: the functions that weight the gap and the traction of a "
         "slave node. dual: biorthogonal to the slave's shape functions, so "
         "each node's traction acts on that node alone (a diagonal slave "
-        "matrix D); a slave segment only partly overlapped by the master "
-        "(at the master's end) uses the standard functions instead, whose "
-        "weights stay positive. standard: the slave's shape functions "
+        "matrix D); on a slave segment only partly overlapped by the master "
+        "(at the master's end) they blend continuously into the standard "
+        "functions, whose weights stay positive. standard: the slave's shape functions "
         "everywhere.");
       prm.declare_entry(
         "Penalty factor",

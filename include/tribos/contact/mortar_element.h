@@ -74,9 +74,11 @@ namespace tribos
    * slave's shape functions, so D is diagonal where the segment is fully
    * overlapped and the traction of node j acts on node j. On a segment
    * the master covers only in part (the master's end) the dual functions
-   * can have a negative weight over the covered part; such segments use
-   * the standard functions (still a partition of unity, so a uniform
-   * traction is still transmitted exactly).
+   * can have a negative weight over the covered part; there they are
+   * blended continuously towards the standard functions (theta = 2 c - 1
+   * for a covered fraction c in [1/2, 1]), which keeps the weights
+   * positive and the residual continuous (still a partition of unity, so
+   * a uniform traction is still transmitted exactly).
    *
    * For a flat interface and a uniform traction p, the forces are p int
    * N_k on the slave and p int N_l on the master nodes: the contact patch
