@@ -299,6 +299,12 @@ namespace tribos
       const auto        &faces       = pair.master->faces();
       const Vec3<double> ez{{0., 0., 1.}};
       double             closest = std::numeric_limits<double>::max();
+      // A node closed at the last converged step keeps faces however deep
+      // an iterate pushes it (it must meet the contact force, not lose the
+      // master); an open one only sees faces less than a segment length
+      // behind it (steep slave segments would otherwise pair with faces
+      // beside them).
+      const bool was_closed = pair.committed[k].closed();
       for (const unsigned int f : pair.slave->nodes()[k].faces)
       {
         const Vec3<double> &x_a = pair.slave_positions[slave_faces[f].nodes[0]];
@@ -345,7 +351,7 @@ namespace tribos
           }
           const double length = std::sqrt(length_squared);
           return gap_min <= std::min(parameters.search_distance, length) &&
-                 gap_max >= -length;
+                 (gap_max >= -length || was_closed);
         };
 
         // From the faces closest to the segment's ends and middle through
