@@ -13,91 +13,6 @@
 
 namespace tribos
 {
-  namespace
-  {
-    /**
-     * The input of slave node @p k's mortar element (2D): its slave stencil
-     * and segments, the master nodes and segments the search found, now
-     * and at the last converged step; @p dofs gets the element's dofs
-     * (slave stencil, master nodes, the node's unknowns). Returns false,
-     * with the reason in @p too_large (the first one), if the element
-     * couples more master nodes than the AD number holds.
-     */
-    bool
-    mortar_input(const ContactPair<2>                 &pair,
-                 const unsigned int                    k,
-                 MortarInput                          &mortar,
-                 std::vector<types::global_dof_index> &dofs,
-                 std::string                          &too_large)
-    {
-      std::vector<unsigned int> stencil, master_nodes;
-      const auto                local =
-        [](std::vector<unsigned int> &list, const unsigned int node)
-      {
-        const auto at = std::find(list.begin(), list.end(), node);
-        if (at != list.end())
-          return static_cast<unsigned int>(at - list.begin());
-        list.push_back(node);
-        return static_cast<unsigned int>(list.size() - 1);
-      };
-      pair.slave_stencil(k, stencil);
-      for (const unsigned int f : pair.slave->nodes()[k].faces)
-      {
-        auto &segment = mortar.slave_segment[mortar.n_slave_segments++];
-        for (unsigned int v = 0; v < 2; ++v)
-          segment[v] = local(stencil, pair.slave->faces()[f].nodes[v]);
-      }
-      for (const unsigned int f : pair.mortar_faces[k])
-      {
-        std::array<unsigned int, 2> segment;
-        for (unsigned int v = 0; v < 2; ++v)
-          segment[v] = local(master_nodes, pair.master->faces()[f].nodes[v]);
-        if (master_nodes.size() > max_mortar_master_nodes)
-        {
-          const Vec3<double> &x = pair.slave_positions[k];
-          if (too_large.empty())
-            too_large =
-              "contact pair <" + pair.description.text +
-              ">: the mortar element of the slave node at (" +
-              to_scientific(x[0]) + ", " + to_scientific(x[1]) +
-              ") overlaps more than " +
-              std::to_string(max_mortar_master_nodes) +
-              " master nodes (an iterate gone astray, or a master much "
-              "finer than the slave: make the finer side the slave)";
-          return false;
-        }
-        mortar.master_segment[mortar.n_master_segments++] = segment;
-      }
-
-      mortar.n_slave_nodes = stencil.size();
-      dofs.clear();
-      for (unsigned int i = 0; i < stencil.size(); ++i)
-      {
-        mortar.xs[i]     = pair.slave_positions[stencil[i]];
-        mortar.xs_old[i] = pair.old_slave_positions[stencil[i]];
-        for (const auto dof : pair.slave->nodes()[stencil[i]].dofs)
-          dofs.push_back(dof);
-      }
-      mortar.n_master_nodes = master_nodes.size();
-      for (unsigned int l = 0; l < master_nodes.size(); ++l)
-      {
-        mortar.xm[l]     = pair.master_positions[master_nodes[l]];
-        mortar.xm_old[l] = pair.old_master_positions[master_nodes[l]];
-        for (const auto dof : pair.master->nodes()[master_nodes[l]].dofs)
-          dofs.push_back(dof);
-      }
-      const unsigned int n = pair.enforcement->n_node_unknowns();
-      for (unsigned int d = 0; d < n; ++d)
-        dofs.push_back(pair.first_unknown + n * k + d);
-      mortar.dual         = pair.dual_basis;
-      mortar.axisymmetric = pair.axisymmetric;
-      mortar.min_weight   = 1e-3 * pair.area[k];
-      return true;
-    }
-  } // namespace
-
-
-
   template <int dim>
   ContactHandler<dim>::ContactHandler(
     const Parameters::Contact                       &parameters,
@@ -247,7 +162,8 @@ namespace tribos
 
     // A mortar element too large for the AD type: the iterate is void
     // (the increment is cut back on every process).
-    std::string too_large;
+    std::string               too_large;
+    std::vector<unsigned int> stencil, master_nodes;
     // The rows of an evaluated element (R, K) with the dofs in dofs: the
     // enforcement's last look at the unknowns' rows, then the system.
     const auto add_element =
@@ -304,7 +220,13 @@ namespace tribos
           if (pair.mortar && state.paired)
           {
             MortarInput mortar;
-            if (!mortar_input(pair, k, mortar, dofs, too_large))
+            if (!mortar_input(pair,
+                              k,
+                              mortar,
+                              stencil,
+                              master_nodes,
+                              dofs,
+                              too_large))
               continue;
             bool         paired = false;
             Vec3<double> point;
@@ -330,7 +252,8 @@ namespace tribos
 
         if (!state.paired || pair.mortar)
         {
-          // Off the master (beyond its end or the search distance), or
+          // Off the master (beyond its end or the search distance; mortar:
+          // a weight too small, the paired mortar nodes went on above), or
           // excluded: the distance to the master surface, a positive, open
           // gap; the rows of the node's unknowns (Lambda = 0), scaled by
           // its own tributary area (an excluded node has handed its area

@@ -1,5 +1,8 @@
+#include <tribos/base/exceptions.h>
+#include <tribos/contact/contact_pair.h>
 #include <tribos/contact/mortar_element.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tribos
@@ -196,5 +199,80 @@ namespace tribos
       weighted_point[d] =
         input.xs[0][d] + master_point[d].val() - slave_point[d].val();
     return result;
+  }
+
+
+
+  bool
+  mortar_input(const ContactPair<2>                 &pair,
+               const unsigned int                    k,
+               MortarInput                          &mortar,
+               std::vector<unsigned int>            &stencil,
+               std::vector<unsigned int>            &master_nodes,
+               std::vector<types::global_dof_index> &dofs,
+               std::string                          &too_large)
+  {
+    master_nodes.clear();
+    const auto local =
+      [](std::vector<unsigned int> &list, const unsigned int node)
+    {
+      const auto at = std::find(list.begin(), list.end(), node);
+      if (at != list.end())
+        return static_cast<unsigned int>(at - list.begin());
+      list.push_back(node);
+      return static_cast<unsigned int>(list.size() - 1);
+    };
+    pair.slave_stencil(k, stencil);
+    for (const unsigned int f : pair.slave->nodes()[k].faces)
+    {
+      auto &segment = mortar.slave_segment[mortar.n_slave_segments++];
+      for (unsigned int v = 0; v < 2; ++v)
+        segment[v] = local(stencil, pair.slave->faces()[f].nodes[v]);
+    }
+    for (const unsigned int f : pair.mortar_faces[k])
+    {
+      std::array<unsigned int, 2> segment;
+      for (unsigned int v = 0; v < 2; ++v)
+        segment[v] = local(master_nodes, pair.master->faces()[f].nodes[v]);
+      if (master_nodes.size() > max_mortar_master_nodes)
+      {
+        const Vec3<double> &x = pair.slave_positions[k];
+        if (too_large.empty())
+          too_large = "contact pair <" + pair.description.text +
+                      ">: the mortar element of the slave node at (" +
+                      to_scientific(x[0]) + ", " + to_scientific(x[1]) +
+                      ") overlaps more than " +
+                      std::to_string(max_mortar_master_nodes) +
+                      " master nodes (an iterate gone astray, or a master much "
+                      "finer than the slave: make the finer side the slave)";
+        return false;
+      }
+      mortar.master_segment[mortar.n_master_segments++] = segment;
+    }
+
+    mortar.n_slave_nodes = stencil.size();
+    dofs.clear();
+    for (unsigned int i = 0; i < stencil.size(); ++i)
+    {
+      mortar.xs[i]     = pair.slave_positions[stencil[i]];
+      mortar.xs_old[i] = pair.old_slave_positions[stencil[i]];
+      for (const auto dof : pair.slave->nodes()[stencil[i]].dofs)
+        dofs.push_back(dof);
+    }
+    mortar.n_master_nodes = master_nodes.size();
+    for (unsigned int l = 0; l < master_nodes.size(); ++l)
+    {
+      mortar.xm[l]     = pair.master_positions[master_nodes[l]];
+      mortar.xm_old[l] = pair.old_master_positions[master_nodes[l]];
+      for (const auto dof : pair.master->nodes()[master_nodes[l]].dofs)
+        dofs.push_back(dof);
+    }
+    const unsigned int n = pair.enforcement->n_node_unknowns();
+    for (unsigned int d = 0; d < n; ++d)
+      dofs.push_back(pair.first_unknown + n * k + d);
+    mortar.dual         = pair.dual_basis;
+    mortar.axisymmetric = pair.axisymmetric;
+    mortar.min_weight   = 1e-3 * pair.area[k];
+    return true;
   }
 } // namespace tribos

@@ -3,10 +3,17 @@
 
 #include <tribos/contact/contact_element.h>
 
+#include <deal.II/base/types.h>
+
 #include <array>
+#include <string>
+#include <vector>
 
 namespace tribos
 {
+  template <int dim>
+  struct ContactPair;
+
   /**
    * What the 2D mortar element of one slave node j needs: the slave nodes
    * of its segments (j first, then its neighbours), now and at the last
@@ -104,6 +111,25 @@ namespace tribos
              bool                 &paired,
              Vec3<double>         &weighted_point);
   };
+
+  /**
+   * The input of slave node @p k's mortar element in @p pair: its slave
+   * stencil and segments, the master nodes and segments the search found
+   * (ContactPair::mortar_faces), now and at the last converged step;
+   * @p dofs gets the element's dofs (slave stencil, master nodes, the
+   * node's unknowns). @p stencil and @p master_nodes are buffers reused
+   * between nodes. Returns false, with the reason in @p too_large (the
+   * first one met), if the element couples more master nodes than the AD
+   * number holds.
+   */
+  bool
+  mortar_input(const ContactPair<2>                         &pair,
+               const unsigned int                            k,
+               MortarInput                                  &mortar,
+               std::vector<unsigned int>                    &stencil,
+               std::vector<unsigned int>                    &master_nodes,
+               std::vector<dealii::types::global_dof_index> &dofs,
+               std::string                                  &too_large);
 } // namespace tribos
 
 #endif

@@ -74,10 +74,11 @@ namespace tribos
      * Mortar (2D): the master faces that face one of slave @p k's
      * segments (normals more than 75 degrees apart), overlap it in the
      * orthogonal projection onto its line and lie within reach along its
-     * normal (a gap below Search distance and the segment's length, not
-     * wholly deeper than that length behind it), found from the faces
-     * closest to the segment's ends and middle through their neighbours.
-     * Paired if there is one.
+     * normal (a gap below Search distance and the segment's length; for
+     * a node open at the last converged step also not wholly deeper than
+     * that length behind it, a closed one keeps faces at any depth), found
+     * from the faces closest to the segment's ends and middle through their
+     * neighbours. Paired if there is one.
      */
     void
     pair_mortar(ContactPair<dim> &pair, const unsigned int k) const;
