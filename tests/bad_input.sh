@@ -112,8 +112,9 @@ expect dynamics_beta "Newmark beta" "$tribos" "$good" \
 expect meridian_3d "Indenter shape" "$tribos" "$tests/cylinder_3d.prm" \
   --set "Scene/Name=cylinder over block" \
   --set "Scene/Cylinder over block/Indenter shape=meridian"
-expect mortar_3d "mortar is implemented in 2D" "$tribos" \
-  "$tests/sliding_blocks_3d.prm" --set "Contact/Discretization=mortar"
+expect mortar_3d_two_pass "mortar is one-pass" "$tribos" \
+  "$tests/sliding_blocks_3d.prm" --set "Contact/Discretization=mortar" \
+  --set "Contact/Passes=two-pass"
 expect mortar_two_pass "mortar is one-pass" "$tribos" "$tests/patch_test.prm" \
   --set "Contact/Discretization=mortar" --set "Contact/Passes=two-pass"
 expect mortar_smoothing "Master smoothing = none" "$tribos" \

@@ -2,6 +2,7 @@
 #include <tribos/contact/contact_element.h>
 #include <tribos/contact/contact_handler.h>
 #include <tribos/contact/mortar_element.h>
+#include <tribos/contact/mortar_element_3d.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
@@ -111,9 +112,11 @@ namespace tribos
                                 TrilinosWrappers::MPI::Vector   &contact_forces)
   {
     constexpr unsigned int n_max =
-      std::max({NodeToSegment<dim>::n_dofs,
-                NodeToSmoothedSegment::max_dofs,
-                2 * (3 + max_mortar_master_nodes)}) +
+      std::max(
+        {NodeToSegment<dim>::n_dofs,
+         NodeToSmoothedSegment::max_dofs,
+         2 * (3 + max_mortar_master_nodes),
+         3 * (MortarInput3D::max_slave_nodes + max_mortar_master_nodes_3d)}) +
       dim;
     double     R[n_max], K[n_max * n_max];
     const bool consistent =
@@ -216,39 +219,62 @@ namespace tribos
           slave.unknowns          = n_unknowns > 0 ? &state.lambda : nullptr;
           slave.consistent        = consistent;
         }
-        if constexpr (dim == 2)
-          if (pair.mortar && state.paired)
+        if (pair.mortar && state.paired)
+        {
+          bool         paired = false, built = false;
+          Vec3<double> point;
+          if constexpr (dim == 2)
           {
             MortarInput mortar;
-            if (!mortar_input(pair,
-                              k,
-                              mortar,
-                              stencil,
-                              master_nodes,
-                              dofs,
-                              too_large))
-              continue;
-            bool         paired = false;
-            Vec3<double> point;
-            state.result = Mortar2D::evaluate(slave,
-                                              mortar,
-                                              enforcement,
-                                              R,
-                                              K,
-                                              paired,
-                                              point);
-            if (paired)
-            {
-              const auto &r  = state.result;
-              state.point    = point;
-              state.slip     = committed.slip + r.slip_increment;
-              pair.ever_near = true;
-              if (n_unknowns > 0 || r.status != ContactStatus::open)
-                add_element(pair, k, state);
-              continue;
-            }
-            state.result = ContactPointResult();
+            built = mortar_input(pair,
+                                 k,
+                                 mortar,
+                                 stencil,
+                                 master_nodes,
+                                 dofs,
+                                 too_large);
+            if (built)
+              state.result = Mortar2D::evaluate(slave,
+                                                mortar,
+                                                enforcement,
+                                                R,
+                                                K,
+                                                paired,
+                                                point);
           }
+          else
+          {
+            MortarInput3D mortar;
+            built = mortar_input(pair,
+                                 k,
+                                 mortar,
+                                 stencil,
+                                 master_nodes,
+                                 dofs,
+                                 too_large);
+            if (built)
+              state.result = Mortar3D::evaluate(slave,
+                                                mortar,
+                                                enforcement,
+                                                R,
+                                                K,
+                                                paired,
+                                                point);
+          }
+          if (!built)
+            continue;
+          if (paired)
+          {
+            const auto &r  = state.result;
+            state.point    = point;
+            state.slip     = committed.slip + r.slip_increment;
+            pair.ever_near = true;
+            if (n_unknowns > 0 || r.status != ContactStatus::open)
+              add_element(pair, k, state);
+            continue;
+          }
+          state.result = ContactPointResult();
+        }
 
         if (!state.paired || pair.mortar)
         {

@@ -1,12 +1,130 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/contact/contact_pair.h>
 #include <tribos/contact/mortar_element.h>
+#include <tribos/contact/mortar_element_3d.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace tribos
 {
+  namespace internal
+  {
+    template <int dim>
+    ContactPointResult
+    finish_mortar(const SlaveInput       &slave,
+                  const Enforcement<dim> &enforcement,
+                  const ContactAD        *D,
+                  const Vec3<ContactAD>  *xs,
+                  const Vec3<double>     *xs_old,
+                  const unsigned int      n_s,
+                  const ContactAD        *M,
+                  const Vec3<ContactAD>  *xm,
+                  const Vec3<double>     *xm_old,
+                  const unsigned int      n_m,
+                  Vec3<ContactAD>         normal_j,
+                  const double            min_weight,
+                  const unsigned int      n_displacements,
+                  double                 *R,
+                  double                 *K,
+                  bool                   &paired,
+                  Vec3<double>           &weighted_point)
+    {
+      using AD = ContactAD;
+      ContactPointResult result;
+      const AD           zero(0.);
+      if (norm(normal_j).val() > 0)
+        normal_j = scale(1. / norm(normal_j), normal_j);
+
+      AD w = zero;
+      for (unsigned int i = 0; i < n_s; ++i)
+        w += D[i];
+      paired = w.val() >= min_weight && w.val() > 0;
+      if (!paired)
+        return result;
+
+      Vec3<AD> slave_point  = {{zero, zero, zero}};
+      Vec3<AD> master_point = {{zero, zero, zero}};
+      Vec3<AD> moved        = to<AD>(xs_old[0]);
+      for (unsigned int i = 0; i < n_s; ++i)
+      {
+        slave_point = slave_point + scale(D[i] / w, xs[i]);
+        moved       = moved - scale(D[i] / w, to<AD>(xs_old[i]));
+      }
+      for (unsigned int l = 0; l < n_m; ++l)
+      {
+        master_point = master_point + scale(M[l] / w, xm[l]);
+        moved        = moved + scale(M[l] / w, to<AD>(xm_old[l]));
+      }
+
+      PointKinematics kinematics;
+      kinematics.normal          = scale(-1., normal_j);
+      kinematics.gap             = dot(master_point - slave_point, normal_j);
+      const NodeState &committed = *slave.committed;
+      kinematics.slip = slip_increment(moved, committed, kinematics.normal);
+      kinematics.committed = committed_traction(committed, kinematics.normal);
+
+      AD weights[MortarInput3D::max_slave_nodes + max_mortar_master_nodes_3d];
+      for (unsigned int i = 0; i < n_s; ++i)
+        weights[i] = D[i];
+      for (unsigned int l = 0; l < n_m; ++l)
+        weights[n_s + l] = -M[l];
+      finish_weighted<dim>(kinematics,
+                           weights,
+                           n_s + n_m,
+                           n_displacements,
+                           w,
+                           slave,
+                           enforcement,
+                           R,
+                           K,
+                           result);
+      for (unsigned int d = 0; d < 3; ++d)
+        weighted_point[d] =
+          value_of(xs[0][d]) + master_point[d].val() - slave_point[d].val();
+      return result;
+    }
+
+    template ContactPointResult
+    finish_mortar<2>(const SlaveInput &,
+                     const Enforcement<2> &,
+                     const ContactAD *,
+                     const Vec3<ContactAD> *,
+                     const Vec3<double> *,
+                     const unsigned int,
+                     const ContactAD *,
+                     const Vec3<ContactAD> *,
+                     const Vec3<double> *,
+                     const unsigned int,
+                     Vec3<ContactAD>,
+                     const double,
+                     const unsigned int,
+                     double *,
+                     double *,
+                     bool &,
+                     Vec3<double> &);
+    template ContactPointResult
+    finish_mortar<3>(const SlaveInput &,
+                     const Enforcement<3> &,
+                     const ContactAD *,
+                     const Vec3<ContactAD> *,
+                     const Vec3<double> *,
+                     const unsigned int,
+                     const ContactAD *,
+                     const Vec3<ContactAD> *,
+                     const Vec3<double> *,
+                     const unsigned int,
+                     Vec3<ContactAD>,
+                     const double,
+                     const unsigned int,
+                     double *,
+                     double *,
+                     bool &,
+                     Vec3<double> &);
+  } // namespace internal
+
+
+
   ContactPointResult
   Mortar2D::evaluate(const SlaveInput     &slave,
                      const MortarInput    &input,
@@ -16,8 +134,7 @@ namespace tribos
                      bool                 &paired,
                      Vec3<double>         &weighted_point)
   {
-    using AD = ContactAD;
-    ContactPointResult result;
+    using AD                           = ContactAD;
     const unsigned int n_s             = input.n_slave_nodes;
     const unsigned int n_m             = input.n_master_nodes;
     const unsigned int n_displacements = 2 * (n_s + n_m);
@@ -147,58 +264,23 @@ namespace tribos
       }
       normal_j = normal_j + scale(segment_weight / length, cross(ez_ad, e));
     }
-    if (norm(normal_j).val() > 0)
-      normal_j = scale(1. / norm(normal_j), normal_j);
-
-    AD w = zero;
-    for (unsigned int i = 0; i < n_s; ++i)
-      w += D[i];
-    paired = w.val() >= input.min_weight && w.val() > 0;
-    if (!paired)
-      return result;
-
-    Vec3<AD> slave_point  = {{zero, zero, zero}};
-    Vec3<AD> master_point = {{zero, zero, zero}};
-    Vec3<AD> moved        = to<AD>(input.xs_old[0]);
-    for (unsigned int i = 0; i < n_s; ++i)
-    {
-      slave_point = slave_point + scale(D[i] / w, xs[i]);
-      moved       = moved - scale(D[i] / w, to<AD>(input.xs_old[i]));
-    }
-    for (unsigned int l = 0; l < n_m; ++l)
-    {
-      master_point = master_point + scale(M[l] / w, xm[l]);
-      moved        = moved + scale(M[l] / w, to<AD>(input.xm_old[l]));
-    }
-
-    PointKinematics kinematics;
-    kinematics.normal          = scale(-1., normal_j);
-    kinematics.gap             = dot(master_point - slave_point, normal_j);
-    const NodeState &committed = *slave.committed;
-    kinematics.slip =
-      internal::slip_increment(moved, committed, kinematics.normal);
-    kinematics.committed =
-      internal::committed_traction(committed, kinematics.normal);
-
-    AD weights[3 + max_mortar_master_nodes];
-    for (unsigned int i = 0; i < n_s; ++i)
-      weights[i] = D[i];
-    for (unsigned int l = 0; l < n_m; ++l)
-      weights[n_s + l] = -M[l];
-    internal::finish_weighted<2>(kinematics,
-                                 weights,
-                                 n_s + n_m,
-                                 n_displacements,
-                                 w,
-                                 slave,
-                                 enforcement,
-                                 R,
-                                 K,
-                                 result);
-    for (unsigned int d = 0; d < 3; ++d)
-      weighted_point[d] =
-        input.xs[0][d] + master_point[d].val() - slave_point[d].val();
-    return result;
+    return internal::finish_mortar<2>(slave,
+                                      enforcement,
+                                      D,
+                                      xs,
+                                      input.xs_old,
+                                      n_s,
+                                      M,
+                                      xm,
+                                      input.xm_old,
+                                      n_m,
+                                      normal_j,
+                                      input.min_weight,
+                                      n_displacements,
+                                      R,
+                                      K,
+                                      paired,
+                                      weighted_point);
   }
 
 

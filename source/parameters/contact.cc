@@ -145,8 +145,9 @@ namespace tribos
         dealii::Patterns::Selection("node to segment|mortar"),
         "Default discretization of every pair with a deformable master. "
         "node to segment: each slave node is projected onto the master "
-        "(the paper's); mortar (2D): the gap, slip and force of each slave "
-        "node are integrals over the overlap of its slave segments with "
+        "(the paper's); mortar: the gap, slip and force of each slave "
+        "node are integrals over the overlap of its slave segments (faces "
+        "in 3D) with "
         "the master segments, weighted by the node's multiplier function "
         "(segment-to-segment; passes the contact patch test). Pairs with a "
         "rigid master are always node to rigid surface. Mortar is one-pass "
@@ -537,11 +538,6 @@ namespace tribos
       for (const auto &pair : pairs)
         if (pair.discretization == Discretization::mortar)
         {
-          AssertThrow(dim == 2,
-                      dealii::ExcMessage(
-                        "Contact pair <" + pair.text +
-                        ">: Discretization = mortar is implemented in 2D "
-                        "only; 3D pairs use node to segment."));
           AssertThrow(!two_pass,
                       dealii::ExcMessage(
                         "Contact pair <" + pair.text +

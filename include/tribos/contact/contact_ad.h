@@ -8,17 +8,24 @@
 namespace tribos
 {
   /**
-   * The forward AD number of the contact elements: at most 32 derivatives
-   * (3D node to segment: the slave and a bilinear face, 5 nodes x 3, plus
-   * the slave's 3 multipliers = 18; 2D mortar: 3 slave and up to 12 master
-   * nodes x 2, plus 2 multipliers). Operations run over the derivatives in
-   * use only. The element residual is written once in this type and its
-   * derivative is the consistent tangent.
+   * The forward AD number of the contact elements: at most 150
+   * derivatives (3D node to segment: the slave and a bilinear face, 5
+   * nodes x 3, plus the slave's 3 multipliers = 18; 2D mortar: 3 slave and
+   * up to 12 master nodes x 2, plus 2 multipliers = 32; 3D mortar: up to
+   * 13 slave and 36 master nodes x 3, plus 3 multipliers = 150). Operations
+   * and copies run over the derivatives in use only, so the capacity costs
+   * the small elements nothing but stack. The element residual is written
+   * once in this type and its derivative is the consistent tangent.
    */
-  using ContactAD = Sacado::Fad::SLFad<double, 32>;
+  using ContactAD = Sacado::Fad::SLFad<double, 150>;
 
   /** The most master nodes a 2D mortar element couples to one slave node. */
   constexpr unsigned int max_mortar_master_nodes = 12;
+
+  /** The most master nodes (and faces) a 3D mortar element couples to one
+   * slave node: a 6 x 6 patch of master nodes over the 2 x 2 slave faces
+   * around it, a master up to about 1.7 times finer than the slave. */
+  constexpr unsigned int max_mortar_master_nodes_3d = 36;
 
   /** The value of a number (AD or double). */
   inline double

@@ -1,0 +1,137 @@
+#ifndef tribos_contact_mortar_element_3d_h
+#define tribos_contact_mortar_element_3d_h
+
+#include <tribos/contact/contact_element.h>
+
+#include <deal.II/base/types.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tribos
+{
+  template <int dim>
+  struct ContactPair;
+
+  /**
+   * What the 3D mortar element of one slave node j needs: the slave nodes
+   * of its faces (j first, then its neighbours), now and at the last
+   * converged step, the faces (bilinear quadrilaterals, deal.II's
+   * lexicographic vertex order, ordered so that the MasterFace normal
+   * points out of the slave body) as quadruples of those local numbers,
+   * and the master nodes and faces that the search found facing them.
+   */
+  struct MortarInput3D
+  {
+    /** Faces around a node: 4 on a structured surface, 3 to 6 where the
+     * mesh is irregular (a sphere's). */
+    static constexpr unsigned int max_slave_faces = 6;
+    static constexpr unsigned int max_slave_nodes = 1 + 2 * max_slave_faces;
+    unsigned int                  n_slave_nodes   = 0;
+    Vec3<double>                  xs[max_slave_nodes], xs_old[max_slave_nodes];
+    unsigned int                  n_slave_faces = 0;
+    std::array<unsigned int, 4>   slave_face[max_slave_faces];
+
+    unsigned int n_master_nodes = 0;
+    Vec3<double> xm[max_mortar_master_nodes_3d],
+      xm_old[max_mortar_master_nodes_3d];
+    unsigned int                n_master_faces = 0;
+    std::array<unsigned int, 4> master_face[max_mortar_master_nodes_3d];
+
+    /** Mortar basis = dual (else standard). */
+    bool dual = true;
+    /** A node whose weight w_j is below this has no master. */
+    double min_weight = 0;
+  };
+
+
+
+  /**
+   * The mortar (segment-to-segment) element of slave node j in 3D, after
+   * Puso and Laursen (2004) and Popp, Gee and Wall (2010): the 2D element
+   * (Mortar2D) with faces for segments. Each slave face and each master
+   * face facing it are projected along the slave face's normal n_0 at its
+   * centre onto the auxiliary plane through that centre; the two
+   * quadrilaterals are clipped there (Sutherland-Hodgman, the slave's
+   * projection is convex), the clip polygon (convex) is split into a fan
+   * of triangles from its first vertex, and each triangle is integrated by the
+   * 7-point rule of degree 5. At each point the slave and master coordinates xi
+   * are the inverse of their projected bilinear maps (Newton). With them
+   *
+   *   D_jk = int Phi_j N_k,   M_jl = int Phi_j N_l,   w_j = sum_k D_jk,
+   *
+   * integrated in the plane's measure, and the same weighted gap, slip,
+   * nodal normal (the faces' n_0 weighted by their share of w_j) and force
+   * as in 2D. For a flat interface and parallelogram faces every integrand
+   * is a polynomial of degree 4 in the plane, so the rule is exact and the
+   * contact patch test holds to round-off with either side as slave.
+   *
+   * Dual basis: Phi = A N on each slave face with A = D_e M_e^-1 (M_e the
+   * face's mass matrix in the plane's measure, 2 x 2 Gauss, exact), blended
+   * towards the standard functions on faces the master covers only in part
+   * (theta = 2 c - 1 for a covered fraction c in [1/2, 1]), as in 2D.
+   *
+   * Everything, the projections, the clipping and the inverse maps
+   * included, is Sacado AD of the positions: the tangent is exact.
+   */
+  struct Mortar3D
+  {
+    /**
+     * Evaluate the element of slave node j (@p input) with the law of
+     * @p enforcement. Dofs: the slave nodes of input (3 each), the master
+     * nodes (3 each), then the enforcement's unknowns; otherwise as
+     * Mortar2D::evaluate().
+     */
+    static ContactPointResult
+    evaluate(const SlaveInput     &slave,
+             const MortarInput3D  &input,
+             const Enforcement<3> &enforcement,
+             double               *R,
+             double               *K,
+             bool                 &paired,
+             Vec3<double>         &weighted_point);
+  };
+
+  /**
+   * The input of slave node @p k's 3D mortar element in @p pair, as
+   * mortar_input() in 2D. Returns false, with the reason in @p too_large,
+   * if the element couples more master nodes or faces than the AD number
+   * holds.
+   */
+  bool
+  mortar_input(const ContactPair<3>                         &pair,
+               const unsigned int                            k,
+               MortarInput3D                                &mortar,
+               std::vector<unsigned int>                    &stencil,
+               std::vector<unsigned int>                    &master_nodes,
+               std::vector<dealii::types::global_dof_index> &dofs,
+               std::string                                  &too_large);
+
+  namespace internal
+  {
+    /**
+     * The intersection of the convex polygon @p clip (counter-clockwise,
+     * @p n_clip vertices) with the polygon @p subject (counter-clockwise)
+     * in a plane (Sutherland-Hodgman); the result in @p out (room for
+     * n_subject + n_clip vertices), its vertex count returned (0 for a
+     * subject folded over itself that would give more). Written for
+     * AD numbers: the vertices are differentiable functions of the inputs.
+     */
+    template <typename Number>
+    unsigned int
+    clip_polygon(const std::array<Number, 2> *subject,
+                 const unsigned int           n_subject,
+                 const std::array<Number, 2> *clip,
+                 const unsigned int           n_clip,
+                 std::array<Number, 2>       *out);
+
+    /** The signed area of a polygon in a plane (positive if
+     * counter-clockwise). */
+    template <typename Number>
+    Number
+    polygon_area(const std::array<Number, 2> *polygon, const unsigned int n);
+  } // namespace internal
+} // namespace tribos
+
+#endif

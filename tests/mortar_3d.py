@@ -1,0 +1,136 @@
+"""Verification of the 3D mortar discretization (Contact/Discretization =
+mortar, Mortar3D: auxiliary planes, polygon clipping, dual basis).
+
+1. Contact patch test (tests/patch_test_3d.prm: two stacked blocks,
+   uniform pressure p = 0.01 E on the top, symmetry planes x = 0 and
+   y = 0) with non-matching meshes at several size ratios (5x5 / 3x3,
+   7x7 / 3x3, 4x4 / 7x7 and the anisotropic 5x4 / 3x2), each side as
+   slave, with Lagrange multipliers (dual and standard basis), penalty and
+   augmented Lagrangian: every slave node's pressure CPRESS equal to the
+   others to 1e-10 relative with multipliers and 1e-9 with penalty (the
+   penetration carries the round-off), the vertical resultant p A to 1e-8,
+   and at most 4 Newton iterations (the outer edges of both blocks
+   coincide: the clipping must not turn that into a kink of the
+   residual). Node to segment on the same meshes must fail it by more
+   than 1 %.
+2. An upper block overhanging the lower one in x and y (partly covered
+   slave or master faces at two edges and a corner): one increment, at
+   most 12 Newton iterations, resultant p A to 1e-8, every method, each
+   side as slave.
+3. Frictional sliding (tests/sliding_blocks_3d.prm, mu = 0.3): penalty
+   and multipliers converge without cutbacks, F_T / F_N = mu to 1e-6 in the
+   slide, within 20 % of node to segment's Newton iterations.
+"""
+
+import sys
+
+from tribos_test import setup, run, read_csv, check, finish
+
+tribos, tests, out = setup(sys.argv)
+p = 0.01
+prm = tests + "/patch_test_3d.prm"
+
+# 1. Patch test.
+meshes = [("5, 5, 2", "3, 3, 2"), ("7, 7, 2", "3, 3, 2"),
+          ("4, 4, 2", "7, 7, 2"), ("5, 4, 2", "3, 2, 2")]
+variants = [("lagrange multiplier", "dual"),
+            ("lagrange multiplier", "standard"),
+            ("penalty", "dual"), ("augmented lagrangian", "dual")]
+worst = {}
+n_runs = 0
+
+
+def spread_of(folder):
+    pressures = [r["CPRESS"] for r in read_csv(folder + "/contact-00001.csv")]
+    return (max(pressures) - min(pressures)) / (
+        sum(pressures) / len(pressures))
+
+
+for lower, upper in meshes:
+    for pair in ("14 : 5", "5 : 14"):
+        for method, basis in variants:
+            name = "patch3d_%s_%s_%s_%s_%s" % (
+                lower.replace(", ", "x"), upper.replace(", ", "x"),
+                "upper" if pair.startswith("14") else "lower",
+                method.replace(" ", "_"), basis)
+            folder = out + "/" + name
+            run(tribos, prm, folder, [
+                "Scene/Two blocks/Lower subdivisions=" + lower,
+                "Scene/Two blocks/Upper subdivisions=" + upper,
+                "Contact/Pairs=" + pair, "Contact/Method=" + method,
+                "Contact/Mortar basis=" + basis])
+            spread = spread_of(folder)
+            history = read_csv(folder + "/history.csv")[-1]
+            total = abs(abs(history["pair0_Fz"]) - p) / p
+            its = history["newton_iterations"]
+            key = method if method != "lagrange multiplier" else basis
+            s, t, n = worst.get(key, (0.0, 0.0, 0))
+            worst[key] = (max(s, spread), max(t, total), max(n, its))
+            n_runs += 1
+            bound = 1e-10 if method == "lagrange multiplier" else 1e-9
+            check(spread < bound and total < 1e-8 and its <= 4,
+                  "%s: pressure spread %.1e, resultant error %.1e, %d "
+                  "Newton iterations" % (name, spread, total, its))
+for key, (s, t, n) in worst.items():
+    print("patch test 3D, %s: worst pressure spread %.2e, resultant error "
+          "%.2e, at most %d Newton iterations" % (key, s, t, n))
+print("patch test 3D: %d mortar runs" % n_runs)
+
+for lower, upper in meshes[:2]:
+    for pair in ("14 : 5", "5 : 14"):
+        folder = out + "/patch3d_nts_%s_%s_%s" % (
+            lower.replace(", ", "x"), upper.replace(", ", "x"), pair[0])
+        run(tribos, prm, folder, [
+            "Scene/Two blocks/Lower subdivisions=" + lower,
+            "Scene/Two blocks/Upper subdivisions=" + upper,
+            "Contact/Pairs=" + pair, "Contact/Discretization=node to segment",
+            "Contact/Method=lagrange multiplier"])
+        spread = spread_of(folder)
+        check(spread > 0.01, "node to segment %s / %s, pair %s fails the "
+              "patch test: pressure spread %.3f" % (lower, upper, pair,
+                                                    spread))
+
+# 2. Overhanging upper block (1.2 x 1.2 on 1 x 1).
+for pair in ("14 : 5", "5 : 14"):
+    for method in ("lagrange multiplier", "penalty", "augmented lagrangian"):
+        folder = out + "/overhang3d_%s_%s" % (pair[0],
+                                              method.replace(" ", "_"))
+        run(tribos, prm, folder, [
+            "Scene/Two blocks/Upper block size=1.2, 1.2, 0.5",
+            "Scene/Two blocks/Upper subdivisions=4, 4, 2",
+            "Contact/Pairs=" + pair, "Contact/Method=" + method])
+        rows = read_csv(folder + "/history.csv")
+        history = rows[-1]
+        load = p * 1.2 * 1.2
+        total = abs(abs(history["pair0_Fz"]) - load) / load
+        check(len(rows) == 1 and history["cutbacks"] == 0 and
+              history["newton_iterations"] <= 12 and total < 1e-8,
+              "overhanging block, pair %s, %s: one increment, %d Newton "
+              "iterations, resultant p A to %.1e" % (
+                  pair, method, history["newton_iterations"], total))
+
+# 3. Frictional sliding.
+for method in ("penalty", "lagrange multiplier"):
+    iterations = {}
+    for discretization in ("node to segment", "mortar"):
+        folder = out + "/sliding3d_%s_%s" % (
+            method.replace(" ", "_"), discretization.replace(" ", "_"))
+        run(tribos, tests + "/sliding_blocks_3d.prm", folder, [
+            "Contact/Method=" + method,
+            "Contact/Discretization=" + discretization,
+            "Time stepping/Number of steps=8"])
+        history = read_csv(folder + "/history.csv")
+        iterations[discretization] = sum(h["newton_iterations"]
+                                         for h in history)
+        if discretization == "mortar":
+            ratios = [h["pair0_tangential_force"] / h["pair0_normal_force"]
+                      for h in history if h["time"] > 1.2]
+            worst_ratio = max(abs(r - 0.3) for r in ratios)
+            check(all(h["cutbacks"] == 0 for h in history) and
+                  worst_ratio < 1e-6,
+                  "sliding 3D, mortar %s: no cutbacks, |F_T / F_N - mu| "
+                  "<= %.1e in the slide" % (method, worst_ratio))
+    check(iterations["mortar"] <= 1.2 * iterations["node to segment"],
+          "sliding 3D, %s: mortar %d Newton iterations, node to segment %d"
+          % (method, iterations["mortar"], iterations["node to segment"]))
+finish()

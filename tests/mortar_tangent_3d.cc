@@ -1,0 +1,253 @@
+/**
+ * Unit test: the 3D mortar element's tangent (Sacado AD through the
+ * auxiliary planes, the polygon clipping, the inverse bilinear maps, D, M,
+ * the dual functions, the weighted nodal normal and the enforcement's law)
+ * against central finite differences of its residual. Random
+ * configurations: a slave node with its four faces (a warped 3 x 3 patch
+ * of nodes), a grid of 3 x 3 or 4 x 4 master faces below it, finer and
+ * coarser than the slave, sometimes ending under the slave patch (partial
+ * coverage: the blend towards the standard basis), dual and standard
+ * basis; frictionless, stick and slip; with the penalty law and with the
+ * Lagrange multiplier law (the rows and columns of the node's multipliers
+ * included). Asserts a relative error below 1e-6 and that the forces of
+ * the element balance (sum_k D_jk = sum_l M_jl).
+ */
+
+#include <tribos/contact/lagrange_multiplier.h>
+#include <tribos/contact/mortar_element_3d.h>
+#include <tribos/contact/penalty.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+using namespace tribos;
+
+int
+main()
+{
+  std::mt19937                           random(20261124);
+  std::uniform_real_distribution<double> u(-1, 1);
+  static const Parameters::Contact       parameters{};
+  static const Penalty<3>                penalty;
+  static const LagrangeMultiplier<3>     multipliers(parameters);
+
+  bool         ok          = true;
+  double       worst_error = 0, worst_balance = 0;
+  unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0}, n_partial = 0;
+  for (unsigned int sample = 0; sample < 80; ++sample)
+  {
+    const bool            with_multipliers = sample % 2 == 1;
+    const Enforcement<3> &enforcement =
+      with_multipliers ? static_cast<const Enforcement<3> &>(multipliers) :
+                         static_cast<const Enforcement<3> &>(penalty);
+
+    // Slave: a 3 x 3 patch of nodes, node j in the middle (local 0), the
+    // body above: vertex order (y before x) so that the faces' normal
+    // points down, out of the slave.
+    MortarInput3D input;
+    const double  h_slave = 0.5 + 0.2 * u(random);
+    unsigned int  local[3][3], next = 1;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+      {
+        const unsigned int n = (i == 1 && j == 1) ? 0 : next++;
+        local[i][j]          = n;
+        input.xs[n] = {{(i - 1.) * h_slave + 0.05 * h_slave * u(random),
+                        (j - 1.) * h_slave + 0.05 * h_slave * u(random),
+                        0.03 * h_slave * u(random)}};
+      }
+    input.n_slave_nodes = 9;
+    input.n_slave_faces = 4;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = 0; j < 2; ++j)
+        input.slave_face[2 * i + j] = {
+          {local[i][j], local[i][j + 1], local[i + 1][j], local[i + 1][j + 1]}};
+
+    // Master: n x n faces below, lexicographic (normal up), finer or
+    // coarser than the slave, sometimes shorter than the slave patch.
+    const unsigned int n_master     = 3 + sample % 2;
+    const double       h_master     = (sample % 3 == 0 ? 0.55 : 0.9) * h_slave;
+    const bool         short_master = sample % 5 == 0;
+    const double       reach        = short_master ? 0.6 : 1.;
+    const double       start_x =
+      -0.5 * n_master * h_master * reach + 0.2 * h_master * u(random);
+    const double start_y =
+      -0.5 * n_master * h_master + 0.2 * h_master * u(random);
+    input.n_master_nodes = (n_master + 1) * (n_master + 1);
+    for (unsigned int b = 0; b <= n_master; ++b)
+      for (unsigned int a = 0; a <= n_master; ++a)
+        input.xm[b * (n_master + 1) + a] = {
+          {start_x + a * h_master * reach + 0.05 * h_master * u(random),
+           start_y + b * h_master + 0.05 * h_master * u(random),
+           0.01 * u(random) - 0.02 * std::abs(u(random))}};
+    input.n_master_faces = n_master * n_master;
+    for (unsigned int b = 0; b < n_master; ++b)
+      for (unsigned int a = 0; a < n_master; ++a)
+      {
+        const unsigned int c                = b * (n_master + 1) + a;
+        input.master_face[b * n_master + a] = {
+          {c, c + 1, c + n_master + 1, c + n_master + 2}};
+      }
+    n_partial += short_master;
+    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+      for (unsigned int d = 0; d < 3; ++d)
+        input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
+    for (unsigned int l = 0; l < input.n_master_nodes; ++l)
+      for (unsigned int d = 0; d < 3; ++d)
+        input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
+    input.dual       = sample % 3 != 2;
+    input.min_weight = 0;
+    // Shift the slave up or down: open or closed.
+    const double lift = -0.03 + 0.04 * u(random);
+    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+      input.xs[i][2] += lift;
+
+    ContactLaw law;
+    law.normal_penalty       = 1e3;
+    law.tangential_penalty   = (sample % 4 == 0 ? 1e5 : 1e2);
+    law.friction_coefficient = sample % 6 == 0 ? 0. : 0.3;
+    NodeState history;
+    history.result.status   = ContactStatus::stick;
+    history.result.normal   = {{0, 0, 1}};
+    history.result.traction = {{2 * u(random), 2 * u(random), 0}};
+    history.point           = {{input.xs_old[0][0] + 0.01 * u(random),
+                                input.xs_old[0][1] + 0.01 * u(random),
+                                input.xs_old[0][2] - 0.01}};
+    const Vec3<double> lambda{
+      {3 * u(random), 3 * u(random), 5 + 3 * u(random)}};
+
+    SlaveInput slave;
+    slave.position   = input.xs[0];
+    slave.committed  = &history;
+    slave.law        = law;
+    slave.area       = h_slave * h_slave;
+    slave.consistent = true;
+    slave.unknowns   = with_multipliers ? &lambda : nullptr;
+
+    const unsigned int n_displacements =
+      3 * (input.n_slave_nodes + input.n_master_nodes);
+    const unsigned int       n = n_displacements + (with_multipliers ? 3 : 0);
+    std::vector<double>      R(n), K(n * n), Rp(n), Rm(n);
+    bool                     paired;
+    Vec3<double>             point;
+    const ContactPointResult result = Mortar3D::evaluate(slave,
+                                                         input,
+                                                         enforcement,
+                                                         R.data(),
+                                                         K.data(),
+                                                         paired,
+                                                         point);
+    if (!paired)
+      continue;
+    ++n_status[static_cast<int>(result.status)];
+
+    // Force balance: the forces on all nodes sum to zero (sum D = sum M).
+    if (!with_multipliers || result.status != ContactStatus::open)
+      for (unsigned int d = 0; d < 3; ++d)
+      {
+        double sum = 0, scale = 0;
+        for (unsigned int i = d; i < n_displacements; i += 3)
+        {
+          sum += R[i];
+          scale = std::max(scale, std::abs(R[i]));
+        }
+        if (scale > 0)
+          worst_balance = std::max(worst_balance, std::abs(sum) / scale);
+      }
+
+    // Central differences, the same branches.
+    const double step  = 1e-7;
+    double       error = 0, scale = 0;
+    bool         same_branch = true;
+    for (unsigned int j = 0; j < n; ++j)
+    {
+      MortarInput3D plus = input, minus = input;
+      Vec3<double>  lambda_plus = lambda, lambda_minus = lambda;
+      if (j < 3 * input.n_slave_nodes)
+      {
+        plus.xs[j / 3][j % 3] += step;
+        minus.xs[j / 3][j % 3] -= step;
+      }
+      else if (j < n_displacements)
+      {
+        const unsigned int l = (j - 3 * input.n_slave_nodes) / 3;
+        plus.xm[l][j % 3] += step;
+        minus.xm[l][j % 3] -= step;
+      }
+      else
+      {
+        lambda_plus[j - n_displacements] += step;
+        lambda_minus[j - n_displacements] -= step;
+      }
+      SlaveInput s_plus = slave, s_minus = slave;
+      s_plus.position  = plus.xs[0];
+      s_minus.position = minus.xs[0];
+      if (with_multipliers)
+      {
+        s_plus.unknowns  = &lambda_plus;
+        s_minus.unknowns = &lambda_minus;
+      }
+      bool       paired_p, paired_m;
+      const auto r_p = Mortar3D::evaluate(s_plus,
+                                          plus,
+                                          enforcement,
+                                          Rp.data(),
+                                          nullptr,
+                                          paired_p,
+                                          point);
+      const auto r_m = Mortar3D::evaluate(s_minus,
+                                          minus,
+                                          enforcement,
+                                          Rm.data(),
+                                          nullptr,
+                                          paired_m,
+                                          point);
+      if (!paired_p || !paired_m || r_p.status != result.status ||
+          r_m.status != result.status)
+      {
+        same_branch = false;
+        break;
+      }
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        const double fd = (Rp[i] - Rm[i]) / (2 * step);
+        error           = std::max(error, std::abs(fd - K[i * n + j]));
+        scale           = std::max(scale, std::abs(K[i * n + j]));
+      }
+    }
+    if (!same_branch || scale == 0)
+      continue;
+    ++n_checked;
+    const double relative = error / scale;
+    worst_error           = std::max(worst_error, relative);
+    if (relative > 1e-6)
+    {
+      ok = false;
+      std::cout << "sample " << sample << ": tangent error " << relative
+                << " (status " << static_cast<int>(result.status)
+                << (with_multipliers ? ", multipliers" : ", penalty")
+                << (input.dual ? ", dual" : ", standard")
+                << (short_master ? ", partial" : "") << ")\n";
+    }
+  }
+  std::cout << "checked " << n_checked << " 3D mortar elements (open "
+            << n_status[0] << ", stick " << n_status[1] << ", slip "
+            << n_status[2] << ", frictionless " << n_status[3]
+            << "; partially covered " << n_partial
+            << "); worst relative tangent error " << worst_error
+            << ", worst force balance " << worst_balance << "\n";
+  if (n_checked < 40 || n_status[1] < 8 || n_status[2] < 8 || n_status[3] < 3)
+  {
+    std::cout << "FAILED: too few elements of some kind were checked\n";
+    ok = false;
+  }
+  if (worst_balance > 1e-10)
+  {
+    std::cout << "FAILED: the forces of a mortar element do not balance\n";
+    ok = false;
+  }
+  std::cout << (ok ? "OK" : "FAILED") << std::endl;
+  return ok ? 0 : 1;
+}
