@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 #include <vector>
 
 namespace tribos
@@ -97,6 +96,15 @@ namespace tribos
     polygon_area(const std::array<double, 2> *, const unsigned int);
     template ContactAD
     polygon_area(const std::array<ContactAD, 2> *, const unsigned int);
+    template Sacado::Fad::SLFad<double, 24>
+    polygon_area(const std::array<Sacado::Fad::SLFad<double, 24>, 2> *,
+                 const unsigned int);
+    template unsigned int
+    clip_polygon(const std::array<Sacado::Fad::SLFad<double, 24>, 2> *,
+                 const unsigned int,
+                 const std::array<Sacado::Fad::SLFad<double, 24>, 2> *,
+                 const unsigned int,
+                 std::array<Sacado::Fad::SLFad<double, 24>, 2> *);
     template unsigned int
     clip_polygon(const std::array<double, 2> *,
                  const unsigned int,
@@ -115,22 +123,66 @@ namespace tribos
 
   namespace
   {
-    using AD    = ContactAD;
-    using Point = std::array<AD, 2>;
+    using AD = ContactAD;
+    /**
+     * The AD number of one (slave face, master face) overlap: the 4 + 4
+     * nodes' coordinates. Its integrals are carried over to the node's
+     * ContactAD afterwards: the quadrature, the clipping and the inverse
+     * maps, most of the element's work, run on 24 derivatives instead of
+     * the node's 80-150.
+     */
+    using FaceAD = Sacado::Fad::SLFad<double, 24>;
 
-    /** @p x as a Number: its value for double, itself for AD. */
     template <typename Number>
-    Number
-    value_or_ad(const AD &x)
-    {
-      if constexpr (std::is_same_v<Number, double>)
-        return x.val();
-      else
-        return x;
-    }
+    using Point = std::array<Number, 2>;
 
     /** Lexicographic vertex numbers in counter-clockwise order. */
     constexpr unsigned int counter_clockwise[4] = {0, 1, 3, 2};
+
+    /** The auxiliary plane of a slave face: its centre, unit normal (out
+     * of the slave), in-plane basis and the face projected onto it. */
+    template <typename Number>
+    struct Plane
+    {
+      Vec3<Number>  x0, n0, e1, e2;
+      Point<Number> P[4], P_ccw[4];
+      Number        area;
+
+      Point<Number>
+      project(const Vec3<Number> &x) const
+      {
+        const Vec3<Number> d = x - x0;
+        return Point<Number>{{dot(d, e1), dot(d, e2)}};
+      }
+    };
+
+    /** The plane of the slave face with (lexicographic) nodes @p X. */
+    template <typename Number>
+    Plane<Number>
+    plane_of(const Vec3<Number> *X)
+    {
+      const double  sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
+      Plane<Number> plane;
+      const Number  zero(0.);
+      Vec3<Number>  a_1 = {{zero, zero, zero}}, a_2 = a_1;
+      plane.x0 = a_1;
+      for (unsigned int k = 0; k < 4; ++k)
+      {
+        plane.x0 = plane.x0 + scale(0.25, X[k]);
+        a_1      = a_1 + scale(0.25 * sign_1[k], X[k]);
+        a_2      = a_2 + scale(0.25 * sign_2[k], X[k]);
+      }
+      plane.n0 = cross(a_1, a_2);
+      plane.n0 = scale(1. / norm(plane.n0), plane.n0);
+      plane.e1 = scale(1. / norm(a_1), a_1);
+      plane.e2 = cross(plane.n0, plane.e1);
+      for (unsigned int k = 0; k < 4; ++k)
+        plane.P[k] = plane.project(X[k]);
+      for (unsigned int k = 0; k < 4; ++k)
+        plane.P_ccw[k] = plane.P[counter_clockwise[k]];
+      plane.area = internal::polygon_area(plane.P_ccw, 4);
+      return plane;
+    }
 
     /**
      * The coordinates xi of the point @p p in the bilinear map of the
@@ -141,32 +193,25 @@ namespace tribos
      * residual: the implicit function theorem).
      */
     void
-    inverse_map(const Point *P, const Point &p, AD *xi)
+    inverse_map(const Point<FaceAD> *P, const Point<FaceAD> &p, FaceAD *xi)
     {
-      const auto residual = [&](const auto *x, auto *r, auto(*J)[2])
-      {
-        using Number = std::remove_cv_t<std::remove_pointer_t<decltype(x)>>;
-        Number N[4], dN[4][2];
-        MasterFace<3>::shape(x, N, dN);
-        for (unsigned int a = 0; a < 2; ++a)
-        {
-          r[a] = -Number(value_or_ad<Number>(p[a]));
-          for (unsigned int b = 0; b < 2; ++b)
-            J[a][b] = 0.;
-          for (unsigned int k = 0; k < 4; ++k)
-          {
-            const Number x_k = value_or_ad<Number>(P[k][a]);
-            r[a] += N[k] * x_k;
-            for (unsigned int b = 0; b < 2; ++b)
-              J[a][b] += dN[k][b] * x_k;
-          }
-        }
-      };
       double x[2] = {0., 0.};
+      double N[4], dN[4][2];
       for (unsigned int iteration = 0; iteration < 30; ++iteration)
       {
+        MasterFace<3>::shape(x, N, dN);
         double r[2], J[2][2];
-        residual(x, r, J);
+        for (unsigned int a = 0; a < 2; ++a)
+        {
+          r[a]    = -p[a].val();
+          J[a][0] = J[a][1] = 0.;
+          for (unsigned int k = 0; k < 4; ++k)
+          {
+            r[a] += N[k] * P[k][a].val();
+            for (unsigned int b = 0; b < 2; ++b)
+              J[a][b] += dN[k][b] * P[k][a].val();
+          }
+        }
         const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
         if (std::abs(det) < 1e-300)
           break;
@@ -177,12 +222,26 @@ namespace tribos
         if (std::max(std::abs(d0), std::abs(d1)) < 1e-14)
           break;
       }
-      xi[0] = x[0];
-      xi[1] = x[1];
-      AD r[2], J[2][2];
-      residual(xi, r, J);
-      const AD det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-      if (std::abs(det.val()) < 1e-300)
+      // The AD step: r's value is zero to round-off, so J^-1 r is the
+      // derivative of the root; J is used at its value.
+      MasterFace<3>::shape(x, N, dN);
+      FaceAD r[2];
+      double J[2][2];
+      for (unsigned int a = 0; a < 2; ++a)
+      {
+        r[a]    = -p[a];
+        J[a][0] = J[a][1] = 0.;
+        for (unsigned int k = 0; k < 4; ++k)
+        {
+          r[a] += N[k] * P[k][a];
+          for (unsigned int b = 0; b < 2; ++b)
+            J[a][b] += dN[k][b] * P[k][a].val();
+        }
+      }
+      const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+      xi[0]            = x[0];
+      xi[1]            = x[1];
+      if (std::abs(det) < 1e-300)
         return;
       xi[0] -= (J[1][1] * r[0] - J[0][1] * r[1]) / det;
       xi[1] -= (J[0][0] * r[1] - J[1][0] * r[0]) / det;
@@ -209,13 +268,78 @@ namespace tribos
                                                 {{b_2, a_2, b_2}, w_2},
                                                 {{b_2, b_2, a_2}, w_2}};
 
-    /** A master face's clipped overlap with a slave face in the plane. */
+    /**
+     * The overlap of the slave face of @p plane with the master face with
+     * (lexicographic) nodes @p Y: its area and the integrals of the slave
+     * functions against the slave's (@p slave[i][k] = int N_i N_k) and the
+     * master's (@p master[i][l] = int N_i N_l) over it. Returns false if
+     * they do not overlap.
+     */
+    bool
+    overlap_integrals(const Plane<FaceAD> &plane,
+                      const Vec3<FaceAD>  *Y,
+                      FaceAD              &area,
+                      FaceAD (&slave)[4][4],
+                      FaceAD (&master)[4][4])
+    {
+      Point<FaceAD> Q[4], Q_ccw[4], polygon[8];
+      for (unsigned int k = 0; k < 4; ++k)
+        Q[k] = plane.project(Y[k]);
+      for (unsigned int k = 0; k < 4; ++k)
+        Q_ccw[k] = Q[counter_clockwise[3 - k]];
+      if (internal::polygon_area(Q_ccw, 4).val() <= 0)
+        return false;
+      const unsigned int n =
+        internal::clip_polygon(Q_ccw, 4, plane.P_ccw, 4, polygon);
+      if (n < 3)
+        return false;
+      area = internal::polygon_area(polygon, n);
+      if (area.val() <= 1e-12 * plane.area.val())
+        return false;
+      for (unsigned int i = 0; i < 4; ++i)
+        for (unsigned int k = 0; k < 4; ++k)
+          slave[i][k] = master[i][k] = 0.;
+      // The clip polygon is convex: a fan of triangles from its first
+      // vertex.
+      const Point<FaceAD> &v_0 = polygon[0];
+      for (unsigned int i = 1; i + 1 < n; ++i)
+      {
+        const Point<FaceAD> &v_1 = polygon[i];
+        const Point<FaceAD> &v_2 = polygon[i + 1];
+        const FaceAD triangle = 0.5 * ((v_1[0] - v_0[0]) * (v_2[1] - v_0[1]) -
+                                       (v_1[1] - v_0[1]) * (v_2[0] - v_0[0]));
+        if (triangle.val() <= 0)
+          continue;
+        for (const TrianglePoint &t : triangle_rule)
+        {
+          Point<FaceAD> p;
+          for (unsigned int d = 0; d < 2; ++d)
+            p[d] = t.l[0] * v_0[d] + t.l[1] * v_1[d] + t.l[2] * v_2[d];
+          FaceAD xi_s[2], xi_m[2], N_s[4], N_m[4], dN[4][2];
+          inverse_map(plane.P, p, xi_s);
+          inverse_map(Q, p, xi_m);
+          MasterFace<3>::shape(xi_s, N_s, dN);
+          MasterFace<3>::shape(xi_m, N_m, dN);
+          const FaceAD weight = t.weight * triangle;
+          for (unsigned int i = 0; i < 4; ++i)
+          {
+            const FaceAD w_i = weight * N_s[i];
+            for (unsigned int k = 0; k < 4; ++k)
+            {
+              slave[i][k] += w_i * N_s[k];
+              master[i][k] += w_i * N_m[k];
+            }
+          }
+        }
+      }
+      return true;
+    }
+
+    /** An overlap's integrals, carried over to the node's AD numbers. */
     struct Overlap
     {
       unsigned int face;
-      Point        master[4];
-      Point        polygon[8]; // at most 4 + 4 vertices
-      unsigned int n_vertices;
+      AD           area, slave[4][4], master[4][4];
     };
   } // namespace
 
@@ -249,6 +373,23 @@ namespace tribos
       M[l] = zero;
     Vec3<AD> normal_j = {{zero, zero, zero}};
 
+    // An overlap's integrals in the node's numbers: the face's 12 slave
+    // and the master face's 12 coordinates go to their places among the
+    // node's unknowns.
+    const auto carry = [&](const FaceAD                      &x,
+                           const std::array<unsigned int, 4> &q,
+                           const std::array<unsigned int, 4> &c)
+    {
+      AD y(n_out, x.val());
+      if (x.size() > 0)
+        for (unsigned int t = 0; t < 12; ++t)
+        {
+          y.fastAccessDx(3 * q[t / 3] + t % 3)         = x.dx(t);
+          y.fastAccessDx(3 * (n_s + c[t / 3]) + t % 3) = x.dx(12 + t);
+        }
+      return y;
+    };
+
     static thread_local std::vector<Overlap> overlaps;
     for (unsigned int f = 0; f < input.n_slave_faces; ++f)
     {
@@ -257,91 +398,86 @@ namespace tribos
       while (q[j_local] != 0)
         ++j_local;
 
-      // The auxiliary plane: the face's centre and unit normal there, an
-      // orthonormal basis e_1, e_2 in it (e_1 along the face's a_1).
-      Vec3<AD>     x0 = {{zero, zero, zero}}, a_1 = x0, a_2 = x0;
-      const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
+      Vec3<AD> X[4];
       for (unsigned int k = 0; k < 4; ++k)
-      {
-        x0  = x0 + scale(0.25, xs[q[k]]);
-        a_1 = a_1 + scale(0.25 * sign_1[k], xs[q[k]]);
-        a_2 = a_2 + scale(0.25 * sign_2[k], xs[q[k]]);
-      }
-      Vec3<AD> n0             = cross(a_1, a_2);
-      n0                      = scale(1. / norm(n0), n0);
-      const Vec3<AD> e1       = scale(1. / norm(a_1), a_1);
-      const Vec3<AD> e2       = cross(n0, e1);
-      const auto     in_plane = [&](const Vec3<AD> &x)
-      {
-        const Vec3<AD> d = x - x0;
-        return Point{{dot(d, e1), dot(d, e2)}};
-      };
-      Point P[4], P_ccw[4];
-      for (unsigned int k = 0; k < 4; ++k)
-        P[k] = in_plane(xs[q[k]]);
-      for (unsigned int k = 0; k < 4; ++k)
-        P_ccw[k] = P[counter_clockwise[k]];
-      const AD slave_area = internal::polygon_area(P_ccw, 4);
-      if (slave_area.val() <= 0)
+        X[k] = xs[q[k]];
+      const Plane<AD> plane = plane_of(X);
+      if (plane.area.val() <= 0)
         continue;
+      Vec3<FaceAD> X_face[4];
+      for (unsigned int k = 0; k < 4; ++k)
+        for (unsigned int d = 0; d < 3; ++d)
+          X_face[k][d] = FaceAD(24, 3 * k + d, input.xs[q[k]][d]);
+      const Plane<FaceAD> plane_face = plane_of(X_face);
+      Vec3<double>        n_0, x_0, e_1, e_2;
+      for (unsigned int d = 0; d < 3; ++d)
+      {
+        n_0[d] = plane.n0[d].val();
+        x_0[d] = plane.x0[d].val();
+        e_1[d] = plane.e1[d].val();
+        e_2[d] = plane.e2[d].val();
+      }
+      std::array<double, 2> P[4];
+      for (unsigned int k = 0; k < 4; ++k)
+        for (unsigned int d = 0; d < 2; ++d)
+          P[k][d] = plane.P_ccw[k][d].val();
 
-      // The master faces facing this one, clipped against it in the plane.
+      // The master faces facing this one that overlap it: on the values
+      // first (most faces of the node's list miss this slave face).
       overlaps.clear();
       AD covered = zero;
       for (unsigned int m = 0; m < input.n_master_faces; ++m)
       {
         const auto  &c = input.master_face[m];
         Vec3<double> b_1{{0, 0, 0}}, b_2{{0, 0, 0}};
+        const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
         for (unsigned int k = 0; k < 4; ++k)
         {
           b_1 = b_1 + scale(sign_1[k], input.xm[c[k]]);
           b_2 = b_2 + scale(sign_2[k], input.xm[c[k]]);
         }
         const Vec3<double> n_m = cross(b_1, b_2);
-        Vec3<double>       n_0;
-        for (unsigned int d = 0; d < 3; ++d)
-          n_0[d] = n0[d].val();
         if (dot(n_m, n_0) >= -0.25 * norm(n_m))
           continue;
-        Overlap o;
-        o.face = m;
-        Point Q_ccw[4];
-        for (unsigned int k = 0; k < 4; ++k)
-          o.master[k] = in_plane(xm[c[k]]);
-        for (unsigned int k = 0; k < 4; ++k)
-          Q_ccw[k] = o.master[counter_clockwise[3 - k]];
-        // On the values first: most faces of the node's list miss this
-        // slave face, and the clipping in AD numbers is the costly part.
         {
-          std::array<double, 2> q[4], p[4], clipped[8];
+          std::array<double, 2> Q[4], clipped[8];
           for (unsigned int k = 0; k < 4; ++k)
-            for (unsigned int d = 0; d < 2; ++d)
-            {
-              q[k][d] = Q_ccw[k][d].val();
-              p[k][d] = P_ccw[k][d].val();
-            }
-          if (internal::polygon_area(q, 4) <= 0)
+          {
+            const Vec3<double> d = input.xm[c[counter_clockwise[3 - k]]] - x_0;
+            Q[k]                 = {{dot(d, e_1), dot(d, e_2)}};
+          }
+          if (internal::polygon_area(Q, 4) <= 0)
             continue;
-          const unsigned int n = internal::clip_polygon(q, 4, p, 4, clipped);
+          const unsigned int n = internal::clip_polygon(Q, 4, P, 4, clipped);
           if (n < 3 ||
-              internal::polygon_area(clipped, n) <= 1e-12 * slave_area.val())
+              internal::polygon_area(clipped, n) <= 1e-12 * plane.area.val())
             continue;
         }
-        o.n_vertices = internal::clip_polygon(Q_ccw, 4, P_ccw, 4, o.polygon);
-        if (o.n_vertices < 3)
+        Vec3<FaceAD> Y[4];
+        for (unsigned int k = 0; k < 4; ++k)
+          for (unsigned int d = 0; d < 3; ++d)
+            Y[k][d] = FaceAD(24, 12 + 3 * k + d, input.xm[c[k]][d]);
+        FaceAD area, integrals_s[4][4], integrals_m[4][4];
+        if (!overlap_integrals(plane_face, Y, area, integrals_s, integrals_m))
           continue;
-        const AD area = internal::polygon_area(o.polygon, o.n_vertices);
-        if (area.val() <= 1e-12 * slave_area.val())
-          continue;
-        covered += area;
-        overlaps.push_back(o);
+        overlaps.emplace_back();
+        Overlap &o = overlaps.back();
+        o.face     = m;
+        o.area     = carry(area, q, c);
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int k = 0; k < 4; ++k)
+          {
+            o.slave[i][k]  = carry(integrals_s[i][k], q, c);
+            o.master[i][k] = carry(integrals_m[i][k], q, c);
+          }
+        covered += o.area;
       }
       if (overlaps.empty())
         continue;
 
       // The row of node j in Phi = A N (A = D_e M_e^-1, blended with the
       // identity by theta as in 2D).
-      const AD fraction = covered / slave_area;
+      const AD fraction = covered / plane.area;
       const AD theta    = !input.dual || fraction.val() <= 0.5 ? zero :
                           fraction.val() >= 1.                 ? AD(1.) :
                                                  2. * fraction - 1.;
@@ -357,18 +493,18 @@ namespace tribos
         for (const double g_1 : {-g, g})
           for (const double g_2 : {-g, g})
           {
-            const AD xi[2] = {g_1, g_2};
-            AD       N[4], dN[4][2];
+            const double xi[2] = {g_1, g_2};
+            double       N[4], dN[4][2];
             MasterFace<3>::shape(xi, N, dN);
             AD J[2][2] = {{zero, zero}, {zero, zero}};
             for (unsigned int k = 0; k < 4; ++k)
               for (unsigned int r = 0; r < 2; ++r)
                 for (unsigned int s = 0; s < 2; ++s)
-                  J[r][s] += dN[k][s] * P[k][r];
+                  J[r][s] += dN[k][s] * plane.P[k][r];
             const AD det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
             for (unsigned int i = 0; i < 4; ++i)
               for (unsigned int k = 0; k < 4; ++k)
-                mass[i][k] += det * N[i] * N[k];
+                mass[i][k] += (N[i] * N[k]) * det;
           }
         AD d_j = zero;
         for (unsigned int k = 0; k < 4; ++k)
@@ -398,41 +534,20 @@ namespace tribos
       for (const Overlap &o : overlaps)
       {
         const auto &c = input.master_face[o.face];
-        // The clip polygon is convex: a fan of triangles from its first
-        // vertex.
-        const Point &v_0 = o.polygon[0];
-        for (unsigned int i = 1; i + 1 < o.n_vertices; ++i)
+        for (unsigned int i = 0; i < 4; ++i)
         {
-          const Point &v_1  = o.polygon[i];
-          const Point &v_2  = o.polygon[i + 1];
-          const AD     area = 0.5 * ((v_1[0] - v_0[0]) * (v_2[1] - v_0[1]) -
-                                 (v_1[1] - v_0[1]) * (v_2[0] - v_0[0]));
-          if (area.val() <= 0)
+          if (a[i].val() == 0 && a[i].size() == 0)
             continue;
-          for (const TrianglePoint &t : triangle_rule)
+          for (unsigned int k = 0; k < 4; ++k)
           {
-            Point p;
-            for (unsigned int d = 0; d < 2; ++d)
-              p[d] = t.l[0] * v_0[d] + t.l[1] * v_1[d] + t.l[2] * v_2[d];
-            AD xi_s[2], xi_m[2], N_s[4], N_m[4], dN[4][2];
-            inverse_map(P, p, xi_s);
-            inverse_map(o.master, p, xi_m);
-            MasterFace<3>::shape(xi_s, N_s, dN);
-            MasterFace<3>::shape(xi_m, N_m, dN);
-            AD phi = zero;
-            for (unsigned int k = 0; k < 4; ++k)
-              phi += a[k] * N_s[k];
-            const AD w_phi = t.weight * area * phi;
-            for (unsigned int k = 0; k < 4; ++k)
-            {
-              D[q[k]] += w_phi * N_s[k];
-              M[c[k]] += w_phi * N_m[k];
-            }
-            face_weight += w_phi;
+            const AD w_s = a[i] * o.slave[i][k];
+            D[q[k]] += w_s;
+            M[c[k]] += a[i] * o.master[i][k];
+            face_weight += w_s;
           }
         }
       }
-      normal_j = normal_j + scale(face_weight, n0);
+      normal_j = normal_j + scale(face_weight, plane.n0);
     }
 
     return internal::finish_mortar<3>(slave,

@@ -40,6 +40,14 @@ namespace tribos
     return x;
   }
 
+  /** The value of a forward AD number of another capacity. */
+  template <int n>
+  double
+  value_of(const Sacado::Fad::SLFad<double, n> &x)
+  {
+    return x.val();
+  }
+
   /**
    * The kinematics of one contact point, functions of the element's
    * unknowns: the normal gap g_N (negative: penetration), the unit normal
