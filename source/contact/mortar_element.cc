@@ -285,6 +285,59 @@ namespace tribos
 
 
 
+  namespace internal
+  {
+    template <int dim, typename Input>
+    void
+    mortar_positions(const ContactPair<dim>               &pair,
+                     const unsigned int                    k,
+                     const std::vector<unsigned int>      &stencil,
+                     const std::vector<unsigned int>      &master_nodes,
+                     Input                                &mortar,
+                     std::vector<types::global_dof_index> &dofs)
+    {
+      mortar.n_slave_nodes = stencil.size();
+      dofs.clear();
+      for (unsigned int i = 0; i < stencil.size(); ++i)
+      {
+        mortar.xs[i]     = pair.slave_positions[stencil[i]];
+        mortar.xs_old[i] = pair.old_slave_positions[stencil[i]];
+        for (const auto dof : pair.slave->nodes()[stencil[i]].dofs)
+          dofs.push_back(dof);
+      }
+      mortar.n_master_nodes = master_nodes.size();
+      for (unsigned int l = 0; l < master_nodes.size(); ++l)
+      {
+        mortar.xm[l]     = pair.master_positions[master_nodes[l]];
+        mortar.xm_old[l] = pair.old_master_positions[master_nodes[l]];
+        for (const auto dof : pair.master->nodes()[master_nodes[l]].dofs)
+          dofs.push_back(dof);
+      }
+      const unsigned int n = pair.enforcement->n_node_unknowns();
+      for (unsigned int d = 0; d < n; ++d)
+        dofs.push_back(pair.first_unknown + n * k + d);
+      mortar.dual       = pair.dual_basis;
+      mortar.min_weight = 1e-3 * pair.area[k];
+    }
+
+    template void
+    mortar_positions(const ContactPair<2> &,
+                     const unsigned int,
+                     const std::vector<unsigned int> &,
+                     const std::vector<unsigned int> &,
+                     MortarInput &,
+                     std::vector<types::global_dof_index> &);
+    template void
+    mortar_positions(const ContactPair<3> &,
+                     const unsigned int,
+                     const std::vector<unsigned int> &,
+                     const std::vector<unsigned int> &,
+                     MortarInput3D &,
+                     std::vector<types::global_dof_index> &);
+  } // namespace internal
+
+
+
   bool
   mortar_input(const ContactPair<2>                 &pair,
                const unsigned int                    k,
@@ -332,29 +385,8 @@ namespace tribos
       mortar.master_segment[mortar.n_master_segments++] = segment;
     }
 
-    mortar.n_slave_nodes = stencil.size();
-    dofs.clear();
-    for (unsigned int i = 0; i < stencil.size(); ++i)
-    {
-      mortar.xs[i]     = pair.slave_positions[stencil[i]];
-      mortar.xs_old[i] = pair.old_slave_positions[stencil[i]];
-      for (const auto dof : pair.slave->nodes()[stencil[i]].dofs)
-        dofs.push_back(dof);
-    }
-    mortar.n_master_nodes = master_nodes.size();
-    for (unsigned int l = 0; l < master_nodes.size(); ++l)
-    {
-      mortar.xm[l]     = pair.master_positions[master_nodes[l]];
-      mortar.xm_old[l] = pair.old_master_positions[master_nodes[l]];
-      for (const auto dof : pair.master->nodes()[master_nodes[l]].dofs)
-        dofs.push_back(dof);
-    }
-    const unsigned int n = pair.enforcement->n_node_unknowns();
-    for (unsigned int d = 0; d < n; ++d)
-      dofs.push_back(pair.first_unknown + n * k + d);
-    mortar.dual         = pair.dual_basis;
+    internal::mortar_positions(pair, k, stencil, master_nodes, mortar, dofs);
     mortar.axisymmetric = pair.axisymmetric;
-    mortar.min_weight   = 1e-3 * pair.area[k];
     return true;
   }
 } // namespace tribos

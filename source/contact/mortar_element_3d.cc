@@ -630,28 +630,7 @@ namespace tribos
       mortar.master_face[mortar.n_master_faces++] = face;
     }
 
-    mortar.n_slave_nodes = stencil.size();
-    dofs.clear();
-    for (unsigned int i = 0; i < stencil.size(); ++i)
-    {
-      mortar.xs[i]     = pair.slave_positions[stencil[i]];
-      mortar.xs_old[i] = pair.old_slave_positions[stencil[i]];
-      for (const auto dof : pair.slave->nodes()[stencil[i]].dofs)
-        dofs.push_back(dof);
-    }
-    mortar.n_master_nodes = master_nodes.size();
-    for (unsigned int l = 0; l < master_nodes.size(); ++l)
-    {
-      mortar.xm[l]     = pair.master_positions[master_nodes[l]];
-      mortar.xm_old[l] = pair.old_master_positions[master_nodes[l]];
-      for (const auto dof : pair.master->nodes()[master_nodes[l]].dofs)
-        dofs.push_back(dof);
-    }
-    const unsigned int n = pair.enforcement->n_node_unknowns();
-    for (unsigned int d = 0; d < n; ++d)
-      dofs.push_back(pair.first_unknown + n * k + d);
-    mortar.dual       = pair.dual_basis;
-    mortar.min_weight = 1e-3 * pair.area[k];
+    internal::mortar_positions(pair, k, stencil, master_nodes, mortar, dofs);
     return true;
   }
 } // namespace tribos

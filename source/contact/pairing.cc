@@ -291,15 +291,46 @@ namespace tribos
     NodeState &state = pair.current[k];
     auto      &found = pair.mortar_faces[k];
     found.clear();
-    state.paired   = false;
-    state.face     = -1;
-    state.distance = std::numeric_limits<double>::quiet_NaN();
+    state.paired        = false;
+    state.face          = -1;
+    state.distance      = std::numeric_limits<double>::quiet_NaN();
+    const auto &faces   = pair.master->faces();
+    double      closest = std::numeric_limits<double>::max();
+    // From the master faces closest to the slave points @p starts through
+    // their neighbours, as long as they overlap the slave face or segment
+    // (@p overlaps); false if the search found no face at all.
+    const auto walk = [&](const std::initializer_list<Vec3<double>> starts,
+                          const auto                               &overlaps)
+    {
+      std::vector<unsigned int> queue;
+      for (const Vec3<double> &point : starts)
+      {
+        unsigned int face;
+        double       squared_distance;
+        if (!pair.search.closest_face(point, face, squared_distance))
+          return false;
+        closest = std::min(closest, std::sqrt(squared_distance));
+        if (std::find(queue.begin(), queue.end(), face) == queue.end())
+          queue.push_back(face);
+      }
+      const unsigned int n_start = queue.size();
+      for (unsigned int i = 0; i < queue.size(); ++i)
+      {
+        const unsigned int m       = queue[i];
+        const bool         overlap = overlaps(m);
+        if (overlap && std::find(found.begin(), found.end(), m) == found.end())
+          found.push_back(m);
+        if (overlap || i < n_start)
+          for (const unsigned int g : faces[m].neighbours)
+            if (std::find(queue.begin(), queue.end(), g) == queue.end())
+              queue.push_back(g);
+      }
+      return true;
+    };
     if constexpr (dim == 2)
     {
       const auto        &slave_faces = pair.slave->faces();
-      const auto        &faces       = pair.master->faces();
       const Vec3<double> ez{{0., 0., 1.}};
-      double             closest = std::numeric_limits<double>::max();
       // A node closed at the last converged step keeps faces however deep
       // an iterate pushes it (it must meet the contact force, not lose the
       // master); an open one only sees faces less than a segment length
@@ -357,38 +388,13 @@ namespace tribos
 
         // From the faces closest to the segment's ends and middle through
         // their neighbours, as long as they overlap.
-        std::vector<unsigned int> queue;
-        for (const Vec3<double> &point : {x_a, x_b, scale(0.5, x_a + x_b)})
-        {
-          unsigned int face;
-          double       squared_distance;
-          if (!pair.search.closest_face(point, face, squared_distance))
-            return;
-          closest = std::min(closest, std::sqrt(squared_distance));
-          if (std::find(queue.begin(), queue.end(), face) == queue.end())
-            queue.push_back(face);
-        }
-        const unsigned int n_start = queue.size();
-        for (unsigned int i = 0; i < queue.size(); ++i)
-        {
-          const unsigned int m       = queue[i];
-          const bool         overlap = overlaps(m);
-          if (overlap &&
-              std::find(found.begin(), found.end(), m) == found.end())
-            found.push_back(m);
-          if (overlap || i < n_start)
-            for (const unsigned int g : faces[m].neighbours)
-              if (std::find(queue.begin(), queue.end(), g) == queue.end())
-                queue.push_back(g);
-        }
+        if (!walk({x_a, x_b, scale(0.5, x_a + x_b)}, overlaps))
+          return;
       }
-      state.distance = closest;
     }
     else
     {
       const auto  &slave_faces = pair.slave->faces();
-      const auto  &faces       = pair.master->faces();
-      double       closest     = std::numeric_limits<double>::max();
       const bool   was_closed  = pair.committed[k].closed();
       const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
       // Lexicographic vertex numbers in counter-clockwise order.
@@ -458,33 +464,11 @@ namespace tribos
                  (gap_max >= -length || was_closed);
         };
 
-        std::vector<unsigned int> queue;
-        for (const Vec3<double> &point : {x[0], x[1], x[2], x[3], x0})
-        {
-          unsigned int face;
-          double       squared_distance;
-          if (!pair.search.closest_face(point, face, squared_distance))
-            return;
-          closest = std::min(closest, std::sqrt(squared_distance));
-          if (std::find(queue.begin(), queue.end(), face) == queue.end())
-            queue.push_back(face);
-        }
-        const unsigned int n_start = queue.size();
-        for (unsigned int i = 0; i < queue.size(); ++i)
-        {
-          const unsigned int m       = queue[i];
-          const bool         overlap = overlaps(m);
-          if (overlap &&
-              std::find(found.begin(), found.end(), m) == found.end())
-            found.push_back(m);
-          if (overlap || i < n_start)
-            for (const unsigned int g : faces[m].neighbours)
-              if (std::find(queue.begin(), queue.end(), g) == queue.end())
-                queue.push_back(g);
-        }
+        if (!walk({x[0], x[1], x[2], x[3], x0}, overlaps))
+          return;
       }
-      state.distance = closest;
     }
+    state.distance = closest;
     if (!found.empty())
     {
       state.paired = true;

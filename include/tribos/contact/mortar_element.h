@@ -134,6 +134,23 @@ namespace tribos
   namespace internal
   {
     /**
+     * The positions (now and at the last converged step) of the slave
+     * @p stencil and the @p master_nodes of slave node @p k's mortar
+     * element in @p pair into @p mortar (MortarInput or MortarInput3D),
+     * with the basis and the weight below which the node has no master;
+     * @p dofs gets the element's dofs (slave stencil, master nodes, the
+     * node's unknowns).
+     */
+    template <int dim, typename Input>
+    void
+    mortar_positions(const ContactPair<dim>                       &pair,
+                     const unsigned int                            k,
+                     const std::vector<unsigned int>              &stencil,
+                     const std::vector<unsigned int>              &master_nodes,
+                     Input                                        &mortar,
+                     std::vector<dealii::types::global_dof_index> &dofs);
+
+    /**
      * The end of every mortar element (2D and 3D): from the node's weights
      * @p D (on the @p n_s slave nodes @p xs, at the last converged step
      * @p xs_old) and @p M (on the @p n_m master nodes @p xm, @p xm_old) and
