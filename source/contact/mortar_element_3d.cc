@@ -581,15 +581,7 @@ namespace tribos
                std::string                          &too_large)
   {
     master_nodes.clear();
-    const auto local =
-      [](std::vector<unsigned int> &list, const unsigned int node)
-    {
-      const auto at = std::find(list.begin(), list.end(), node);
-      if (at != list.end())
-        return static_cast<unsigned int>(at - list.begin());
-      list.push_back(node);
-      return static_cast<unsigned int>(list.size() - 1);
-    };
+    const auto local = internal::local_number;
     const auto refuse = [&](const std::string &what)
     {
       const Vec3<double> &x = pair.slave_positions[k];

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/types.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -133,6 +134,18 @@ namespace tribos
 
   namespace internal
   {
+    /** The position of @p node in @p list, appended if it is not there:
+     * an element's local number of a node. */
+    inline unsigned int
+    local_number(std::vector<unsigned int> &list, const unsigned int node)
+    {
+      const auto at = std::find(list.begin(), list.end(), node);
+      if (at != list.end())
+        return static_cast<unsigned int>(at - list.begin());
+      list.push_back(node);
+      return static_cast<unsigned int>(list.size() - 1);
+    }
+
     /**
      * The positions (now and at the last converged step) of the slave
      * @p stencil and the @p master_nodes of slave node @p k's mortar
