@@ -581,7 +581,7 @@ namespace tribos
                std::string                          &too_large)
   {
     master_nodes.clear();
-    const auto local = internal::local_number;
+    const auto local  = internal::local_number;
     const auto refuse = [&](const std::string &what)
     {
       const Vec3<double> &x = pair.slave_positions[k];
