@@ -167,6 +167,9 @@ namespace tribos
     // (the increment is cut back on every process).
     std::string               too_large;
     std::vector<unsigned int> stencil, master_nodes;
+    // 3D mortar: each overlap of a slave and a master face integrated once
+    // per pair and assembly (the positions are fixed during it).
+    MortarOverlapCache overlap_cache;
     // The rows of an evaluated element (R, K) with the dofs in dofs: the
     // enforcement's last look at the unknowns' rows, then the system.
     const auto add_element =
@@ -187,8 +190,9 @@ namespace tribos
     {
       auto                   &pair        = contact_pairs[p];
       const Enforcement<dim> &enforcement = *pair.enforcement;
-      const unsigned int      n_unknowns  = enforcement.n_node_unknowns();
-      RigidInput<dim>         rigid;
+      overlap_cache.entries.clear();
+      const unsigned int n_unknowns = enforcement.n_node_unknowns();
+      RigidInput<dim>    rigid;
       if (pair.rigid)
       {
         rigid.surface   = pair.rigid.get();
@@ -245,7 +249,8 @@ namespace tribos
           else
           {
             MortarInput3D mortar;
-            built = mortar_input(pair,
+            mortar.cache = &overlap_cache;
+            built        = mortar_input(pair,
                                  k,
                                  mortar,
                                  stencil,

@@ -131,7 +131,7 @@ namespace tribos
      * maps, most of the element's work, run on 24 derivatives instead of
      * the node's 80-150.
      */
-    using FaceAD = Sacado::Fad::SLFad<double, 24>;
+    using FaceAD = MortarOverlapCache::FaceAD;
 
     template <typename Number>
     using Point = std::array<Number, 2>;
@@ -453,22 +453,43 @@ namespace tribos
               internal::polygon_area(clipped, n) <= 1e-12 * plane.area.val())
             continue;
         }
-        Vec3<FaceAD> Y[4];
-        for (unsigned int k = 0; k < 4; ++k)
-          for (unsigned int d = 0; d < 3; ++d)
-            Y[k][d] = FaceAD(24, 12 + 3 * k + d, input.xm[c[k]][d]);
-        FaceAD area, integrals_s[4][4], integrals_m[4][4];
-        if (!overlap_integrals(plane_face, Y, area, integrals_s, integrals_m))
+        // The overlap's integrals: from the cache if another node of
+        // this slave face has integrated them in this assembly.
+        MortarOverlapCache::Entry  own;
+        MortarOverlapCache::Entry *entry    = &own;
+        bool                       computed = false;
+        if (input.cache != nullptr)
+        {
+          const std::uint64_t key =
+            (std::uint64_t(input.slave_face_id[f]) << 32) |
+            input.master_face_id[m];
+          const auto [at, inserted] = input.cache->entries.try_emplace(key);
+          entry                     = &at->second;
+          computed                  = !inserted;
+        }
+        if (!computed)
+        {
+          Vec3<FaceAD> Y[4];
+          for (unsigned int k = 0; k < 4; ++k)
+            for (unsigned int d = 0; d < 3; ++d)
+              Y[k][d] = FaceAD(24, 12 + 3 * k + d, input.xm[c[k]][d]);
+          entry->overlaps = overlap_integrals(plane_face,
+                                              Y,
+                                              entry->area,
+                                              entry->slave,
+                                              entry->master);
+        }
+        if (!entry->overlaps)
           continue;
         overlaps.emplace_back();
         Overlap &o = overlaps.back();
         o.face     = m;
-        o.area     = carry(area, q, c);
+        o.area     = carry(entry->area, q, c);
         for (unsigned int i = 0; i < 4; ++i)
           for (unsigned int k = 0; k < 4; ++k)
           {
-            o.slave[i][k]  = carry(integrals_s[i][k], q, c);
-            o.master[i][k] = carry(integrals_m[i][k], q, c);
+            o.slave[i][k]  = carry(entry->slave[i][k], q, c);
+            o.master[i][k] = carry(entry->master[i][k], q, c);
           }
         covered += o.area;
       }
@@ -602,6 +623,7 @@ namespace tribos
                     " slave faces");
     for (const unsigned int f : pair.slave->nodes()[k].faces)
     {
+      mortar.slave_face_id[mortar.n_slave_faces] = f;
       auto &face = mortar.slave_face[mortar.n_slave_faces++];
       for (unsigned int v = 0; v < 4; ++v)
         face[v] = local(stencil, pair.slave->faces()[f].nodes[v]);
@@ -619,7 +641,8 @@ namespace tribos
         return refuse("overlaps more than " +
                       std::to_string(max_mortar_master_nodes_3d) +
                       " master nodes");
-      mortar.master_face[mortar.n_master_faces++] = face;
+      mortar.master_face_id[mortar.n_master_faces] = f;
+      mortar.master_face[mortar.n_master_faces++]  = face;
     }
 
     internal::mortar_positions(pair, k, stencil, master_nodes, mortar, dofs);

@@ -6,13 +6,39 @@
 #include <deal.II/base/types.h>
 
 #include <array>
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace tribos
 {
   template <int dim>
   struct ContactPair;
+
+  /**
+   * The overlaps of (slave face, master face) pairs integrated so far in
+   * one assembly: each overlap is needed by the elements of the 4 nodes of
+   * its slave face and is integrated once. Clear it whenever the
+   * positions change.
+   */
+  struct MortarOverlapCache
+  {
+    /** The AD number of one overlap: the coordinates of its slave face's
+     * and master face's 4 + 4 nodes. */
+    using FaceAD = Sacado::Fad::SLFad<double, 24>;
+
+    /** Whether the faces overlap and, if so, the overlap's area and the
+     * integrals int N_i N_k (slave) and int N_i N_l (master) over it. */
+    struct Entry
+    {
+      bool   overlaps = false;
+      FaceAD area, slave[4][4], master[4][4];
+    };
+
+    /** By slave face (high 32 bits) and master face (low 32 bits). */
+    std::unordered_map<std::uint64_t, Entry> entries;
+  };
 
   /**
    * What the 3D mortar element of one slave node j needs: the slave nodes
@@ -43,6 +69,13 @@ namespace tribos
     bool dual = true;
     /** A node whose weight w_j is below this has no master. */
     double min_weight = 0;
+
+    /** The surfaces' numbers of the slave and master faces (the keys of
+     * the cache) and the assembly's cache of overlaps (none: each element
+     * integrates its overlaps itself). */
+    unsigned int        slave_face_id[max_slave_faces];
+    unsigned int        master_face_id[max_mortar_master_nodes_3d];
+    MortarOverlapCache *cache = nullptr;
   };
 
 
