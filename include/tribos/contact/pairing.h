@@ -71,9 +71,10 @@ namespace tribos
     pair_smoothed(ContactPair<dim> &pair, const unsigned int k) const;
 
     /**
-     * Mortar (2D): the master faces that face one of slave @p k's
-     * segments (normals more than 75 degrees apart), overlap it in the
-     * orthogonal projection onto its line and lie within reach along its
+     * Mortar: the master faces that face one of slave @p k's
+     * segments or faces (normals more than 75 degrees apart), overlap it
+     * in the orthogonal projection onto its line (3D: clipped in the
+     * face's auxiliary plane) and lie within reach along its
      * normal (a gap below Search distance and the segment's length; for
      * a node open at the last converged step also not wholly deeper than
      * that length behind it, a closed one keeps faces at any depth), found
