@@ -55,6 +55,10 @@ CASES = {
         "ironing_2d.prm", IRONING + LM + ["Contact/Discretization=mortar"]),
     "penalty_friction_3d": ("sliding_blocks_3d.prm", []),
     "lagrange_friction_3d": ("sliding_blocks_3d.prm", LM),
+    "penalty_friction_mortar_3d": (
+        "sliding_blocks_3d.prm", ["Contact/Discretization=mortar"]),
+    "lagrange_friction_mortar_3d": (
+        "sliding_blocks_3d.prm", LM + ["Contact/Discretization=mortar"]),
     "augmented_frictionless_rigid_3d": ("../parameters/hertz_3d.prm",
                                          HERTZ_3D + AL),
     "lagrange_frictionless_rigid_3d": ("../parameters/hertz_3d.prm",
