@@ -225,49 +225,24 @@ namespace tribos
         }
         if (pair.mortar && state.paired)
         {
-          bool         paired = false, built = false;
-          Vec3<double> point;
-          if constexpr (dim == 2)
-          {
-            MortarInput mortar;
-            built = mortar_input(pair,
-                                 k,
-                                 mortar,
-                                 stencil,
-                                 master_nodes,
-                                 dofs,
-                                 too_large);
-            if (built)
-              state.result = Mortar2D::evaluate(slave,
-                                                mortar,
-                                                enforcement,
-                                                R,
-                                                K,
-                                                paired,
-                                                point);
-          }
-          else
-          {
-            MortarInput3D mortar;
+          using Input =
+            std::conditional_t<dim == 2, MortarInput, MortarInput3D>;
+          using Element = std::conditional_t<dim == 2, Mortar2D, Mortar3D>;
+          Input mortar;
+          if constexpr (dim == 3)
             mortar.cache = &overlap_cache;
-            built        = mortar_input(pair,
-                                 k,
-                                 mortar,
-                                 stencil,
-                                 master_nodes,
-                                 dofs,
-                                 too_large);
-            if (built)
-              state.result = Mortar3D::evaluate(slave,
-                                                mortar,
-                                                enforcement,
-                                                R,
-                                                K,
-                                                paired,
-                                                point);
-          }
-          if (!built)
+          if (!mortar_input(pair,
+                            k,
+                            mortar,
+                            stencil,
+                            master_nodes,
+                            dofs,
+                            too_large))
             continue;
+          bool         paired = false;
+          Vec3<double> point;
+          state.result =
+            Element::evaluate(slave, mortar, enforcement, R, K, paired, point);
           if (paired)
           {
             const auto &r  = state.result;

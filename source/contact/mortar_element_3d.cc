@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace tribos
@@ -117,6 +118,31 @@ namespace tribos
                  const std::array<ContactAD, 2> *,
                  const unsigned int,
                  std::array<ContactAD, 2> *);
+
+
+    bool
+    overlaps_in_plane(const AuxiliaryPlane<double> &plane,
+                      const Vec3<double>           *Y)
+    {
+      const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
+      Vec3<double> b_1{{0, 0, 0}}, b_2{{0, 0, 0}};
+      for (unsigned int k = 0; k < 4; ++k)
+      {
+        b_1 = b_1 + scale(sign_1[k], Y[k]);
+        b_2 = b_2 + scale(sign_2[k], Y[k]);
+      }
+      const Vec3<double> n_m = cross(b_1, b_2);
+      if (dot(n_m, plane.n0) >= -0.25 * norm(n_m))
+        return false;
+      // The master face's projection, counter-clockwise seen along n0.
+      std::array<double, 2> Q[4], clipped[8];
+      for (unsigned int k = 0; k < 4; ++k)
+        Q[k] = plane.project(Y[counter_clockwise[3 - k]]);
+      if (polygon_area(Q, 4) <= 0)
+        return false;
+      const unsigned int n = clip_polygon(Q, 4, plane.P_ccw, 4, clipped);
+      return n >= 3 && polygon_area(clipped, n) > 1e-12 * plane.area;
+    }
   } // namespace internal
 
 
@@ -136,53 +162,9 @@ namespace tribos
     template <typename Number>
     using Point = std::array<Number, 2>;
 
-    /** Lexicographic vertex numbers in counter-clockwise order. */
-    constexpr unsigned int counter_clockwise[4] = {0, 1, 3, 2};
-
-    /** The auxiliary plane of a slave face: its centre, unit normal (out
-     * of the slave), in-plane basis and the face projected onto it. */
+    using internal::counter_clockwise;
     template <typename Number>
-    struct Plane
-    {
-      Vec3<Number>  x0, n0, e1, e2;
-      Point<Number> P[4], P_ccw[4];
-      Number        area;
-
-      Point<Number>
-      project(const Vec3<Number> &x) const
-      {
-        const Vec3<Number> d = x - x0;
-        return Point<Number>{{dot(d, e1), dot(d, e2)}};
-      }
-    };
-
-    /** The plane of the slave face with (lexicographic) nodes @p X. */
-    template <typename Number>
-    Plane<Number>
-    plane_of(const Vec3<Number> *X)
-    {
-      const double  sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
-      Plane<Number> plane;
-      const Number  zero(0.);
-      Vec3<Number>  a_1 = {{zero, zero, zero}}, a_2 = a_1;
-      plane.x0 = a_1;
-      for (unsigned int k = 0; k < 4; ++k)
-      {
-        plane.x0 = plane.x0 + scale(0.25, X[k]);
-        a_1      = a_1 + scale(0.25 * sign_1[k], X[k]);
-        a_2      = a_2 + scale(0.25 * sign_2[k], X[k]);
-      }
-      plane.n0 = cross(a_1, a_2);
-      plane.n0 = scale(1. / norm(plane.n0), plane.n0);
-      plane.e1 = scale(1. / norm(a_1), a_1);
-      plane.e2 = cross(plane.n0, plane.e1);
-      for (unsigned int k = 0; k < 4; ++k)
-        plane.P[k] = plane.project(X[k]);
-      for (unsigned int k = 0; k < 4; ++k)
-        plane.P_ccw[k] = plane.P[counter_clockwise[k]];
-      plane.area = internal::polygon_area(plane.P_ccw, 4);
-      return plane;
-    }
+    using Plane = internal::AuxiliaryPlane<Number>;
 
     /**
      * The coordinates xi of the point @p p in the bilinear map of the
@@ -398,63 +380,30 @@ namespace tribos
       while (q[j_local] != 0)
         ++j_local;
 
-      Vec3<AD> X[4];
+      Vec3<AD>     X[4];
+      Vec3<double> X_value[4];
       for (unsigned int k = 0; k < 4; ++k)
-        X[k] = xs[q[k]];
-      const Plane<AD> plane = plane_of(X);
+      {
+        X[k]       = xs[q[k]];
+        X_value[k] = input.xs[q[k]];
+      }
+      const Plane<AD> plane = internal::auxiliary_plane(X);
       if (plane.area.val() <= 0)
         continue;
-      Vec3<FaceAD> X_face[4];
-      for (unsigned int k = 0; k < 4; ++k)
-        for (unsigned int d = 0; d < 3; ++d)
-          X_face[k][d] = FaceAD(24, 3 * k + d, input.xs[q[k]][d]);
-      const Plane<FaceAD> plane_face = plane_of(X_face);
-      Vec3<double>        n_0, x_0, e_1, e_2;
-      for (unsigned int d = 0; d < 3; ++d)
-      {
-        n_0[d] = plane.n0[d].val();
-        x_0[d] = plane.x0[d].val();
-        e_1[d] = plane.e1[d].val();
-        e_2[d] = plane.e2[d].val();
-      }
-      std::array<double, 2> P[4];
-      for (unsigned int k = 0; k < 4; ++k)
-        for (unsigned int d = 0; d < 2; ++d)
-          P[k][d] = plane.P_ccw[k][d].val();
+      const Plane<double> plane_value = internal::auxiliary_plane(X_value);
+      // In the overlap's own AD number, built when an overlap is first
+      // integrated.
+      std::optional<Plane<FaceAD>> plane_face;
 
-      // The master faces facing this one that overlap it: on the values
-      // first (most faces of the node's list miss this slave face).
+      // The master faces that overlap this slave face and their integrals:
+      // from the cache if another node of this face has looked at them in
+      // this assembly; otherwise the test on the values first (most faces
+      // of the node's list miss this slave face), then the integrals.
       overlaps.clear();
       AD covered = zero;
       for (unsigned int m = 0; m < input.n_master_faces; ++m)
       {
-        const auto  &c = input.master_face[m];
-        Vec3<double> b_1{{0, 0, 0}}, b_2{{0, 0, 0}};
-        const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
-        for (unsigned int k = 0; k < 4; ++k)
-        {
-          b_1 = b_1 + scale(sign_1[k], input.xm[c[k]]);
-          b_2 = b_2 + scale(sign_2[k], input.xm[c[k]]);
-        }
-        const Vec3<double> n_m = cross(b_1, b_2);
-        if (dot(n_m, n_0) >= -0.25 * norm(n_m))
-          continue;
-        {
-          std::array<double, 2> Q[4], clipped[8];
-          for (unsigned int k = 0; k < 4; ++k)
-          {
-            const Vec3<double> d = input.xm[c[counter_clockwise[3 - k]]] - x_0;
-            Q[k]                 = {{dot(d, e_1), dot(d, e_2)}};
-          }
-          if (internal::polygon_area(Q, 4) <= 0)
-            continue;
-          const unsigned int n = internal::clip_polygon(Q, 4, P, 4, clipped);
-          if (n < 3 ||
-              internal::polygon_area(clipped, n) <= 1e-12 * plane.area.val())
-            continue;
-        }
-        // The overlap's integrals: from the cache if another node of
-        // this slave face has integrated them in this assembly.
+        const auto                &c = input.master_face[m];
         MortarOverlapCache::Entry  own;
         MortarOverlapCache::Entry *entry    = &own;
         bool                       computed = false;
@@ -469,15 +418,30 @@ namespace tribos
         }
         if (!computed)
         {
-          Vec3<FaceAD> Y[4];
+          Vec3<double> Y_value[4];
           for (unsigned int k = 0; k < 4; ++k)
-            for (unsigned int d = 0; d < 3; ++d)
-              Y[k][d] = FaceAD(24, 12 + 3 * k + d, input.xm[c[k]][d]);
-          entry->overlaps = overlap_integrals(plane_face,
-                                              Y,
-                                              entry->area,
-                                              entry->slave,
-                                              entry->master);
+            Y_value[k] = input.xm[c[k]];
+          entry->overlaps = internal::overlaps_in_plane(plane_value, Y_value);
+          if (entry->overlaps)
+          {
+            if (!plane_face)
+            {
+              Vec3<FaceAD> X_face[4];
+              for (unsigned int k = 0; k < 4; ++k)
+                for (unsigned int d = 0; d < 3; ++d)
+                  X_face[k][d] = FaceAD(24, 3 * k + d, X_value[k][d]);
+              plane_face = internal::auxiliary_plane(X_face);
+            }
+            Vec3<FaceAD> Y[4];
+            for (unsigned int k = 0; k < 4; ++k)
+              for (unsigned int d = 0; d < 3; ++d)
+                Y[k][d] = FaceAD(24, 12 + 3 * k + d, Y_value[k][d]);
+            entry->overlaps = overlap_integrals(*plane_face,
+                                                Y,
+                                                entry->area,
+                                                entry->slave,
+                                                entry->master);
+          }
         }
         if (!entry->overlaps)
           continue;

@@ -394,77 +394,45 @@ namespace tribos
     }
     else
     {
-      const auto  &slave_faces = pair.slave->faces();
-      const bool   was_closed  = pair.committed[k].closed();
-      const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
-      // Lexicographic vertex numbers in counter-clockwise order.
-      const unsigned int ccw[4] = {0, 1, 3, 2};
-      using Point               = std::array<double, 2>;
+      const auto &slave_faces = pair.slave->faces();
+      const bool  was_closed  = pair.committed[k].closed();
       for (const unsigned int f : pair.slave->nodes()[k].faces)
       {
         // The face's auxiliary plane, as in the element (Mortar3D).
-        Vec3<double> x[4], x0{{0, 0, 0}}, a_1{{0, 0, 0}}, a_2{{0, 0, 0}};
+        Vec3<double> x[4];
         for (unsigned int v = 0; v < 4; ++v)
-        {
           x[v] = pair.slave_positions[slave_faces[f].nodes[v]];
-          x0   = x0 + scale(0.25, x[v]);
-          a_1  = a_1 + scale(0.25 * sign_1[v], x[v]);
-          a_2  = a_2 + scale(0.25 * sign_2[v], x[v]);
-        }
-        Vec3<double> n0             = cross(a_1, a_2);
-        n0                          = scale(1. / norm(n0), n0);
-        const Vec3<double> e1       = scale(1. / norm(a_1), a_1);
-        const Vec3<double> e2       = cross(n0, e1);
-        const auto         in_plane = [&](const Vec3<double> &y)
-        {
-          return Point{{dot(y - x0, e1), dot(y - x0, e2)}};
-        };
-        Point  P[4];
+        const internal::AuxiliaryPlane<double> plane =
+          internal::auxiliary_plane(x);
         double height_min = std::numeric_limits<double>::max(),
                height_max = -height_min;
         for (unsigned int v = 0; v < 4; ++v)
         {
-          P[v]       = in_plane(x[ccw[v]]);
-          height_min = std::min(height_min, dot(x[v] - x0, n0));
-          height_max = std::max(height_max, dot(x[v] - x0, n0));
+          height_min = std::min(height_min, dot(x[v] - plane.x0, plane.n0));
+          height_max = std::max(height_max, dot(x[v] - plane.x0, plane.n0));
         }
-        const double area   = internal::polygon_area(P, 4);
-        const double length = std::sqrt(std::abs(area));
+        const double length = std::sqrt(std::abs(plane.area));
 
         // Whether master face m faces this slave face, overlaps it in the
         // plane and lies within reach along its normal (as in 2D).
         const auto overlaps = [&](const unsigned int m)
         {
-          Vec3<double> y[4], b_1{{0, 0, 0}}, b_2{{0, 0, 0}};
+          Vec3<double> y[4];
+          double       gap_min = std::numeric_limits<double>::max(),
+                 gap_max       = -gap_min;
           for (unsigned int v = 0; v < 4; ++v)
           {
-            y[v] = pair.master_positions[faces[m].nodes[v]];
-            b_1  = b_1 + scale(sign_1[v], y[v]);
-            b_2  = b_2 + scale(sign_2[v], y[v]);
-          }
-          const Vec3<double> n_m = cross(b_1, b_2);
-          if (dot(n_m, n0) >= -0.25 * norm(n_m))
-            return false;
-          Point  Q[4], clipped[8];
-          double gap_min = std::numeric_limits<double>::max(),
-                 gap_max = -gap_min;
-          for (unsigned int v = 0; v < 4; ++v)
-          {
-            Q[v]               = in_plane(y[ccw[3 - v]]);
-            const double above = dot(y[v] - x0, n0);
+            y[v]               = pair.master_positions[faces[m].nodes[v]];
+            const double above = dot(y[v] - plane.x0, plane.n0);
             gap_min            = std::min(gap_min, above - height_max);
             gap_max            = std::max(gap_max, above - height_min);
           }
-          if (internal::polygon_area(Q, 4) <= 0)
-            return false;
-          const unsigned int n = internal::clip_polygon(Q, 4, P, 4, clipped);
-          if (n < 3 || internal::polygon_area(clipped, n) <= 1e-12 * area)
-            return false;
-          return gap_min <= std::min(parameters.search_distance, length) &&
+          return internal::overlaps_in_plane(plane, y) &&
+                 gap_min <= std::min(parameters.search_distance, length) &&
                  (gap_max >= -length || was_closed);
         };
 
-        if (!walk({x[0], x[1], x[2], x[3], x0}, overlaps))
+        if (!walk({x[0], x[1], x[2], x[3], plane.x0}, overlaps))
           return;
       }
     }

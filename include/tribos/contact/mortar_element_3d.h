@@ -168,6 +168,69 @@ namespace tribos
     template <typename Number>
     Number
     polygon_area(const std::array<Number, 2> *polygon, const unsigned int n);
+
+    /** Lexicographic vertex numbers of a face in counter-clockwise order. */
+    constexpr unsigned int counter_clockwise[4] = {0, 1, 3, 2};
+
+    /** The auxiliary plane of a slave face: its centre, unit normal (out
+     * of the slave), in-plane basis and the face projected onto it
+     * (lexicographic P, counter-clockwise P_ccw) with its area. */
+    template <typename Number>
+    struct AuxiliaryPlane
+    {
+      Vec3<Number>          x0, n0, e1, e2;
+      std::array<Number, 2> P[4], P_ccw[4];
+      Number                area;
+
+      /** The projection of @p x along n0, in the basis e1, e2. */
+      std::array<Number, 2>
+      project(const Vec3<Number> &x) const
+      {
+        const Vec3<Number> d = x - x0;
+        return std::array<Number, 2>{{dot(d, e1), dot(d, e2)}};
+      }
+    };
+
+    /** The auxiliary plane of the slave face with (lexicographic) nodes
+     * @p X: through its centre, normal to a_1 x a_2 there, e1 along a_1. */
+    template <typename Number>
+    AuxiliaryPlane<Number>
+    auxiliary_plane(const Vec3<Number> *X)
+    {
+      const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
+      AuxiliaryPlane<Number> plane;
+      const Number           zero(0.);
+      Vec3<Number>           a_1 = {{zero, zero, zero}}, a_2 = a_1;
+      plane.x0 = a_1;
+      for (unsigned int k = 0; k < 4; ++k)
+      {
+        plane.x0 = plane.x0 + scale(0.25, X[k]);
+        a_1      = a_1 + scale(0.25 * sign_1[k], X[k]);
+        a_2      = a_2 + scale(0.25 * sign_2[k], X[k]);
+      }
+      plane.n0 = cross(a_1, a_2);
+      plane.n0 = scale(1. / norm(plane.n0), plane.n0);
+      plane.e1 = scale(1. / norm(a_1), a_1);
+      plane.e2 = cross(plane.n0, plane.e1);
+      for (unsigned int k = 0; k < 4; ++k)
+        plane.P[k] = plane.project(X[k]);
+      for (unsigned int k = 0; k < 4; ++k)
+        plane.P_ccw[k] = plane.P[counter_clockwise[k]];
+      plane.area = polygon_area(plane.P_ccw, 4);
+      return plane;
+    }
+
+    /**
+     * Whether the master face with (lexicographic) nodes @p Y can carry
+     * the contact of the slave face of @p plane: it faces it (unit normals
+     * more than 75 degrees apart: not the side of a body above the slave)
+     * and its projection overlaps the slave's in the plane (by more than
+     * 1e-12 of the slave's area). The search and the element use this one
+     * test.
+     */
+    bool
+    overlaps_in_plane(const AuxiliaryPlane<double> &plane,
+                      const Vec3<double>           *Y);
   } // namespace internal
 } // namespace tribos
 
