@@ -562,6 +562,8 @@ namespace tribos
           out << "linear iterations " << linear_solver->n_iterations() << '\n'
               << "AMG setups        "
               << linear_solver->n_preconditioner_setups() << '\n';
+        if (linear_solver && linear_solver->n_refinements() > 0)
+          out << "refinement steps  " << linear_solver->n_refinements() << '\n';
         if (parameters.nonlinear_solver.stabilization > 0)
           out << "largest stabilization ratio "
               << totals.largest_stabilization_ratio << '\n';

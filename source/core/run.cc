@@ -50,6 +50,8 @@ namespace tribos
                                                    dim,
                                                    n_multipliers > 0);
     linear_solver->set_timer(timer);
+    if (n_multipliers > 0)
+      linear_solver->set_multiplier_blocks(dof_handler.n_dofs(), dim);
     if (linear_solver->iterative(matrix))
       linear_solver->set_near_null_space(rigid_body_modes(),
                                          parameters.finite_element.degree > 1);

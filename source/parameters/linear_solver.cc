@@ -37,6 +37,20 @@ namespace tribos
         "process, Amesos_Mumps under MPI. Every solver keeps its symbolic "
         "factorization while the sparsity pattern stays "
         "(benchmarks/direct_solvers.py).");
+      prm.declare_entry(
+        "Eliminate multipliers",
+        "true",
+        dealii::Patterns::Bool(),
+        "Lagrange multipliers with the suitesparse solver: true: each "
+        "node's multipliers are eliminated from a copy of the system whose "
+        "multiplier block is regularized in its singular directions (like "
+        "a penalty about 1e5 times the stiffness there), CHOLMOD "
+        "factorizes the displacement-only matrix, and iterative "
+        "refinement on the unmodified system recovers its exact solution. "
+        "Where the eliminated matrix is not symmetric positive definite "
+        "(sticking or slipping nodes, a body still free) or the refinement "
+        "does not converge, "
+        "the solve is UMFPACK's LU of the whole system, as with false.");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         dealii::Patterns::Double(0),
@@ -78,14 +92,15 @@ namespace tribos
     LinearSolver::parse_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      const std::string t = prm.get("Type");
-      type                = t == "direct"    ? Type::direct :
-                            t == "iterative" ? Type::iterative :
-                                               Type::automatic;
-      iterative_above     = prm.get_integer("Iterative above");
-      direct_solver       = prm.get("Direct solver");
-      tolerance           = prm.get_double("Tolerance");
-      max_iterations      = prm.get_integer("Maximum iterations");
+      const std::string t   = prm.get("Type");
+      type                  = t == "direct"    ? Type::direct :
+                              t == "iterative" ? Type::iterative :
+                                                 Type::automatic;
+      iterative_above       = prm.get_integer("Iterative above");
+      direct_solver         = prm.get("Direct solver");
+      eliminate_multipliers = prm.get_bool("Eliminate multipliers");
+      tolerance             = prm.get_double("Tolerance");
+      max_iterations        = prm.get_integer("Maximum iterations");
       prm.leave_subsection();
     }
   } // namespace Parameters

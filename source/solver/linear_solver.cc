@@ -53,6 +53,16 @@ namespace tribos
 
 
   void
+  LinearSolver::set_multiplier_blocks(const types::global_dof_index first,
+                                      const unsigned int            size)
+  {
+    first_multiplier = first;
+    multiplier_block = parameters.eliminate_multipliers ? size : 0;
+  }
+
+
+
+  void
   LinearSolver::set_timer(TimerOutput &t)
   {
     timer = &t;
@@ -81,11 +91,15 @@ namespace tribos
     if (name == "suitesparse")
     {
       if (!suitesparse)
+      {
         suitesparse = std::make_unique<SparseDirect>();
+        suitesparse->set_multiplier_blocks(first_multiplier, multiplier_block);
+      }
       if (!suitesparse->solve(matrix, pattern_version, x, rhs))
         throw NonConvergence("the direct solver " + suitesparse->method() +
                              " failed (singular system?)");
       last = suitesparse->method() + " (SuiteSparse)";
+      total_refinements += suitesparse->refinements();
       return;
     }
     solve_amesos(matrix, pattern_version, x, rhs, name);

@@ -25,7 +25,10 @@ namespace tribos
        * solved iteratively. */
       unsigned long iterative_above;
       /** Direct solver as written: auto or an Amesos solver's name. */
-      std::string  direct_solver;
+      std::string direct_solver;
+      /** Multipliers (serial suitesparse solves): eliminated from a
+       * regularized copy (SparseDirect), or LU of the whole system. */
+      bool         eliminate_multipliers;
       double       tolerance;
       unsigned int max_iterations;
 

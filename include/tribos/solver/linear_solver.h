@@ -53,6 +53,15 @@ namespace tribos
     set_near_null_space(const std::vector<std::vector<double>> &modes,
                         const bool                              higher_order);
 
+    /**
+     * The unknowns from @p first on are contact multipliers, @p size per
+     * slave node: SparseDirect eliminates them (Linear solver/Eliminate
+     * multipliers).
+     */
+    void
+    set_multiplier_blocks(const types::global_dof_index first,
+                          const unsigned int            size);
+
     /** Time every solve in @p timer's section "linear solve". */
     void
     set_timer(TimerOutput &timer);
@@ -102,6 +111,13 @@ namespace tribos
       return total_iterations;
     }
 
+    /** Refinement steps of all solves with eliminated multipliers. */
+    unsigned long
+    n_refinements() const
+    {
+      return total_refinements;
+    }
+
     /** Whether @p matrix is solved iteratively (inexact Newton applies). */
     bool
     iterative(const TrilinosWrappers::SparseMatrix &matrix) const
@@ -127,7 +143,8 @@ namespace tribos
     const Parameters::LinearSolver &parameters;
     const unsigned int              dim;
     const bool                      saddle_point;
-    unsigned long                   total_iterations = 0;
+    unsigned long                   total_iterations  = 0;
+    unsigned long                   total_refinements = 0;
     /** The AMG preconditioner, the pattern it was built for and the
      * iterations of its first solve. */
     std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
@@ -138,6 +155,8 @@ namespace tribos
     bool                                               higher_order = false;
     TimerOutput                                       *timer        = nullptr;
     std::unique_ptr<SparseDirect>                      suitesparse;
+    types::global_dof_index                            first_multiplier = 0;
+    unsigned int                                       multiplier_block = 0;
     std::string                                        last;
 
     /** Amesos: the solver, its problem and the pattern it analysed. */
