@@ -1,6 +1,8 @@
 #ifndef tribos_solver_sparse_direct_h
 #define tribos_solver_sparse_direct_h
 
+#include <tribos/solver/compressed_rows.h>
+
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -94,17 +96,6 @@ namespace tribos
     }
 
   private:
-    /** Copy the matrix into compressed rows (global, sorted columns);
-     * with @p new_pattern false only the values (same pattern, same
-     * order: no column lookup and no sort). */
-    void
-    extract(const TrilinosWrappers::SparseMatrix &matrix,
-            const bool                            new_pattern);
-
-    /** Whether the values are symmetric to 1e-10 of the largest entry. */
-    bool
-    symmetric() const;
-
     /** Factorize the matrix (CHOLMOD, or UMFPACK where Cholesky fails or
      * the matrix is not symmetric, if @p lu_allowed), reusing the symbolic
      * analysis. */
@@ -118,16 +109,13 @@ namespace tribos
     void
     free_factorizations();
 
-    /** Whether the pattern allows the elimination; prepares it. */
-    bool
-    prepare_elimination();
-
     /** How a solve with the multipliers eliminated ended. */
     enum class Outcome
     {
       solved,
       /** The eliminated matrix is not symmetric positive definite (friction,
-       * slip): LU of the whole system is cheaper than LU of it. */
+       * slip, a free body): LU of the whole system is cheaper than LU of
+       * it. */
       not_definite,
       /** The refinement did not converge. */
       failed
@@ -137,13 +125,9 @@ namespace tribos
     Outcome
     solve_eliminated(double *x, const double *b);
 
-    /** The matrix in compressed rows (as compressed columns: its
-     * transpose). */
-    std::vector<int>    row_start, columns;
-    std::vector<double> values;
-    /** Per entry of the compressed rows, its position in Trilinos' row. */
-    std::vector<int> source;
-    unsigned long    version = static_cast<unsigned long>(-1);
+    /** The matrix (as compressed columns: its transpose). */
+    CompressedRows system;
+    unsigned long  version = static_cast<unsigned long>(-1);
     /** Whether the factorization objects belong to the current pattern. */
     bool factorization_current = false;
     /** "CHOLMOD" or "UMFPACK": the current factorization. */
@@ -160,8 +144,9 @@ namespace tribos
      * symbolic and numeric objects). */
     struct State;
     std::unique_ptr<State> state;
-    /** The elimination of the multipliers: per node block the positions of
-     * its entries, the displacement-only matrix and its factorization. */
+
+    /** The elimination of the multipliers, the pattern it was prepared
+     * for, and the displacement-only matrix with its factorization. */
     struct Elimination;
     std::unique_ptr<Elimination> elimination;
   };
