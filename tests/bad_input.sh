@@ -79,9 +79,6 @@ expect contact_bad_surface_type "unknown type <cone>" "$tribos" "$contact" \
   --set "Contact/Rigid surfaces=plane : cone : 0, 0, 0 : 1 : 0, 0"
 expect contact_q2 "Polynomial degree = 1" "$tribos" "$contact" \
   --set "Finite element/Polynomial degree=2"
-expect contact_lagrange_iterative "Linear solver/Type = direct" "$tribos" \
-  "$contact" --set "Contact/Method=lagrange multiplier" \
-  --set "Linear solver/Type=iterative"
 expect contact_lagrange_two_pass "Contact/Passes = two-pass" "$tribos" \
   "$contact" --set "Contact/Method=lagrange multiplier" \
   --set "Contact/Passes=two-pass"

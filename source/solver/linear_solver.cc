@@ -1,9 +1,12 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/solver/linear_solver.h>
+#include <tribos/solver/multiplier_elimination.h>
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/vector.h>
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
@@ -22,6 +25,26 @@ namespace tribos
     std::string                        name;
     const Epetra_CrsMatrix            *matrix  = nullptr;
     unsigned long                      version = static_cast<unsigned long>(-1);
+  };
+
+
+
+  /**
+   * The iterative solve of a system with multipliers (serial): the
+   * multipliers are eliminated from a copy regularized like a penalty of
+   * 1/alpha times the local stiffness (MultiplierElimination), GMRES with
+   * ML solves the displacement-only matrix approximately, and that is the
+   * preconditioner of FGMRES on the unmodified saddle-point system, which
+   * removes the regularization.
+   */
+  struct LinearSolver::Eliminated
+  {
+    unsigned long                  version = static_cast<unsigned long>(-1);
+    CompressedRows                 system, reduced;
+    MultiplierElimination          elimination;
+    TrilinosWrappers::SparseMatrix matrix;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+    unsigned int                                       amg_iterations = 0;
   };
 
 
@@ -57,7 +80,7 @@ namespace tribos
                                       const unsigned int            size)
   {
     first_multiplier = first;
-    multiplier_block = parameters.eliminate_multipliers ? size : 0;
+    multiplier_block = size;
   }
 
 
@@ -80,6 +103,11 @@ namespace tribos
     std::unique_ptr<TimerOutput::Scope> scope;
     if (timer != nullptr)
       scope = std::make_unique<TimerOutput::Scope>(*timer, "linear solve");
+    if (iterative(matrix) && saddle_point)
+    {
+      solve_iterative_eliminated(matrix, pattern_version, x, rhs, tolerance);
+      return;
+    }
     if (iterative(matrix))
     {
       solve_iterative(matrix, pattern_version, x, rhs, tolerance);
@@ -93,7 +121,10 @@ namespace tribos
       if (!suitesparse)
       {
         suitesparse = std::make_unique<SparseDirect>();
-        suitesparse->set_multiplier_blocks(first_multiplier, multiplier_block);
+        suitesparse->set_multiplier_blocks(first_multiplier,
+                                           parameters.eliminate_multipliers ?
+                                             multiplier_block :
+                                             0);
       }
       if (!suitesparse->solve(matrix, pattern_version, x, rhs))
         throw NonConvergence("the direct solver " + suitesparse->method() +
@@ -104,6 +135,175 @@ namespace tribos
     }
     solve_amesos(matrix, pattern_version, x, rhs, name);
     last = name;
+  }
+
+
+
+  void
+  LinearSolver::solve_iterative_eliminated(
+    const TrilinosWrappers::SparseMatrix &matrix,
+    const unsigned long                   pattern_version,
+    Vector                               &x,
+    const Vector                         &rhs,
+    const double                          tolerance)
+  {
+    // A penalty of about 100 times the local stiffness, like the default
+    // penalty factors, which AMG handles; FGMRES removes it.
+    constexpr double alpha = 1e-2;
+    // The inner solves are a preconditioner: loose, FGMRES corrects them.
+    constexpr double inner_tolerance = 1e-2;
+    AssertThrow(Utilities::MPI::n_mpi_processes(
+                  matrix.get_mpi_communicator()) == 1,
+                ExcMessage("Contact/Method = lagrange multiplier with Linear "
+                           "solver/Type = iterative runs on one process "
+                           "only; under MPI use Type = direct."));
+    if (!eliminated)
+      eliminated = std::make_unique<Eliminated>();
+    auto      &e           = *eliminated;
+    const bool new_pattern = e.version != pattern_version;
+    e.system.extract(matrix, new_pattern);
+    if (new_pattern)
+    {
+      if (!e.elimination.prepare(e.system,
+                                 first_multiplier,
+                                 multiplier_block,
+                                 e.reduced))
+        throw NonConvergence(
+          "the multipliers cannot be eliminated (a multiplier row couples "
+          "to another node's multipliers): use Linear solver/Type = direct");
+      DynamicSparsityPattern pattern(e.reduced.n_rows(), e.reduced.n_rows());
+      for (int i = 0; i < e.reduced.n_rows(); ++i)
+        for (int k = e.reduced.row_start[i]; k < e.reduced.row_start[i + 1];
+             ++k)
+          pattern.add(i, e.reduced.columns[k]);
+      e.matrix.reinit(complete_index_set(e.reduced.n_rows()),
+                      complete_index_set(e.reduced.n_rows()),
+                      pattern,
+                      matrix.get_mpi_communicator());
+      e.amg.reset();
+      e.version = pattern_version;
+    }
+    e.elimination.eliminate(e.system, alpha, e.reduced);
+    std::vector<types::global_dof_index> indices;
+    for (int i = 0; i < e.reduced.n_rows(); ++i)
+    {
+      const int begin = e.reduced.row_start[i],
+                end   = e.reduced.row_start[i + 1];
+      indices.assign(e.reduced.columns.begin() + begin,
+                     e.reduced.columns.begin() + end);
+      e.matrix.set(i,
+                   indices.size(),
+                   indices.data(),
+                   e.reduced.values.data() + begin,
+                   false);
+    }
+    e.matrix.compress(VectorOperation::insert);
+
+    // The inner solve: GMRES + ML on the eliminated matrix, the hierarchy
+    // kept while it keeps working (as for the penalty systems).
+    const IndexSet rows = complete_index_set(e.reduced.n_rows());
+    Vector       inner_x(rows, matrix.get_mpi_communicator()), inner_b(inner_x);
+    unsigned int n_inner = 0;
+    const auto   inner   = [&](double *y, const double *z)
+    {
+      std::copy_n(z, e.reduced.n_rows(), inner_b.trilinos_vector()[0]);
+      inner_x = 0;
+      for (unsigned int attempt = 0; attempt < 2; ++attempt)
+      {
+        if (!e.amg)
+        {
+          e.amg            = make_amg(e.matrix);
+          e.amg_iterations = 0;
+        }
+        const unsigned int  budget = e.amg_iterations > 0 ?
+                                       std::max(20u, 2 * e.amg_iterations) :
+                                       parameters.max_iterations;
+        SolverControl       control(budget,
+                              inner_tolerance * inner_b.l2_norm(),
+                              false,
+                              false);
+        SolverGMRES<Vector> solver(control,
+                                   SolverGMRES<Vector>::AdditionalData(200,
+                                                                       true));
+        try
+        {
+          solver.solve(e.matrix, inner_x, inner_b, *e.amg);
+          n_inner += control.last_step();
+          if (e.amg_iterations == 0)
+            e.amg_iterations = std::max(1u, control.last_step());
+          std::copy_n(inner_x.trilinos_vector()[0], e.reduced.n_rows(), y);
+          return true;
+        }
+        catch (const SolverControl::NoConvergence &failure)
+        {
+          n_inner += failure.last_step;
+          inner_x = 0;
+          if (e.amg_iterations == 0)
+            return false; // a fresh hierarchy failed
+          e.amg.reset();  // rebuild and try again
+        }
+      }
+      return false;
+    };
+
+    // FGMRES on the saddle-point system, preconditioned by the
+    // elimination.
+    const unsigned int n = e.system.n_rows();
+    struct Operator
+    {
+      std::function<void(dealii::Vector<double> &,
+                         const dealii::Vector<double> &)>
+        function;
+      void
+      vmult(dealii::Vector<double> &y, const dealii::Vector<double> &z) const
+      {
+        function(y, z);
+      }
+    };
+    bool           inner_failed = false;
+    const Operator A{
+      [&](dealii::Vector<double> &y, const dealii::Vector<double> &z)
+      {
+        e.system.vmult(z.begin(), y.begin());
+      }};
+    const Operator P{
+      [&](dealii::Vector<double> &y, const dealii::Vector<double> &z)
+      {
+        if (!e.elimination.apply(e.system, z.begin(), y.begin(), inner))
+        {
+          inner_failed = true;
+          y            = z;
+        }
+      }};
+    dealii::Vector<double> solution(n), right_hand_side(n);
+    std::copy_n(rhs.trilinos_vector()[0], n, right_hand_side.begin());
+    const double  relative = std::max(tolerance, parameters.tolerance);
+    SolverControl control(std::min(parameters.max_iterations, 200u),
+                          relative * right_hand_side.l2_norm(),
+                          false,
+                          false);
+    SolverFGMRES<dealii::Vector<double>> outer(
+      control,
+      SolverFGMRES<dealii::Vector<double>>::AdditionalData(200));
+    try
+    {
+      outer.solve(A, solution, right_hand_side, P);
+    }
+    catch (const SolverControl::NoConvergence &failure)
+    {
+      total_iterations += n_inner;
+      throw NonConvergence("FGMRES with the multipliers eliminated did not "
+                           "converge in " +
+                           std::to_string(failure.last_step) + " iterations" +
+                           (inner_failed ? " (GMRES/AMG on the eliminated "
+                                           "system failed)" :
+                                           "") +
+                           "; try Linear solver/Type = direct");
+    }
+    total_iterations += n_inner;
+    total_refinements += control.last_step();
+    std::copy_n(solution.begin(), n, x.trilinos_vector()[0]);
+    last = "FGMRES + eliminated multipliers (GMRES + ML)";
   }
 
 
@@ -159,6 +359,42 @@ namespace tribos
 
 
 
+  std::unique_ptr<TrilinosWrappers::PreconditionAMG>
+  LinearSolver::make_amg(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    // ML with the rigid-body modes as its near-null space (translations and
+    // rotations: an elastic body's energy-free motions), on the matrix's
+    // rows (the displacement rows come first: a system without its
+    // multipliers takes the modes' first entries).
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = higher_order;
+    data.smoother_sweeps       = 2;
+    data.aggregation_threshold = 0.02;
+    Teuchos::ParameterList              list;
+    std::unique_ptr<Epetra_MultiVector> unused;
+    data.set_parameters(list, unused, matrix);
+    std::vector<double> modes;
+    const unsigned int  n_rows = matrix.trilinos_matrix().NumMyRows();
+    if (!null_space.empty())
+    {
+      for (const auto &mode : null_space)
+      {
+        AssertThrow(mode.size() >= n_rows, ExcInternalError());
+        modes.insert(modes.end(), mode.begin(), mode.begin() + n_rows);
+      }
+      list.set("null space: type", "pre-computed");
+      list.set("null space: dimension", int(null_space.size()));
+      list.set("null space: vectors", modes.data());
+    }
+    auto preconditioner = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    preconditioner->initialize(matrix, list);
+    ++n_amg_setups;
+    return preconditioner;
+  }
+
+
+
   void
   LinearSolver::solve_iterative(const TrilinosWrappers::SparseMatrix &matrix,
                                 const unsigned long pattern_version,
@@ -205,29 +441,8 @@ namespace tribos
       }
     }
 
-    // ML with the rigid-body modes as its near-null space (translations and
-    // rotations: an elastic body's energy-free motions).
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.higher_order_elements = higher_order;
-    data.smoother_sweeps       = 2;
-    data.aggregation_threshold = 0.02;
-    Teuchos::ParameterList              list;
-    std::unique_ptr<Epetra_MultiVector> unused;
-    data.set_parameters(list, unused, matrix);
-    std::vector<double> modes;
-    if (!null_space.empty())
-    {
-      for (const auto &mode : null_space)
-        modes.insert(modes.end(), mode.begin(), mode.end());
-      list.set("null space: type", "pre-computed");
-      list.set("null space: dimension", int(null_space.size()));
-      list.set("null space: vectors", modes.data());
-    }
-    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg->initialize(matrix, list);
+    amg         = make_amg(matrix);
     amg_version = pattern_version;
-    ++n_amg_setups;
 
     try
     {

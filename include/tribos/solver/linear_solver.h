@@ -133,6 +133,18 @@ namespace tribos
                  const Vector                         &rhs,
                  const std::string                    &name);
 
+    /** Iterative solve of a system with multipliers (Eliminated). */
+    void
+    solve_iterative_eliminated(const TrilinosWrappers::SparseMatrix &matrix,
+                               const unsigned long pattern_version,
+                               Vector             &x,
+                               const Vector       &rhs,
+                               const double        tolerance);
+
+    /** ML on @p matrix with the near-null space (on its rows). */
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG>
+    make_amg(const TrilinosWrappers::SparseMatrix &matrix);
+
     void
     solve_iterative(const TrilinosWrappers::SparseMatrix &matrix,
                     const unsigned long                   pattern_version,
@@ -162,6 +174,9 @@ namespace tribos
     /** Amesos: the solver, its problem and the pattern it analysed. */
     struct Amesos;
     std::unique_ptr<Amesos> amesos;
+    /** The iterative solve with eliminated multipliers. */
+    struct Eliminated;
+    std::unique_ptr<Eliminated> eliminated;
   };
 } // namespace tribos
 
