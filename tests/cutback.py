@@ -22,11 +22,14 @@ def analytic_force(stretch):
     return neo_hookean_stress(stretch, E, nu, 1)
 
 
-# (1) one nominal step to stretch 0.4 with at most 5 Newton iterations
+# (1) one nominal step to stretch 0.4 with at most 3 Newton iterations
+# (it needs 6; the third leaves a relative residual of 1.7e-5; with 5 the
+# increment converges, as the fifth meets the residual tolerance and
+# gets its confirming solve)
 recover = out + "/recover"
 run(tribos, prm, recover, ["Boundary conditions/Dirichlet=1 : x : -0.6*t",
                            "Time stepping/Number of steps=1",
-                           "Nonlinear solver/Maximum iterations=5"])
+                           "Nonlinear solver/Maximum iterations=3"])
 rows = read_csv(recover + "/history.csv")
 exact = analytic_force(0.4)
 check(rows[-1]["cutbacks"] >= 1 and len(rows) >= 2,
@@ -36,13 +39,13 @@ check(abs(rows[-1]["RF1_x"] - exact) < 1e-8 * abs(exact),
       "after cutbacks the reaction %.10g equals the analytic %.10g"
       % (rows[-1]["RF1_x"], exact))
 # The Newton iterations of the failed attempts are counted too: each cut
-# attempt spent Maximum iterations (5) solves before it was abandoned.
+# attempt spent Maximum iterations (3) solves before it was abandoned.
 accepted = sum(r["newton_iterations"] for r in rows)
 attempts = sum(r["newton_iterations_all"] for r in rows)
 summary = open(recover + "/summary.txt").read()
 reported = {key: int(value) for key, value in re.findall(
     r"^(newton iterations(?: \(all attempts\))?)\s+(\d+)$", summary, re.M)}
-check(attempts == accepted + 5 * rows[-1]["cutbacks"] and
+check(attempts == accepted + 3 * rows[-1]["cutbacks"] and
       reported == {"newton iterations": accepted,
                    "newton iterations (all attempts)": attempts},
       "iterations: %d accepted, %d with the %d failed attempts, in "

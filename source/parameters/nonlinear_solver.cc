@@ -12,7 +12,9 @@ namespace tribos
                         "20",
                         dealii::Patterns::Integer(1),
                         "Newton iterations allowed per increment before the "
-                        "increment is cut back.");
+                        "increment is cut back (an iterate whose residual "
+                        "meets its tolerance still gets up to two solves "
+                        "that confirm its update).");
       prm.declare_entry("Residual tolerance",
                         "1e-8",
                         dealii::Patterns::Double(0),
