@@ -12,7 +12,16 @@ beside them for the Lagrange / penalty ratio of issue 16.
 
 Per case and variant: Newton iterations, median wall time, linear solve
 time and ms per solve, the solver the log names, and the largest relative
-difference of the final contact force (history.csv) to the LU run's."""
+difference of the final contact force (history.csv) to the LU run's.
+
+    python3 benchmarks/multiplier_elimination.py --iterative
+        [--out doc/data/multiplier_iterative.csv]
+
+runs instead the 3D Hertz with multipliers and Linear solver/Type =
+iterative (FGMRES preconditioned by the elimination, GMRES + ML inside) at
+Contact refinements 3, 4 and 5, once each: unknowns, Newton iterations,
+FGMRES iterations (summary.txt's refinement steps), inner GMRES
+iterations, AMG setups, wall time, peak memory."""
 
 import argparse
 import csv
@@ -65,7 +74,14 @@ def main():
     parser.add_argument("--out", default=os.path.join(
         ROOT, "doc", "data", "multiplier_elimination.csv"))
     parser.add_argument("--only", nargs="*", default=[])
+    parser.add_argument("--iterative", action="store_true")
     args = parser.parse_args()
+    if args.iterative:
+        if args.out.endswith("multiplier_elimination.csv"):
+            args.out = args.out.replace("multiplier_elimination.csv",
+                                        "multiplier_iterative.csv")
+        iterative(args)
+        return
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for name, (prm, sets) in CASES:
@@ -127,6 +143,53 @@ def main():
             for r in rows:
                 writer.writerow({k: ("%.4g" % v if isinstance(v, float)
                                      else v) for k, v in r.items()})
+
+
+def iterative(args):
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        for level in (3, 4, 5):
+            prm, sets = hertz3d(level, 0.005)
+            folder = os.path.join(work, "L%d" % level)
+            w, rss = run_once(args.tribos, prm, list(sets) + [
+                LAGRANGE, "Linear solver/Type=iterative"], folder)
+            sections, values = summary(folder)
+            counters = {}
+            with open(os.path.join(folder, "summary.txt")) as f:
+                for line in f:
+                    for key in ("linear iterations", "AMG setups",
+                                "refinement steps"):
+                        if line.startswith(key):
+                            counters[key] = int(line.split()[-1])
+            calls, solve = sections.get("linear solve", (0, 0.0))
+            newton = values.get("newton iterations (all attempts)", 0)
+            row = {
+                "level": level, "dofs": values.get("dofs", 0),
+                "multipliers": values.get("multipliers", 0),
+                "newton_iterations": newton,
+                "fgmres_iterations": counters.get("refinement steps", 0),
+                "gmres_iterations": counters.get("linear iterations", 0),
+                "amg_setups": counters.get("AMG setups", 0),
+                "wall": w, "t_linear_solve": solve,
+                "s_per_solve": solve / max(calls, 1),
+                "peak_rss_mb": rss,
+                "solver": values.get("linear solver", ""),
+            }
+            rows.append(row)
+            print("L%d %7d dofs + %5d multipliers: %2d Newton, %.1f FGMRES "
+                  "and %.1f GMRES iterations per solve, %d AMG setups, "
+                  "%.1f s (%.2f s per solve), %.0f MB  [%s]" % (
+                      level, row["dofs"], row["multipliers"], newton,
+                      row["fgmres_iterations"] / max(newton, 1),
+                      row["gmres_iterations"] / max(newton, 1),
+                      row["amg_setups"], w, row["s_per_solve"], rss,
+                      row["solver"]), flush=True)
+    with open(args.out, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        for r in rows:
+            writer.writerow({k: ("%.4g" % v if isinstance(v, float) else v)
+                             for k, v in r.items()})
 
 
 if __name__ == "__main__":
