@@ -23,12 +23,15 @@ namespace tribos
    * otherwise):
    *
    * - direct: on one process SuiteSparse (CHOLMOD for symmetric positive
-   *   definite matrices, UMFPACK otherwise: SparseDirect), under MPI
-   *   Trilinos Amesos (MUMPS by default); either way the symbolic
-   *   factorization is computed once per sparsity pattern and reused;
+   *   definite matrices, UMFPACK otherwise, contact multipliers eliminated
+   *   for CHOLMOD where that applies: SparseDirect), under MPI Trilinos
+   *   Amesos (MUMPS by default); either way the symbolic factorization is
+   *   computed once per sparsity pattern and reused;
    * - iterative: GMRES preconditioned by ML algebraic multigrid with the
    *   near-null space it is given (the rigid-body modes), the tolerance
-   *   given by the Newton solver (inexact Newton).
+   *   given by the Newton solver (inexact Newton); with multipliers (one
+   *   process) FGMRES on the whole system, preconditioned by their
+   *   elimination (MultiplierElimination) with GMRES + ML inside.
    *
    * A failure (singular matrix, GMRES without convergence) throws
    * NonConvergence, which cuts the increment.
