@@ -43,13 +43,15 @@ namespace tribos
       /**
        * Whether a system of @p n unknowns in @p dim dimensions is solved
        * iteratively: Type = iterative, or auto for a 3D system above
-       * Iterative above without multipliers (@p saddle_point: a saddle
-       * point system needs a pivoting direct solver).
+       * Iterative above, with multipliers (@p saddle_point) only on one
+       * process (@p serial: the iterative solve with multipliers
+       * eliminates them on one process).
        */
       bool
       iterative_for(const unsigned int  dim,
                     const unsigned long n,
-                    const bool          saddle_point) const;
+                    const bool          saddle_point,
+                    const bool          serial) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -19,8 +19,8 @@ namespace tribos
 
   /**
    * The linear solve of a Newton iteration, chosen by Linear solver (Type
-   * = auto: iterative for large 3D systems without multipliers, direct
-   * otherwise):
+   * = auto: iterative for large 3D systems, with multipliers on one
+   * process only, direct otherwise):
    *
    * - direct: on one process SuiteSparse (CHOLMOD for symmetric positive
    *   definite matrices, UMFPACK otherwise, contact multipliers eliminated
@@ -125,7 +125,11 @@ namespace tribos
     bool
     iterative(const TrilinosWrappers::SparseMatrix &matrix) const
     {
-      return parameters.iterative_for(dim, matrix.m(), saddle_point);
+      return parameters.iterative_for(dim,
+                                      matrix.m(),
+                                      saddle_point,
+                                      Utilities::MPI::n_mpi_processes(
+                                        matrix.get_mpi_communicator()) == 1);
     }
 
   private:
