@@ -43,8 +43,7 @@ namespace tribos
     CompressedRows                 system, reduced;
     MultiplierElimination          elimination;
     TrilinosWrappers::SparseMatrix matrix;
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-    unsigned int                                       amg_iterations = 0;
+    Hierarchy                      hierarchy;
   };
 
 
@@ -180,7 +179,7 @@ namespace tribos
                       complete_index_set(e.reduced.n_rows()),
                       pattern,
                       matrix.get_mpi_communicator());
-      e.amg.reset();
+      e.hierarchy.amg.reset();
       e.version = pattern_version;
     }
     e.elimination.eliminate(e.system, alpha, e.reduced);
@@ -199,51 +198,27 @@ namespace tribos
     }
     e.matrix.compress(VectorOperation::insert);
 
-    // The inner solve: GMRES + ML on the eliminated matrix, the hierarchy
-    // kept while it keeps working (as for the penalty systems).
+    // The inner solve: GMRES + ML on the eliminated matrix (solve_with_amg).
     const IndexSet rows = complete_index_set(e.reduced.n_rows());
-    Vector       inner_x(rows, matrix.get_mpi_communicator()), inner_b(inner_x);
-    unsigned int n_inner = 0;
-    const auto   inner   = [&](double *y, const double *z)
+    Vector     inner_x(rows, matrix.get_mpi_communicator()), inner_b(inner_x);
+    const auto inner = [&](double *y, const double *z)
     {
       std::copy_n(z, e.reduced.n_rows(), inner_b.trilinos_vector()[0]);
       inner_x = 0;
-      for (unsigned int attempt = 0; attempt < 2; ++attempt)
+      try
       {
-        if (!e.amg)
-        {
-          e.amg            = make_amg(e.matrix);
-          e.amg_iterations = 0;
-        }
-        const unsigned int  budget = e.amg_iterations > 0 ?
-                                       std::max(20u, 2 * e.amg_iterations) :
-                                       parameters.max_iterations;
-        SolverControl       control(budget,
-                              inner_tolerance * inner_b.l2_norm(),
-                              false,
-                              false);
-        SolverGMRES<Vector> solver(control,
-                                   SolverGMRES<Vector>::AdditionalData(200,
-                                                                       true));
-        try
-        {
-          solver.solve(e.matrix, inner_x, inner_b, *e.amg);
-          n_inner += control.last_step();
-          if (e.amg_iterations == 0)
-            e.amg_iterations = std::max(1u, control.last_step());
-          std::copy_n(inner_x.trilinos_vector()[0], e.reduced.n_rows(), y);
-          return true;
-        }
-        catch (const SolverControl::NoConvergence &failure)
-        {
-          n_inner += failure.last_step;
-          inner_x = 0;
-          if (e.amg_iterations == 0)
-            return false; // a fresh hierarchy failed
-          e.amg.reset();  // rebuild and try again
-        }
+        solve_with_amg(e.matrix,
+                       e.hierarchy,
+                       inner_x,
+                       inner_b,
+                       inner_tolerance);
       }
-      return false;
+      catch (const SolverControl::NoConvergence &)
+      {
+        return false;
+      }
+      std::copy_n(inner_x.trilinos_vector()[0], e.reduced.n_rows(), y);
+      return true;
     };
 
     // FGMRES on the saddle-point system, preconditioned by the
@@ -291,7 +266,6 @@ namespace tribos
     }
     catch (const SolverControl::NoConvergence &failure)
     {
-      total_iterations += n_inner;
       throw NonConvergence("FGMRES with the multipliers eliminated did not "
                            "converge in " +
                            std::to_string(failure.last_step) + " iterations" +
@@ -300,7 +274,6 @@ namespace tribos
                                            "") +
                            "; try Linear solver/Type = direct");
     }
-    total_iterations += n_inner;
     total_refinements += control.last_step();
     std::copy_n(solution.begin(), n, x.trilinos_vector()[0]);
     last = "FGMRES + eliminated multipliers (GMRES + ML)";
@@ -312,7 +285,7 @@ namespace tribos
   LinearSolver::release_matrix()
   {
     amesos.reset();
-    amg.reset();
+    hierarchy.amg.reset();
   }
 
 
@@ -396,13 +369,12 @@ namespace tribos
 
 
   void
-  LinearSolver::solve_iterative(const TrilinosWrappers::SparseMatrix &matrix,
-                                const unsigned long pattern_version,
-                                Vector             &x,
-                                const Vector       &rhs,
-                                const double        tolerance)
+  LinearSolver::solve_with_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                               Hierarchy                            &h,
+                               Vector                               &x,
+                               const Vector                         &rhs,
+                               const double                          relative)
   {
-    const double relative = std::max(tolerance, parameters.tolerance);
     // Right preconditioning: GMRES then measures the true residual
     // |rhs - A x|, which the tolerance (relative to |rhs|, from inexact
     // Newton) is about; left preconditioning measures the AMG-scaled one,
@@ -413,7 +385,16 @@ namespace tribos
       SolverGMRES<Vector> solver(control,
                                  SolverGMRES<Vector>::AdditionalData(200,
                                                                      true));
-      solver.solve(matrix, x, rhs, *amg);
+      try
+      {
+        solver.solve(matrix, x, rhs, *h.amg);
+      }
+      catch (const SolverControl::NoConvergence &e)
+      {
+        total_iterations += e.last_step;
+        throw;
+      }
+      total_iterations += control.last_step();
       return control.last_step();
     };
 
@@ -421,37 +402,57 @@ namespace tribos
     // the next Newton matrix nearly as well (its finest level, the smoother,
     // sees the current values): it is kept while the solves stay within
     // twice the iterations of its first solve (at least 20), and rebuilt
-    // when a solve needs more or the pattern changes. ML's setup costs
-    // several GMRES solves of the inexact Newton tolerances.
-    if (amg && amg_version == pattern_version)
+    // when a solve needs more. ML's setup costs several GMRES solves of the
+    // inexact Newton tolerances.
+    if (h.amg)
     {
-      const unsigned int budget = std::max(20u, 2 * amg_iterations);
-      const Vector       start  = x;
+      const Vector start = x;
       try
       {
-        const unsigned int n = gmres(budget);
-        total_iterations += n;
-        last = "GMRES + ML";
+        gmres(std::max(20u, 2 * h.iterations));
         return;
       }
-      catch (const SolverControl::NoConvergence &e)
+      catch (const SolverControl::NoConvergence &)
       {
-        total_iterations += e.last_step;
         x = start;
       }
     }
-
-    amg         = make_amg(matrix);
-    amg_version = pattern_version;
-
+    h.amg = make_amg(matrix);
     try
     {
-      amg_iterations = gmres(parameters.max_iterations);
-      total_iterations += amg_iterations;
+      h.iterations = gmres(parameters.max_iterations);
+    }
+    catch (const SolverControl::NoConvergence &)
+    {
+      h.amg.reset();
+      throw;
+    }
+  }
+
+
+
+  void
+  LinearSolver::solve_iterative(const TrilinosWrappers::SparseMatrix &matrix,
+                                const unsigned long pattern_version,
+                                Vector             &x,
+                                const Vector       &rhs,
+                                const double        tolerance)
+  {
+    if (hierarchy.version != pattern_version)
+    {
+      hierarchy.amg.reset();
+      hierarchy.version = pattern_version;
+    }
+    try
+    {
+      solve_with_amg(matrix,
+                     hierarchy,
+                     x,
+                     rhs,
+                     std::max(tolerance, parameters.tolerance));
     }
     catch (const SolverControl::NoConvergence &e)
     {
-      amg.reset();
       throw NonConvergence("GMRES/AMG did not converge in " +
                            std::to_string(e.last_step) +
                            " iterations (Linear solver/Maximum "

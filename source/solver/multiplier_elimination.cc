@@ -124,7 +124,7 @@ namespace tribos
     }
     residual.resize(n);
     correction.resize(n);
-    right_hand_side.resize(m0);
+    right_hand_side.resize(m0); // apply()'s
     return true;
   }
 
@@ -303,11 +303,8 @@ namespace tribos
   {
     const int n   = A.n_rows();
     n_refinements = 0;
-    residual.resize(n);
-    correction.resize(n);
-    right_hand_side.resize(first);
-    auto &res = residual;
-    auto &dx  = correction;
+    auto &res     = residual;
+    auto &dx      = correction;
     std::copy_n(b, n, res.begin());
     std::fill_n(x, n, 0.);
     double norm_b = 0;

@@ -220,10 +220,9 @@ namespace tribos
     auto            &e         = *elimination;
     auto            &r         = e.reduced;
     e.elimination.eliminate(system, alpha, r.system);
-    if (!r.system.symmetric())
-      return Outcome::not_definite;
-    // Only Cholesky pays: where it fails (a body still free in the first
-    // iterate) LU of the whole system is as cheap as LU of this one.
+    // Only Cholesky pays: where the eliminated matrix is unsymmetric or
+    // Cholesky fails (a body still free in the first iterate) LU of the
+    // whole system is as cheap as LU of this one.
     if (!r.factorize(false))
       return Outcome::not_definite;
     const auto solve = [&](double *y, const double *z)

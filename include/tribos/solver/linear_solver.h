@@ -133,6 +133,15 @@ namespace tribos
     }
 
   private:
+    /** An AMG hierarchy, the pattern it was built for and the iterations
+     * of its first solve. */
+    struct Hierarchy
+    {
+      std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+      unsigned long version    = static_cast<unsigned long>(-1);
+      unsigned int  iterations = 0;
+    };
+
     void
     solve_amesos(const TrilinosWrappers::SparseMatrix &matrix,
                  const unsigned long                   pattern_version,
@@ -147,6 +156,19 @@ namespace tribos
                                Vector             &x,
                                const Vector       &rhs,
                                const double        tolerance);
+
+    /**
+     * GMRES with the AMG hierarchy @p h on @p matrix to @p relative |rhs|:
+     * @p h is kept while its solves stay within twice the iterations of
+     * its first one (at least 20), rebuilt when one needs more or it has
+     * none. Throws SolverControl::NoConvergence if a new hierarchy fails.
+     */
+    void
+    solve_with_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                   Hierarchy                            &h,
+                   Vector                               &x,
+                   const Vector                         &rhs,
+                   const double                          relative);
 
     /** ML on @p matrix with the near-null space (on its rows). */
     std::unique_ptr<TrilinosWrappers::PreconditionAMG>
@@ -164,19 +186,16 @@ namespace tribos
     const bool                      saddle_point;
     unsigned long                   total_iterations  = 0;
     unsigned long                   total_refinements = 0;
-    /** The AMG preconditioner, the pattern it was built for and the
-     * iterations of its first solve. */
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-    unsigned long                                      amg_version    = 0;
-    unsigned int                                       amg_iterations = 0;
-    unsigned long                                      n_amg_setups   = 0;
-    std::vector<std::vector<double>>                   null_space;
-    bool                                               higher_order = false;
-    TimerOutput                                       *timer        = nullptr;
-    std::unique_ptr<SparseDirect>                      suitesparse;
-    types::global_dof_index                            first_multiplier = 0;
-    unsigned int                                       multiplier_block = 0;
-    std::string                                        last;
+    /** The hierarchy of the systems without multipliers. */
+    Hierarchy                        hierarchy;
+    unsigned long                    n_amg_setups = 0;
+    std::vector<std::vector<double>> null_space;
+    bool                             higher_order = false;
+    TimerOutput                     *timer        = nullptr;
+    std::unique_ptr<SparseDirect>    suitesparse;
+    types::global_dof_index          first_multiplier = 0;
+    unsigned int                     multiplier_block = 0;
+    std::string                      last;
 
     /** Amesos: the solver, its problem and the pattern it analysed. */
     struct Amesos;
