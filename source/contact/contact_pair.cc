@@ -1,6 +1,8 @@
 #include <tribos/base/exceptions.h>
+#include <tribos/base/import_constraints.h>
 #include <tribos/contact/contact_pair.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 
@@ -70,13 +72,13 @@ namespace tribos
             other.description.master_boundary !=
               pair.description.master_boundary)
           continue;
-        std::map<unsigned int, unsigned int> other_node_of_vertex;
+        std::map<types::global_dof_index, unsigned int> other_node_of_dof;
         for (unsigned int j = 0; j < other.slave->nodes().size(); ++j)
-          other_node_of_vertex[other.slave->nodes()[j].vertex] = j;
+          other_node_of_dof[other.slave->nodes()[j].dofs[0]] = j;
         for (unsigned int k = 0; k < n_slaves; ++k)
         {
-          const auto j = other_node_of_vertex.find(nodes[k].vertex);
-          if (j == other_node_of_vertex.end() || pair.excluded[k])
+          const auto j = other_node_of_dof.find(nodes[k].dofs[0]);
+          if (j == other_node_of_dof.end() || pair.excluded[k])
             continue;
           pair.excluded[k] = true;
           if (!other.excluded[j->second])
@@ -168,6 +170,9 @@ namespace tribos
          dof_handler.get_triangulation().active_face_iterators())
       if (face->at_boundary())
         existing.insert(face->boundary_id());
+    existing = Utilities::MPI::compute_set_union(
+      existing,
+      dof_handler.get_triangulation().get_communicator());
 
     // Surfaces are shared between pairs (and passes).
     std::map<std::set<types::boundary_id>, std::shared_ptr<ContactSurface<dim>>>
@@ -208,8 +213,33 @@ namespace tribos
           descriptions.push_back(swapped);
         }
 
-    AffineConstraints<double> hanging;
+    // Every surface first (each is gathered from all processes, in the
+    // same order everywhere).
+    for (const auto &description : descriptions)
+    {
+      surface(description.slave_boundary);
+      if (description.rigid_surface.empty())
+        surface(description.master_boundary);
+    }
+
+    // The hanging slave nodes of every process (their cells may be
+    // elsewhere on a distributed mesh).
+    IndexSet surface_dofs(dof_handler.n_dofs());
+    for (const auto &[ids, s] : surfaces)
+      for (const auto &node : s->nodes())
+        for (const auto dof : node.dofs)
+          surface_dofs.add_index(dof);
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    relevant.add_indices(surface_dofs);
+    AffineConstraints<double> hanging(relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, hanging);
+    import_constraints(hanging,
+                       Utilities::MPI::all_gather(
+                         dof_handler.get_triangulation().get_communicator(),
+                         locally_owned_dofs),
+                       relevant,
+                       dof_handler.get_triangulation().get_communicator());
     hanging.close();
 
     std::vector<ContactPair<dim>> pairs;
@@ -291,11 +321,7 @@ namespace tribos
       pairs.push_back(std::move(pair));
     }
 
-    contact_dofs = IndexSet(dof_handler.n_dofs());
-    for (const auto &[ids, s] : surfaces)
-      for (const auto &node : s->nodes())
-        for (const auto dof : node.dofs)
-          contact_dofs.add_index(dof);
+    contact_dofs = surface_dofs;
     contact_dofs.compress();
     return pairs;
   }

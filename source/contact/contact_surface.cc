@@ -1,7 +1,10 @@
 #include <tribos/contact/contact_surface.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/cell_id.h>
 
+#include <algorithm>
 #include <map>
 
 namespace tribos
@@ -13,63 +16,93 @@ namespace tribos
     const bool                          axisymmetric)
     : ids(boundary_ids)
   {
-    std::map<unsigned int, unsigned int> node_of_vertex;
-
+    // Each process orients the faces of its own cells (the normal of
+    // MasterFace must point out of the cell) and every process gathers all
+    // of them, in the order of their cells (CellId, the same whatever the
+    // partition): the surface is small against the mesh, and the search
+    // needs every master face.
+    std::vector<FaceRecord> own;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-      {
-        const auto face = cell->face(f);
-        if (!face->at_boundary() || ids.count(face->boundary_id()) == 0)
-          continue;
-
-        Face contact_face;
-        contact_face.body = cell->material_id();
-        body_ids.insert(cell->material_id());
-        std::array<unsigned int, n_face_nodes> order;
-        for (unsigned int v = 0; v < n_face_nodes; ++v)
-          order[v] = v;
-
-        // Orient: the MasterFace normal must point out of the cell.
-        Vec3<double> x[4];
-        for (unsigned int v = 0; v < n_face_nodes; ++v)
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
         {
-          x[v] = {{0, 0, 0}};
-          for (unsigned int d = 0; d < dim; ++d)
-            x[v][d] = face->vertex(v)[d];
-        }
-        Vec3<double> xbar, a[2], normal, outward{{0, 0, 0}};
-        const double xi[2] = {0, 0};
-        MasterFace<dim>::geometry(x, xi, xbar, a, normal);
-        for (unsigned int d = 0; d < dim; ++d)
-          outward[d] = face->center()[d] - cell->center()[d];
-        if (dot(normal, outward) < 0)
-        {
-          if (dim == 2)
-            std::swap(order[0], order[1]);
-          else
-            std::swap(order[1], order[2]);
-        }
+          const auto face = cell->face(f);
+          if (!face->at_boundary() || ids.count(face->boundary_id()) == 0)
+            continue;
 
-        for (unsigned int v = 0; v < n_face_nodes; ++v)
-        {
-          const unsigned int vertex = face->vertex_index(order[v]);
-          auto               it     = node_of_vertex.find(vertex);
-          if (it == node_of_vertex.end())
+          std::array<unsigned int, n_face_nodes> order;
+          for (unsigned int v = 0; v < n_face_nodes; ++v)
+            order[v] = v;
+          Vec3<double> x[4];
+          for (unsigned int v = 0; v < n_face_nodes; ++v)
           {
-            Node node;
-            node.vertex = vertex;
+            x[v] = {{0, 0, 0}};
+            for (unsigned int d = 0; d < dim; ++d)
+              x[v][d] = face->vertex(v)[d];
+          }
+          Vec3<double> xbar, a[2], normal, outward{{0, 0, 0}};
+          const double xi[2] = {0, 0};
+          MasterFace<dim>::geometry(x, xi, xbar, a, normal);
+          for (unsigned int d = 0; d < dim; ++d)
+            outward[d] = face->center()[d] - cell->center()[d];
+          if (dot(normal, outward) < 0)
+          {
+            if (dim == 2)
+              std::swap(order[0], order[1]);
+            else
+              std::swap(order[1], order[2]);
+          }
+
+          FaceRecord record;
+          record.cell = cell->id().template to_binary<dim>();
+          record.face = f;
+          record.body = cell->material_id();
+          for (unsigned int v = 0; v < n_face_nodes; ++v)
             for (unsigned int d = 0; d < dim; ++d)
             {
-              node.dofs[d]      = face->vertex_dof_index(order[v], d);
-              node.reference[d] = face->vertex(order[v])[d];
+              record.dofs[v * dim + d] = face->vertex_dof_index(order[v], d);
+              record.x[v * dim + d]    = face->vertex(order[v])[d];
             }
-            it = node_of_vertex.emplace(vertex, node_list.size()).first;
-            node_list.push_back(node);
-          }
-          contact_face.nodes[v] = it->second;
+          own.push_back(record);
         }
-        face_list.push_back(contact_face);
+    std::vector<FaceRecord> records;
+    for (auto &part : Utilities::MPI::all_gather(
+           dof_handler.get_triangulation().get_communicator(),
+           own))
+      records.insert(records.end(), part.begin(), part.end());
+    std::sort(records.begin(),
+              records.end(),
+              [](const FaceRecord &a, const FaceRecord &b)
+              {
+                const CellId ca(a.cell), cb(b.cell);
+                return ca < cb || (ca == cb && a.face < b.face);
+              });
+
+    // A node is its vertex's dofs (the first one names it).
+    std::map<types::global_dof_index, unsigned int> node_of_dof;
+    for (const auto &record : records)
+    {
+      Face contact_face;
+      contact_face.body = record.body;
+      body_ids.insert(record.body);
+      for (unsigned int v = 0; v < n_face_nodes; ++v)
+      {
+        auto it = node_of_dof.find(record.dofs[v * dim]);
+        if (it == node_of_dof.end())
+        {
+          Node node;
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            node.dofs[d]      = record.dofs[v * dim + d];
+            node.reference[d] = record.x[v * dim + d];
+          }
+          it = node_of_dof.emplace(node.dofs[0], node_list.size()).first;
+          node_list.push_back(node);
+        }
+        contact_face.nodes[v] = it->second;
       }
+      face_list.push_back(contact_face);
+    }
 
     // Adjacency and tributary areas.
     const QGauss<dim - 1> quadrature(2);

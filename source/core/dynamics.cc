@@ -95,9 +95,7 @@ namespace tribos
         functions;
       for (const auto &v : ts.initial_velocities)
       {
-        AssertThrow(v.body_id < materials.size() &&
-                      std::count(dof_body.begin(), dof_body.end(), v.body_id) >
-                        0,
+        AssertThrow(body_ids.count(v.body_id) == 1,
                     ExcMessage("Parameter <Time stepping/Initial velocity> "
                                "names body " +
                                std::to_string(v.body_id) +

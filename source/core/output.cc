@@ -1,6 +1,8 @@
 #include <tribos/core/problem.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
@@ -89,8 +91,8 @@ namespace tribos
       columns.push_back("error_L2");
       columns.push_back("error_H1");
     }
-    // Probes: the vertex nearest to each point (every process sees the
-    // whole mesh of the shared triangulation, so all find the same one).
+    // Probes: the vertex nearest to each point (of the process whose own
+    // cells hold the nearest; the first such process on a tie).
     probe_dofs.clear();
     for (unsigned int k = 0; k < parameters.output.probes.size(); ++k)
     {
@@ -105,14 +107,17 @@ namespace tribos
       double                                   best = 1e300;
       std::array<types::global_dof_index, dim> dofs{};
       for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const auto v : cell->vertex_indices())
-          if (cell->vertex(v).distance(point) < best)
-          {
-            best = cell->vertex(v).distance(point);
-            for (unsigned int d = 0; d < dim; ++d)
-              dofs[d] = cell->vertex_dof_index(v, d);
-          }
-      probe_dofs.push_back(dofs);
+        if (cell->is_locally_owned())
+          for (const auto v : cell->vertex_indices())
+            if (cell->vertex(v).distance(point) < best)
+            {
+              best = cell->vertex(v).distance(point);
+              for (unsigned int d = 0; d < dim; ++d)
+                dofs[d] = cell->vertex_dof_index(v, d);
+            }
+      const auto nearest = Utilities::MPI::min_max_avg(best, mpi_communicator);
+      probe_dofs.push_back(
+        Utilities::MPI::broadcast(mpi_communicator, dofs, nearest.min_index));
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back("probe" + std::to_string(k) + "_u" + axis[d]);
     }
@@ -406,11 +411,11 @@ namespace tribos
     data_out.add_data_vector(body_id, "body_id");
     // Contact fields at the slave nodes, under the names Abaqus and
     // CalculiX users know: scalars on a Q1 numbering, CSHEAR as a vector.
-    FE_Q<dim>                             node_fe(1);
-    DoFHandler<dim>                       node_dof_handler(triangulation);
-    std::array<dealii::Vector<double>, 4> contact_scalars;
-    dealii::Vector<double>                contact_shear;
-    Vector                                contact_force;
+    FE_Q<dim>       node_fe(1);
+    DoFHandler<dim> node_dof_handler(triangulation);
+    std::array<TrilinosWrappers::MPI::Vector, 4> contact_scalars;
+    Vector                                       contact_shear;
+    Vector                                       contact_force;
     if (contact)
     {
       // The contact force on every node (slave and master), the nodal
@@ -428,18 +433,36 @@ namespace tribos
                                DataOut<dim>::type_dof_data,
                                interpretation);
       node_dof_handler.distribute_dofs(node_fe);
-      std::vector<types::global_dof_index> vertex_to_dof(
-        triangulation.n_vertices(),
-        numbers::invalid_dof_index);
-      for (const auto &cell : node_dof_handler.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          vertex_to_dof[cell->vertex_index(v)] = cell->vertex_dof_index(v, 0);
+      std::map<types::global_dof_index, types::global_dof_index> scalar_dof;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+        {
+          const typename DoFHandler<dim>::active_cell_iterator node_cell(
+            &triangulation,
+            cell->level(),
+            cell->index(),
+            &node_dof_handler);
+          for (const unsigned int v : cell->vertex_indices())
+            scalar_dof[cell->vertex_dof_index(v, 0)] =
+              node_cell->vertex_dof_index(v, 0);
+        }
+      const IndexSet node_owned = node_dof_handler.locally_owned_dofs();
+      IndexSet       node_relevant;
+      DoFTools::extract_locally_relevant_dofs(node_dof_handler, node_relevant);
       for (auto &v : contact_scalars)
-        v.reinit(node_dof_handler.n_dofs());
-      contact_shear.reinit(dof_handler.n_dofs());
-      contact_output->nodal_fields(vertex_to_dof,
-                                   contact_scalars,
-                                   contact_shear);
+        v.reinit(node_owned, mpi_communicator);
+      owned = 0;
+      contact_output->nodal_fields(scalar_dof, contact_scalars, owned);
+      contact_shear.reinit(locally_owned_dofs,
+                           locally_relevant_dofs,
+                           mpi_communicator);
+      contact_shear = owned;
+      for (auto &v : contact_scalars)
+      {
+        Vector ghosted(node_owned, node_relevant, mpi_communicator);
+        ghosted = v;
+        v.swap(ghosted);
+      }
       const char *names[4] = {"CPRESS", "COPEN", "CSLIP", "CSTATUS"};
       for (unsigned int i = 0; i < 4; ++i)
         data_out.add_data_vector(node_dof_handler,
@@ -538,7 +561,8 @@ namespace tribos
         out << "status            " << status << '\n'
             << "dimension         " << dim << '\n'
             << "scene             " << parameters.scene.name << '\n'
-            << "cells             " << triangulation.n_active_cells() << '\n'
+            << "cells             " << triangulation.n_global_active_cells()
+            << '\n'
             << "dofs              " << dof_handler.n_dofs() << '\n'
             << "contact dofs      "
             << (contact ? contact->contact_dofs().n_elements() : 0) << '\n'

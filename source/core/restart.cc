@@ -1,37 +1,75 @@
 /**
  * Checkpoints and restarts: the converged state written per active cell and
  * per slave node, so that a run can go on from it with another number of
- * MPI processes (the mesh is the same: every process builds it from the
- * parameter file).
+ * MPI processes and either Parallel/Mesh (the mesh is the same: it is
+ * built from the parameter file; cells are named by their CellId, which
+ * no partition changes).
  */
 
 #include <tribos/core/problem.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/grid/cell_id.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace tribos
 {
+  namespace
+  {
+    using CellKey = std::array<unsigned int, 4>;
+
+    /** CellId order on the binary form. */
+    bool
+    cell_less(const CellKey &a, const CellKey &b)
+    {
+      return CellId(a) < CellId(b);
+    }
+
+    /** Gather the records of every process on rank 0, in CellId order
+     * (empty elsewhere). */
+    template <typename T>
+    std::vector<std::pair<CellKey, T>>
+    gather_by_cell(const std::vector<std::pair<CellKey, T>> &mine,
+                   const MPI_Comm                            communicator)
+    {
+      std::vector<std::pair<CellKey, T>> all;
+      for (auto &part : Utilities::MPI::gather(communicator, mine))
+        all.insert(all.end(), part.begin(), part.end());
+      std::sort(all.begin(),
+                all.end(),
+                [](const auto &a, const auto &b)
+                { return cell_less(a.first, b.first); });
+      return all;
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::vector<double>
   Problem<dim>::cell_values(const Vector &v) const
   {
-    // Every value on every process (the mesh is shared anyway).
-    Vector replicated(locally_owned_dofs,
-                      complete_index_set(dof_handler.n_dofs()),
-                      mpi_communicator);
-    replicated                             = v;
+    Vector ghosted(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    ghosted                                = v;
     const unsigned int                   n = fe->n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<double> values(triangulation.n_active_cells() * n);
+    std::vector<std::pair<CellKey, std::vector<double>>> mine;
     for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      for (unsigned int i = 0; i < n; ++i)
-        values[cell->active_cell_index() * n + i] = replicated[dofs[i]];
-    }
+      if (cell->is_locally_owned())
+      {
+        cell->get_dof_indices(dofs);
+        std::vector<double> values(n);
+        for (unsigned int i = 0; i < n; ++i)
+          values[i] = ghosted[dofs[i]];
+        mine.emplace_back(cell->id().template to_binary<dim>(), values);
+      }
+    std::vector<double> values;
+    for (const auto &[cell, cell_values] :
+         gather_by_cell(mine, mpi_communicator))
+      values.insert(values.end(), cell_values.begin(), cell_values.end());
     return values;
   }
 
@@ -42,17 +80,28 @@ namespace tribos
   Problem<dim>::set_from_cell_values(const std::vector<double> &values,
                                      Vector                    &v) const
   {
-    const unsigned int                   n = fe->n_dofs_per_cell();
+    const auto                          &cells = restart->cells;
+    const unsigned int                   n     = fe->n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
-    AssertThrow(values.size() == triangulation.n_active_cells() * n,
+    AssertThrow(values.size() == cells.size() * n,
                 ExcMessage("The checkpoint's vector does not fit the mesh."));
     for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      for (unsigned int i = 0; i < n; ++i)
-        if (locally_owned_dofs.is_element(dofs[i]))
-          v[dofs[i]] = values[cell->active_cell_index() * n + i];
-    }
+      if (cell->is_locally_owned())
+      {
+        const CellKey key = cell->id().template to_binary<dim>();
+        const auto    it =
+          std::lower_bound(cells.begin(), cells.end(), key, cell_less);
+        AssertThrow(it != cells.end() && *it == key,
+                    ExcMessage("--restart <" + parameters.restart_directory +
+                               ">: the checkpoint's mesh is not this run's "
+                               "(cell " +
+                               cell->id().to_string() + " is missing)."));
+        const std::size_t position = it - cells.begin();
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          if (locally_owned_dofs.is_element(dofs[i]))
+            v[dofs[i]] = values[position * n + i];
+      }
     v.compress(VectorOperation::insert);
   }
 
@@ -65,7 +114,7 @@ namespace tribos
     TimerOutput::Scope t(timer, "output");
     Checkpoint         c;
     c.dimension      = dim;
-    c.n_active_cells = triangulation.n_active_cells();
+    c.n_active_cells = triangulation.n_global_active_cells();
     c.dofs_per_cell  = fe->n_dofs_per_cell();
     c.n_dofs         = dof_handler.n_dofs();
     c.n_multipliers  = n_multipliers;
@@ -79,12 +128,20 @@ namespace tribos
     for (const auto i : locally_owned_dofs)
       owned[i] = owned_solution[i];
     owned.compress(VectorOperation::insert);
+    {
+      std::vector<std::pair<CellKey, bool>> mine;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          mine.emplace_back(cell->id().template to_binary<dim>(), true);
+      for (const auto &[cell, unused] : gather_by_cell(mine, mpi_communicator))
+        c.cells.push_back(cell);
+    }
     c.cell_values["solution"] = cell_values(owned);
     for (types::global_dof_index i = 0; i < n_multipliers; ++i)
       c.multipliers.push_back(ghosted_solution[dof_handler.n_dofs() + i]);
 
     // Plastic history of the owned cells, gathered in cell order.
-    std::vector<std::pair<unsigned int, std::vector<double>>> mine;
+    std::vector<std::pair<CellKey, std::vector<double>>> mine;
     const unsigned int n_q = quadrature.size();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() &&
@@ -93,14 +150,12 @@ namespace tribos
       {
         const unsigned int n      = n_history_variables(cell->material_id());
         const auto         offset = history_offset[cell->active_cell_index()];
-        mine.emplace_back(cell->active_cell_index(),
+        mine.emplace_back(cell->id().template to_binary<dim>(),
                           std::vector<double>(history_old.begin() + offset,
                                               history_old.begin() + offset +
                                                 n * n_q));
       }
-    for (const auto &part : Utilities::MPI::gather(mpi_communicator, mine))
-      c.history.insert(c.history.end(), part.begin(), part.end());
-    std::sort(c.history.begin(), c.history.end());
+    c.history = gather_by_cell(mine, mpi_communicator);
 
     if (contact)
       c.contact = contact->committed_state();
@@ -151,7 +206,7 @@ namespace tribos
                              "run that wrote it."));
     };
     require(c.dimension, dim, "dimensions");
-    require(c.n_active_cells, triangulation.n_active_cells(), "cells");
+    require(c.n_active_cells, triangulation.n_global_active_cells(), "cells");
     require(c.dofs_per_cell, fe->n_dofs_per_cell(), "dofs per cell");
     require(c.n_dofs, dof_handler.n_dofs(), "dofs");
     require(c.n_multipliers, n_multipliers, "contact multipliers");
@@ -184,17 +239,17 @@ namespace tribos
     owned_solution.compress(VectorOperation::insert);
     solution_changed();
 
-    std::map<unsigned int, const std::vector<double> *> by_cell;
-    for (const auto &[index, values] : c.history)
-      by_cell[index] = &values;
+    std::map<CellKey, const std::vector<double> *> by_cell;
+    for (const auto &[cell, values] : c.history)
+      by_cell[cell] = &values;
     const unsigned int n_q = quadrature.size();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() &&
           history_offset[cell->active_cell_index()] !=
             numbers::invalid_unsigned_int)
       {
-        const unsigned int n  = n_history_variables(cell->material_id());
-        const auto         it = by_cell.find(cell->active_cell_index());
+        const unsigned int n = n_history_variables(cell->material_id());
+        const auto it = by_cell.find(cell->id().template to_binary<dim>());
         AssertThrow(it != by_cell.end() && it->second->size() == n * n_q,
                     ExcMessage(where + "the checkpoint has no plastic "
                                        "history for a cell that needs one: "

@@ -28,7 +28,7 @@ namespace tribos
     open_output();
 
     pcout << "tribos: " << dim << "D scene <" << parameters.scene.name << ">, "
-          << triangulation.n_active_cells() << " cells, "
+          << triangulation.n_global_active_cells() << " cells, "
           << dof_handler.n_dofs() << " dofs, " << n_bodies
           << (n_bodies == 1 ? " body, " : " bodies, ")
           << Utilities::MPI::n_mpi_processes(mpi_communicator)
@@ -84,10 +84,13 @@ namespace tribos
     // The support points of the dofs (reference configuration).
     std::map<types::global_dof_index, Point<dim>> points;
     DoFTools::map_dofs_to_support_points(MappingQ1<dim>(), dof_handler, points);
-    Point<dim> centre;
-    for (const auto &[dof, point] : points)
-      centre += point / double(points.size());
-    const unsigned int               n_modes = dim == 2 ? 3 : 6;
+    // About the centroid of all support points (every process the same).
+    Tensor<1, dim> sum;
+    for (const auto dof : locally_owned_dofs)
+      sum += points.at(dof);
+    const Point<dim>   centre(Utilities::MPI::sum(sum, mpi_communicator) /
+                              double(dof_handler.n_dofs()));
+    const unsigned int n_modes = dim == 2 ? 3 : 6;
     std::vector<std::vector<double>> modes(
       n_modes,
       std::vector<double>(system_owned.n_elements(), 0.));

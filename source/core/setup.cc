@@ -1,16 +1,23 @@
+#include <tribos/base/import_constraints.h>
 #include <tribos/core/problem.h>
 #include <tribos/core/vector_function.h>
 #include <tribos/scene/scene.h>
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <set>
+#include <sstream>
 #include <type_traits>
 
 namespace tribos
@@ -25,7 +32,14 @@ namespace tribos
             pcout,
             TimerOutput::never,
             TimerOutput::wall_times)
-    , triangulation(mpi_communicator)
+    , triangulation_storage(
+        parameters.parallel.mesh == Parameters::Parallel::Mesh::shared ?
+          std::unique_ptr<parallel::TriangulationBase<dim>>(
+            std::make_unique<parallel::shared::Triangulation<dim>>(
+              mpi_communicator)) :
+          std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
+            mpi_communicator))
+    , triangulation(*triangulation_storage)
     , dof_handler(triangulation)
     , quadrature(parameters.finite_element.n_quadrature_points)
     , face_quadrature(parameters.finite_element.n_quadrature_points)
@@ -40,13 +54,17 @@ namespace tribos
   Problem<dim>::make_grid()
   {
     TimerOutput::Scope t(timer, "setup");
-    create_scene(parameters.scene, triangulation);
+    if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
+      create_scene(parameters.scene, triangulation);
+    else
+      create_distributed_scene();
 
     // Every boundary id named in a condition must exist in the mesh.
     std::set<types::boundary_id> existing;
     for (const auto &face : triangulation.active_face_iterators())
       if (face->at_boundary())
         existing.insert(face->boundary_id());
+    existing = Utilities::MPI::compute_set_union(existing, mpi_communicator);
     const auto require = [&](const unsigned int id, const std::string &entry)
     {
       AssertThrow(existing.count(id) == 1,
@@ -68,12 +86,104 @@ namespace tribos
 
   template <int dim>
   void
+  Problem<dim>::create_distributed_scene()
+  {
+    // The scene generators build whole meshes (curved bodies refined on
+    // their exact manifolds, then merged flat): the first process builds it,
+    // METIS partitions it, and every process keeps its own cells and their
+    // ghosts. A bad scene is reported on every process.
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    Triangulation<dim> serial;
+    std::string        error;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    {
+      try
+      {
+        create_scene(parameters.scene, serial);
+      }
+      catch (const ExceptionBase &e)
+      {
+        std::ostringstream text;
+        e.print_info(text);
+        error = text.str();
+      }
+      catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    }
+    error = Utilities::MPI::broadcast(mpi_communicator, error, 0);
+    AssertThrow(error.empty(), ExcMessage(error));
+
+    const auto description = TriangulationDescription::Utilities::
+      create_description_from_triangulation_in_groups<dim, dim>(
+        [&serial](Triangulation<dim> &tria)
+        {
+          tria.copy_triangulation(serial);
+          // The mesh is final: no refinement follows, no manifold is
+          // needed on the processes.
+          for (const auto &cell : tria.cell_iterators())
+            cell->set_all_manifold_ids(numbers::flat_manifold_id);
+          tria.reset_all_manifolds();
+        },
+        [n_ranks](Triangulation<dim> &tria, const MPI_Comm, const unsigned int)
+        { GridTools::partition_triangulation(n_ranks, tria); },
+        mpi_communicator,
+        n_ranks);
+    triangulation.create_triangulation(description);
+
+    // Cells refined after the merge (local refinement at a contact point)
+    // are refined again from the description, and their new vertices would
+    // sit on straight lines: every process takes the vertices of its cells
+    // from the first process's mesh, where the scene put them (on a sphere,
+    // a cylinder, ...).
+    const unsigned int n_levels =
+      Utilities::MPI::broadcast(mpi_communicator, serial.n_levels(), 0);
+    if (n_levels > 1)
+    {
+      std::vector<CellId::binary_type> mine;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (!cell->is_artificial() && cell->level() > 0)
+          mine.push_back(cell->id().template to_binary<dim>());
+      const auto requests = Utilities::MPI::gather(mpi_communicator, mine, 0);
+      std::map<unsigned int, std::vector<double>> answers;
+      for (unsigned int rank = 0; rank < requests.size(); ++rank)
+        for (const auto &id : requests[rank])
+        {
+          const auto cell = serial.create_cell_iterator(CellId(id));
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              answers[rank].push_back(cell->vertex(v)[d]);
+        }
+      const auto received =
+        Utilities::MPI::some_to_some(mpi_communicator, answers);
+      if (!mine.empty())
+      {
+        const auto  &x    = received.at(0);
+        unsigned int next = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (!cell->is_artificial() && cell->level() > 0)
+            for (const unsigned int v : cell->vertex_indices())
+              for (unsigned int d = 0; d < dim; ++d)
+                cell->vertex(v)[d] = x[next++];
+      }
+    }
+  }
+
+
+
+  template <int dim>
+  void
   Problem<dim>::setup_materials()
   {
-    const auto        &m        = parameters.materials;
-    types::material_id max_body = 0;
+    const auto &m = parameters.materials;
+    body_ids.clear();
     for (const auto &cell : triangulation.active_cell_iterators())
-      max_body = std::max(max_body, cell->material_id());
+      if (!cell->is_artificial())
+        body_ids.insert(cell->material_id());
+    body_ids = Utilities::MPI::compute_set_union(body_ids, mpi_communicator);
+    const types::material_id max_body = *body_ids.rbegin();
     // The same per-body data builds the dim materials and, for an
     // axisymmetric model, their 3D versions.
     const auto make = [&m](auto dimension, const unsigned int body)
@@ -94,22 +204,30 @@ namespace tribos
                                  body,
                                  "Linear hardening modulus")}});
     };
-    std::set<types::material_id> bodies;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      bodies.insert(cell->material_id());
-    n_bodies = bodies.size();
+    n_bodies = body_ids.size();
     materials.clear();
     axisymmetric_materials.clear();
     for (unsigned int body = 0; body <= max_body; ++body)
       materials.push_back(make(std::integral_constant<int, dim>(), body));
     if (parameters.finite_element.axisymmetric)
     {
+      // The most negative radius, relative to its cell's size, anywhere.
+      double worst = 0, worst_x = 0;
       for (const auto &cell : triangulation.active_cell_iterators())
-        for (const auto v : cell->vertex_indices())
-          AssertThrow(cell->vertex(v)[0] >= -1e-10 * cell->diameter(),
-                      ExcMessage("Finite element/Axisymmetric = true needs "
-                                 "the mesh in x = r >= 0; vertex at x = " +
-                                 std::to_string(cell->vertex(v)[0]) + "."));
+        if (cell->is_locally_owned())
+          for (const auto v : cell->vertex_indices())
+            if (cell->vertex(v)[0] / cell->diameter() < worst)
+            {
+              worst   = cell->vertex(v)[0] / cell->diameter();
+              worst_x = cell->vertex(v)[0];
+            }
+      const auto least = Utilities::MPI::min_max_avg(worst, mpi_communicator);
+      worst_x =
+        Utilities::MPI::broadcast(mpi_communicator, worst_x, least.min_index);
+      AssertThrow(least.min >= -1e-10,
+                  ExcMessage("Finite element/Axisymmetric = true needs "
+                             "the mesh in x = r >= 0; vertex at x = " +
+                             std::to_string(worst_x) + "."));
       for (unsigned int body = 0; body <= max_body; ++body)
         axisymmetric_materials.push_back(
           make(std::integral_constant<int, 3>(), body));
@@ -163,6 +281,8 @@ namespace tribos
                                          dim);
     dof_handler.distribute_dofs(*fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
+    owned_per_process =
+      Utilities::MPI::all_gather(mpi_communicator, locally_owned_dofs);
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
     const auto &bc = parameters.boundary_conditions;
@@ -283,9 +403,13 @@ namespace tribos
                               update_JxW_values | update_quadrature_points);
       for (const auto &cell : dof_handler.active_cell_iterators())
       {
+        if (cell->is_artificial())
+          continue;
         cell->get_dof_indices(indices);
         for (const auto i : indices)
           dof_body[i] = cell->material_id();
+        if (!cell->is_locally_owned())
+          continue;
         E_max =
           std::max(E_max, materials[cell->material_id()]->youngs_modulus());
         fe_values.reinit(cell);
@@ -295,6 +419,8 @@ namespace tribos
                        2 * numbers::PI * fe_values.quadrature_point(q)[0] :
                        1.);
       }
+      volume = Utilities::MPI::sum(volume, mpi_communicator);
+      E_max  = Utilities::MPI::max(E_max, mpi_communicator);
       const double exponent =
         parameters.finite_element.axisymmetric ? 2. / 3. : (dim - 1.) / dim;
       stagnation_bound = 1e-10 * E_max * std::pow(volume, exponent);
@@ -411,6 +537,12 @@ namespace tribos
         symmetry,
         AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
     }
+    // Every dof this process does not own (ghosts, and the master and
+    // slave dofs of other processes' cells) as its owner constrains it.
+    import_constraints(constraints,
+                       owned_per_process,
+                       locally_relevant_dofs,
+                       mpi_communicator);
     constraints.close();
   }
 

@@ -26,6 +26,7 @@ namespace tribos
       TimeStepping::declare_parameters(prm);
       LinearSolver::declare_parameters(prm);
       Output::declare_parameters(prm);
+      Parallel::declare_parameters(prm);
       Verification::declare_parameters(prm);
     }
 
@@ -75,6 +76,7 @@ namespace tribos
                                          "> needs every density > 0."));
       linear_solver.parse_parameters(prm);
       output.parse_parameters(prm);
+      parallel.parse_parameters(prm);
       verification.parse_parameters(prm);
       AssertThrow(verification.exact_displacement.empty() ||
                     verification.exact_displacement.size() == dimension,

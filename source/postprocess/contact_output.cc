@@ -183,9 +183,10 @@ namespace tribos
   template <int dim>
   void
   ContactOutput<dim>::nodal_fields(
-    const std::vector<types::global_dof_index> &vertex_to_dof,
-    std::array<dealii::Vector<double>, 4>      &scalars,
-    dealii::Vector<double>                     &shear) const
+    const std::map<types::global_dof_index, types::global_dof_index>
+                                                 &scalar_dof,
+    std::array<TrilinosWrappers::MPI::Vector, 4> &scalars,
+    TrilinosWrappers::MPI::Vector                &shear) const
   {
     // One physical value per node, also where a node is a slave of several
     // pairs (two slave surfaces sharing an edge, two masters): CPRESS,
@@ -204,7 +205,7 @@ namespace tribos
       Vec3<double> shear{{0, 0, 0}};
       const std::array<types::global_dof_index, dim> *dofs = nullptr;
     };
-    std::map<unsigned int, NodeValues> per_vertex;
+    std::map<types::global_dof_index, NodeValues> per_node;
     for (const auto &pair : contact.pairs())
       for (unsigned int k = 0; k < pair.n_nodes(); ++k)
       {
@@ -212,7 +213,7 @@ namespace tribos
           continue;
         const auto &node = pair.slave->nodes()[k];
         const auto &r    = pair.current[k].result;
-        NodeValues &v    = per_vertex[node.vertex];
+        NodeValues &v    = per_node[node.dofs[0]];
         v.dofs           = &node.dofs;
         // Excluded nodes (area 0) still report their slip with weight 1.
         const double area = pair.area[k] > 0 ? pair.area[k] : 1e-300;
@@ -235,22 +236,22 @@ namespace tribos
           v.status        = int(r.status);
         }
       }
-    for (const auto &[vertex, v] : per_vertex)
+    for (const auto &[first_dof, v] : per_node)
     {
-      const auto dof = vertex_to_dof[vertex];
-      scalars[1][dof] += v.has_gap ? v.gap : 0.;
-      scalars[2][dof] += v.slip / v.area;
-      scalars[3][dof] += v.status;
+      const auto dof  = scalar_dof.at(first_dof);
+      scalars[1][dof] = v.has_gap ? v.gap : 0.;
+      scalars[2][dof] = v.slip / v.area;
+      scalars[3][dof] = v.status;
       if (v.closed_area > 0)
       {
-        scalars[0][dof] += v.pressure / v.closed_area;
+        scalars[0][dof] = v.pressure / v.closed_area;
         for (unsigned int d = 0; d < dim; ++d)
-          shear[(*v.dofs)[d]] += v.shear[d] / v.closed_area;
+          shear[(*v.dofs)[d]] = v.shear[d] / v.closed_area;
       }
     }
     for (auto &v : scalars)
-      Utilities::MPI::sum(v, contact.communicator(), v);
-    Utilities::MPI::sum(shear, contact.communicator(), shear);
+      v.compress(VectorOperation::insert);
+    shear.compress(VectorOperation::insert);
   }
 
   template class ContactOutput<2>;

@@ -6,6 +6,7 @@
 
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/grid/cell_id.h>
 
 #include <array>
 #include <set>
@@ -22,6 +23,12 @@ namespace tribos
    * master, its faces (vertex order such that the normal of MasterFace
    * points out of the body) with their neighbours. Built once from the
    * reference configuration; positions are looked up per evaluation.
+   *
+   * Every process holds the whole surface, also on a distributed mesh:
+   * each contributes the faces of its own cells and all gather them
+   * (collective). Faces are numbered in the order of their cells' CellId,
+   * nodes in the order they first appear, so the numbering is the same on
+   * every process and for every partition.
    */
   template <int dim>
   class ContactSurface
@@ -31,7 +38,7 @@ namespace tribos
 
     struct Node
     {
-      unsigned int                             vertex;
+      /** The vertex's dofs, one per component; the first names the node. */
       std::array<types::global_dof_index, dim> dofs;
       Vec3<double>                             reference{{0, 0, 0}};
       /** Tributary area (24): integral of the face shape function of the
@@ -100,6 +107,30 @@ namespace tribos
     }
 
   private:
+    /** A face as its owner sends it: the cell, the face number, the body,
+     * and per node (in MasterFace order) its dofs and reference position. */
+    struct FaceRecord
+    {
+      CellId::binary_type                                     cell;
+      unsigned int                                            face = 0;
+      types::material_id                                      body = 0;
+      std::array<types::global_dof_index, n_face_nodes * dim> dofs;
+      std::array<double, n_face_nodes * dim>                  x;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        for (auto &c : cell)
+          archive &c;
+        archive &face &body;
+        for (auto &d : dofs)
+          archive &d;
+        for (auto &v : x)
+          archive &v;
+      }
+    };
+
     std::set<types::boundary_id> ids;
     std::vector<Node>            node_list;
     std::vector<Face>            face_list;

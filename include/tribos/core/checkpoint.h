@@ -3,6 +3,8 @@
 
 #include <tribos/solver/load_stepper.h>
 
+#include <array>
+#include <boost/serialization/array.hpp>
 #include <boost/serialization/map.hpp>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
@@ -26,7 +28,7 @@ namespace tribos
   struct Checkpoint
   {
     /** The layout version of this struct. */
-    static constexpr unsigned int format = 1;
+    static constexpr unsigned int format = 2;
 
     unsigned int dimension      = 0;
     unsigned int n_active_cells = 0;
@@ -36,14 +38,17 @@ namespace tribos
 
     StepperState stepper;
 
+    /** Every active cell (CellId::to_binary), in CellId order: the same on
+     * every partition of the mesh, shared or distributed. */
+    std::vector<std::array<unsigned int, 4>> cells;
     /** Per dof vector (solution, velocity, ...): n_active_cells x
-     * dofs_per_cell values. */
+     * dofs_per_cell values, the cells in the order of @p cells. */
     std::map<std::string, std::vector<double>> cell_values;
     /** The contact multipliers (after the dofs in the solution). */
     std::vector<double> multipliers;
-    /** Per cell with history, in cell order: its active cell index and
-     * its values. */
-    std::vector<std::pair<unsigned int, std::vector<double>>> history;
+    /** Per cell with history, in CellId order: the cell and its values. */
+    std::vector<std::pair<std::array<unsigned int, 4>, std::vector<double>>>
+      history;
     /** ContactHandler::committed_state(). */
     std::vector<char> contact;
     /** Scalars by name (dynamics' energies and times). */
@@ -62,7 +67,8 @@ namespace tribos
       archive &s.step &s.time &s.increment &s.converged_in_row;
       archive &t.n_increments &t.n_newton_iterations &t.n_cutbacks;
       archive &t.largest_stabilization_ratio &t.n_linear_solves;
-      archive &cell_values &multipliers &history &contact &scalars &pvd_records;
+      archive &cells &cell_values &multipliers &history &contact &scalars;
+      archive                                                    &pvd_records;
     }
 
     /** Write to @p directory/state.bin (through a temporary file and a

@@ -16,7 +16,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
@@ -28,6 +28,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace tribos
@@ -38,8 +39,11 @@ namespace tribos
    * The quasi-static boundary value problem of all bodies of a scene:
    * total Lagrangian displacement formulation, one DoFHandler over one
    * triangulation shared by all bodies, Trilinos distributed linear
-   * algebra (parallel::shared::Triangulation, so every process sees the
-   * whole geometry, which the contact search needs). The unknowns are the
+   * algebra. Under MPI the mesh is shared (every process holds all of it)
+   * or distributed (every process holds its own cells and a layer of
+   * ghosts; Parallel/Mesh); the contact surfaces are gathered on every
+   * process either way (ContactSurface), so the contact search sees every
+   * master face. The unknowns are the
    * displacement dofs followed by the contact multipliers (if a pair uses
    * them), in one vector.
    *
@@ -169,6 +173,10 @@ namespace tribos
     /* setup.cc */
     void
     make_grid();
+    /** Parallel/Mesh = distributed: the scene built on the first process,
+     * partitioned, and this process's part of it. */
+    void
+    create_distributed_scene();
     void
     setup_system();
     void
@@ -324,14 +332,19 @@ namespace tribos
     ConditionalOStream               pcout;
     TimerOutput                      timer;
 
-    parallel::shared::Triangulation<dim> triangulation;
-    std::unique_ptr<FESystem<dim>>       fe;
-    DoFHandler<dim>                      dof_handler;
-    QGauss<dim>                          quadrature;
-    QGauss<dim - 1>                      face_quadrature;
+    /** The mesh: parallel::shared or parallel::fullydistributed
+     * (Parallel/Mesh). */
+    std::unique_ptr<parallel::TriangulationBase<dim>> triangulation_storage;
+    parallel::TriangulationBase<dim>                 &triangulation;
+    std::unique_ptr<FESystem<dim>>                    fe;
+    DoFHandler<dim>                                   dof_handler;
+    QGauss<dim>                                       quadrature;
+    QGauss<dim - 1>                                   face_quadrature;
 
     IndexSet locally_owned_dofs;
     IndexSet locally_relevant_dofs;
+    /** Every process's locally owned dofs. */
+    std::vector<IndexSet> owned_per_process;
     /**
      * The unknowns of the linear system: the displacement dofs followed by
      * the contact Lagrange multipliers (none unless a pair uses them). The
@@ -386,8 +399,9 @@ namespace tribos
     /** Vector component and body of every dof (by global dof number). */
     std::vector<unsigned char>      dof_component;
     std::vector<types::material_id> dof_body;
-    /** Number of distinct bodies (material ids) of the mesh. */
-    unsigned int n_bodies = 0;
+    /** The bodies (material ids) of the whole mesh, and their number. */
+    std::set<types::material_id> body_ids;
+    unsigned int                 n_bodies = 0;
     /**
      * Newton's round-off stagnation is accepted only below this residual:
      * 1e-10 E_max A, the force of a stress of 1e-10 times the largest

@@ -8,6 +8,7 @@
 #include <tribos/parameters/materials.h>
 #include <tribos/parameters/nonlinear_solver.h>
 #include <tribos/parameters/output.h>
+#include <tribos/parameters/parallel.h>
 #include <tribos/parameters/scene.h>
 #include <tribos/parameters/time_stepping.h>
 #include <tribos/parameters/verification.h>
@@ -39,6 +40,7 @@ namespace tribos
       TimeStepping       time_stepping;
       LinearSolver       linear_solver;
       Output             output;
+      Parallel           parallel;
       Verification       verification;
 
       /** Warnings about the input itself (e.g. a file that sets nothing),

@@ -3,9 +3,11 @@
 
 #include <tribos/contact/contact_handler.h>
 
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -55,14 +57,18 @@ namespace tribos
 
     /**
      * Nodal fields for the VTU: CPRESS, COPEN, CSLIP, CSTATUS on a scalar
-     * Q1 numbering (@p vertex_to_dof), CSHEAR on the displacement
-     * numbering; one physical value per node where a node is a slave of
-     * several pairs (see the source). Summed over processes. Collective.
+     * Q1 numbering (@p scalar_dof: the scalar dof of the vertex whose
+     * first displacement dof is the key, for the vertices of this
+     * process's cells), CSHEAR on the displacement numbering; one physical
+     * value per node where a node is a slave of several pairs (see the
+     * source). Each process writes the nodes it owns into the owned
+     * (non-ghosted) vectors, then compresses them. Collective.
      */
     void
-    nodal_fields(const std::vector<types::global_dof_index> &vertex_to_dof,
-                 std::array<dealii::Vector<double>, 4>      &scalars,
-                 dealii::Vector<double>                     &shear) const;
+    nodal_fields(const std::map<types::global_dof_index,
+                                types::global_dof_index>      &scalar_dof,
+                 std::array<TrilinosWrappers::MPI::Vector, 4> &scalars,
+                 TrilinosWrappers::MPI::Vector                &shear) const;
 
   private:
     const ContactHandler<dim> &contact;
