@@ -300,7 +300,14 @@ namespace tribos
       const double alpha_old   = old[6];
       const double yield_old   = hardening.yield_stress(alpha_old);
       N            delta_alpha = 0.;
-      const bool   plastic     = value(q_trial) > yield_old;
+      // A point that converged plastically starts the next increment with
+      // its trial state on the yield surface to round-off (through the
+      // logarithm and back): that tie is elastic (no correction, the
+      // elastic tangent), as Coulomb's stick at equality in
+      // coulomb_return(). Left to round-off, about half such points took
+      // the ~1000 times softer plastic tangent, and the first Newton
+      // iterate depended on the thread count and the BLAS kernel.
+      const bool plastic = value(q_trial) > yield_old * (1. + 1e-12);
       if (plastic)
       {
         // Scalar Newton on q_trial - 3 G da - sigma_y(alpha + da) = 0 in
