@@ -5,12 +5,18 @@ augmented Lagrangian and Lagrange multipliers, in 2D (a block dragged over
 a rigid plane; the ironing: large frictional sliding over a deformable
 master) and in 3D (two blocks sliding with friction over a deformable
 non-matching interface); the ironing and the 3D blocks also with mortar,
-whose elements reach the slave node's neighbours. Which process owns which slave node and master
-face is the partitioner's choice; these runs do not check it."""
+whose elements reach the slave node's neighbours. The mesh is
+distributed (Parallel/Mesh = distributed: each process holds its own cells
+and a ghost layer): every run with a deformable master must pair slave
+nodes with master faces of another process, and the 3D blocks (node to
+segment) must see a slave node's master face pass to another process while
+sliding (summary.txt counts both)."""
 
 import sys
 
-from tribos_test import setup, run, strip_columns, numdiff, finish
+import re
+
+from tribos_test import setup, run, strip_columns, numdiff, check, finish
 
 tribos, tests, out = setup(sys.argv)
 # Diagnostics of the iteration path, which the order of the parallel sums
@@ -40,4 +46,18 @@ for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d",
                     absolute=1e-8)
             print("ok      %s, %s: np %d history equals the serial one"
                   % (scene, method, ranks))
+            summary = open(parallel + "/summary.txt").read()
+            found = re.search(r"contact across processes (\d+) slave nodes "
+                              r"at the end, (\d+) master face changes",
+                              summary)
+            across, changes = (int(found.group(1)), int(found.group(2))) \
+                if found else (0, 0)
+            if scene != "sliding_block":  # a rigid master
+                check(across > 0, "%s, %s, np %d: %d slave nodes paired "
+                      "with another process's master face"
+                      % (scene, method, ranks, across))
+            if scene == "sliding_blocks_3d":
+                check(changes > 0, "%s, %s, np %d: %d master face changes "
+                      "of process while sliding" % (scene, method, ranks,
+                                                    changes))
 finish()

@@ -7,7 +7,8 @@ the run crashed); also with Lagrange multipliers (owned with their slave
 node, MUMPS) on four of them; the same contact-NNNNN.csv, reports the load
 balance (min and max over the processes of their own assembly and contact
 time) in summary.txt, and writes the parallel VTU set (.pvtu plus one piece
-per rank)."""
+per rank). The same with Parallel/Mesh = shared (every process holds the
+whole mesh)."""
 
 import os
 import sys
@@ -25,6 +26,8 @@ cases = [(name, name, []) for name in ("cylinder_3d", "ring_2d",
 cases += [(name + "_lagrange", name, lagrange)
           for name in ("sliding_block", "patch_test", "ring_2d",
                        "sliding_blocks_3d")]
+cases += [(label + "_shared", name, sets + ["Parallel/Mesh=shared"])
+          for label, name, sets in cases]
 for label, name, sets in cases:
     prm = "%s/%s.prm" % (tests, name)
     name = label

@@ -531,10 +531,24 @@ namespace tribos
     // when that pays.
     std::vector<std::set<std::pair<unsigned int, unsigned int>>> used(
       contact_pairs.size());
-    unsigned int n_stale = 0, n_kept = 0;
+    unsigned int       n_stale = 0, n_kept = 0;
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    n_paired_across = 0;
     for (unsigned int p = 0; p < contact_pairs.size(); ++p)
     {
-      auto &pair                = contact_pairs[p];
+      auto &pair = contact_pairs[p];
+      if (pair.master)
+        for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        {
+          const int now = pair.current[k].face, before = pair.committed[k].face;
+          if (!pair.owned[k] || now < 0)
+            continue;
+          const unsigned int owner = pair.master->faces()[now].owner;
+          n_paired_across += (owner != rank);
+          n_owner_changes +=
+            (before >= 0 && pair.master->faces()[before].owner != owner);
+        }
       pair.committed            = pair.current;
       pair.old_slave_positions  = pair.slave_positions;
       pair.old_master_positions = pair.master_positions;
@@ -565,6 +579,16 @@ namespace tribos
       outdated = true;
     }
     committed_time = time;
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  ContactHandler<dim>::process_crossings() const
+  {
+    return {Utilities::MPI::sum(n_paired_across, mpi_communicator),
+            Utilities::MPI::sum(n_owner_changes, mpi_communicator)};
   }
 
 

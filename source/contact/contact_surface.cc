@@ -54,9 +54,10 @@ namespace tribos
           }
 
           FaceRecord record;
-          record.cell = cell->id().template to_binary<dim>();
-          record.face = f;
-          record.body = cell->material_id();
+          record.cell  = cell->id().template to_binary<dim>();
+          record.face  = f;
+          record.body  = cell->material_id();
+          record.owner = cell->subdomain_id();
           for (unsigned int v = 0; v < n_face_nodes; ++v)
             for (unsigned int d = 0; d < dim; ++d)
             {
@@ -83,7 +84,8 @@ namespace tribos
     for (const auto &record : records)
     {
       Face contact_face;
-      contact_face.body = record.body;
+      contact_face.body  = record.body;
+      contact_face.owner = record.owner;
       body_ids.insert(record.body);
       for (unsigned int v = 0; v < n_face_nodes; ++v)
       {

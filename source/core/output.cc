@@ -545,6 +545,19 @@ namespace tribos
          Utilities::MPI::min_max_avg(own_assembly_time, mpi_communicator)},
         {"contact",
          Utilities::MPI::min_max_avg(own_contact_time, mpi_communicator)}};
+    // Communication: the values each process receives per update of the
+    // ghosted solution (all of them, and the contact's share), and the
+    // contact across processes.
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const auto ghosts =
+      Utilities::MPI::min_max_avg(double(system_relevant.n_elements() -
+                                         system_owned.n_elements()),
+                                  mpi_communicator);
+    const auto contact_ghosts =
+      Utilities::MPI::min_max_avg(double(n_contact_ghosts), mpi_communicator);
+    const auto crossings =
+      contact ? contact->process_crossings() : std::pair<unsigned, unsigned>();
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     const StepperTotals totals = stepper ? stepper->totals() : StepperTotals();
@@ -591,11 +604,20 @@ namespace tribos
         if (parameters.nonlinear_solver.stabilization > 0)
           out << "largest stabilization ratio "
               << totals.largest_stabilization_ratio << '\n';
-        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+        if (n_ranks > 1)
+        {
           for (const auto &[section, t] : balance)
             out << "balance " << std::left << std::setw(10) << section
                 << std::right << "min " << t.min << " s, max " << t.max
                 << " s, max/min " << (t.min > 0 ? t.max / t.min : 0.) << '\n';
+          out << "ghost values      max " << ghosts.max << " per process ("
+              << 8 * ghosts.max << " bytes per update), of which contact "
+              << contact_ghosts.max << '\n';
+          if (contact)
+            out << "contact across processes " << crossings.first
+                << " slave nodes at the end, " << crossings.second
+                << " master face changes of process\n";
+        }
         for (const auto &w : warnings)
           out << "warning           " << w << '\n';
         out << "\nsection               calls    wall [s]  share\n";

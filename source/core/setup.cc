@@ -335,8 +335,10 @@ namespace tribos
         parameters.finite_element.axisymmetric);
       // Contact couples this process's slave nodes to master nodes
       // anywhere: their dofs count as relevant (ghosted, constrained).
+      const auto n_cell_relevant = locally_relevant_dofs.n_elements();
       locally_relevant_dofs.add_indices(contact->contact_dofs());
-      contact_output = std::make_unique<ContactOutput<dim>>(*contact);
+      n_contact_ghosts = locally_relevant_dofs.n_elements() - n_cell_relevant;
+      contact_output   = std::make_unique<ContactOutput<dim>>(*contact);
       for (const auto &w : contact->setup_warnings())
         warn(w);
     }

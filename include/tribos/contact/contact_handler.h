@@ -170,6 +170,15 @@ namespace tribos
     /** The last evaluated state becomes the converged history. */
     void
     commit();
+    /**
+     * Contact across processes, over all processes (collective): the slave
+     * nodes paired at the last commit with a master face whose cell
+     * another process owns, and the number of times, summed over the
+     * commits, that a slave node's master face passed to another process
+     * (sliding across a partition border).
+     */
+    std::pair<unsigned int, unsigned int>
+    process_crossings() const;
 
     /** Back to the last committed state (pairing included). */
     void
@@ -218,9 +227,12 @@ namespace tribos
     types::global_dof_index       n_enforcement_unknowns = 0;
     /** Unknowns below this number are displacements. */
     types::global_dof_index n_displacement_dofs;
-    bool                    outdated       = true;
-    double                  time           = 0;
-    double                  committed_time = 0;
+    /** This process's slave nodes paired across processes at the last
+     * commit, and their changes of the master's process so far. */
+    unsigned int n_paired_across = 0, n_owner_changes = 0;
+    bool         outdated       = true;
+    double       time           = 0;
+    double       committed_time = 0;
   };
 } // namespace tribos
 

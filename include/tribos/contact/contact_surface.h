@@ -70,6 +70,8 @@ namespace tribos
        */
       int                beyond[2] = {-1, -1};
       types::material_id body;
+      /** The MPI process that owns the face's cell. */
+      unsigned int owner = 0;
     };
 
     /**
@@ -112,8 +114,9 @@ namespace tribos
     struct FaceRecord
     {
       CellId::binary_type                                     cell;
-      unsigned int                                            face = 0;
-      types::material_id                                      body = 0;
+      unsigned int                                            face  = 0;
+      types::material_id                                      body  = 0;
+      unsigned int                                            owner = 0;
       std::array<types::global_dof_index, n_face_nodes * dim> dofs;
       std::array<double, n_face_nodes * dim>                  x;
 
@@ -123,7 +126,7 @@ namespace tribos
       {
         for (auto &c : cell)
           archive &c;
-        archive &face &body;
+        archive &face &body &owner;
         for (auto &d : dofs)
           archive &d;
         for (auto &v : x)

@@ -345,6 +345,10 @@ namespace tribos
     IndexSet locally_relevant_dofs;
     /** Every process's locally owned dofs. */
     std::vector<IndexSet> owned_per_process;
+    /** Dofs ghosted on this process only because contact couples them to
+     * its slave nodes (master and slave nodes beyond its cells): the
+     * contact's share of every ghost update. */
+    types::global_dof_index n_contact_ghosts = 0;
     /**
      * The unknowns of the linear system: the displacement dofs followed by
      * the contact Lagrange multipliers (none unless a pair uses them). The
