@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -82,6 +83,19 @@ check(const std::string &model, std::mt19937 &random)
 
 
 
+/** J2 plasticity with the steel-like data of the paper's cylinder. */
+template <int dim>
+std::unique_ptr<tribos::Material<dim>>
+steel()
+{
+  return tribos::create_material<dim>("J2 plasticity",
+                                      206.9,
+                                      0.29,
+                                      {{0.45, 0.715, 16.93, 0.12924}});
+}
+
+
+
 /**
  * J2 plasticity (steel-like data of the paper's cylinder): the tangent of
  * the return map at fixed history, from a history produced by a plastic
@@ -91,11 +105,7 @@ template <int dim>
 bool
 check_plastic(std::mt19937 &random)
 {
-  const auto material =
-    tribos::create_material<dim>("J2 plasticity",
-                                 206.9,
-                                 0.29,
-                                 {{0.45, 0.715, 16.93, 0.12924}});
+  const auto                             material = steel<dim>();
   std::uniform_real_distribution<double> uniform(-1, 1);
   bool                                   ok        = true;
   double                                 worst     = 0;
@@ -150,11 +160,7 @@ template <int dim>
 bool
 check_converged_state_is_elastic(std::mt19937 &random)
 {
-  const auto material =
-    tribos::create_material<dim>("J2 plasticity",
-                                 206.9,
-                                 0.29,
-                                 {{0.45, 0.715, 16.93, 0.12924}});
+  const auto                             material = steel<dim>();
   std::uniform_real_distribution<double> uniform(-1, 1);
   unsigned int                           n_plastic = 0, n_corrected = 0;
   for (unsigned int sample = 0; sample < 200; ++sample)

@@ -558,6 +558,10 @@ namespace tribos
       Utilities::MPI::min_max_avg(double(n_contact_ghosts), mpi_communicator);
     const auto crossings =
       contact ? contact->process_crossings() : std::pair<unsigned, unsigned>();
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const auto peak_memory =
+      Utilities::MPI::min_max_avg(memory.VmHWM / 1024., mpi_communicator);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
     const StepperTotals totals = stepper ? stepper->totals() : StepperTotals();
@@ -604,6 +608,8 @@ namespace tribos
         if (parameters.nonlinear_solver.stabilization > 0)
           out << "largest stabilization ratio "
               << totals.largest_stabilization_ratio << '\n';
+        out << "peak memory       " << peak_memory.max
+            << " MB per process (max), " << peak_memory.sum << " MB in all\n";
         if (n_ranks > 1)
         {
           for (const auto &[section, t] : balance)

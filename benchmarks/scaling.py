@@ -1,0 +1,167 @@
+#!/usr/bin/env python3
+"""Distributed memory (issue 17): what MPI buys on this machine, from
+summary.txt and the wall clock, written to doc/data/scaling.csv.
+
+    python3 benchmarks/scaling.py [--tribos build/tribos] [--runs 3]
+        [--out doc/data/scaling.csv] [--only CASE ...] [--large]
+
+Cases (Parallel/Mesh = distributed unless the variant says shared):
+
+* speedup: frictional sliding of two blocks (tests/sliding_blocks_3d.prm,
+  mu = 0.3, penalty, refined to 245k dofs, GMRES + ML; pressed in 8 steps,
+  then slid by two elements in one), one process (which
+  assembles with both cores' threads) against `mpirun -np 2`, alternating,
+  medians of --runs;
+* communication: the same scene at three sizes, np 2: the values each
+  process receives per update of the ghosted solution (the bytes of a
+  search's position update), the contact's share of them (master and slave
+  nodes beyond the process's cells), the slave nodes paired with another
+  process's master face;
+* memory: the paper's cylinder (J2, frictionless plate, penalty) at 314k
+  dofs, the first step, np 2, shared against distributed mesh: peak memory
+  per process and in all, and the ghost values;
+* large (only with --large, about 15 minutes): the cylinder at 1.2M dofs,
+  its first two steps of 25 at np 2, for the whole stroke's projection.
+
+Each row: case, variant, processes, dofs, Newton iterations, median wall
+time (and every run's), the assembly / contact / solve sections, linear
+iterations, peak memory (largest process, all), ghost values (largest
+process, contact's share), slave nodes paired across processes."""
+
+import argparse
+import csv
+import os
+import re
+import statistics
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
+from solver_speed import run_once, summary  # noqa: E402
+
+BLOCKS = "tests/sliding_blocks_3d.prm"
+CYLINDER = "parameters/cylinder_compression.prm"
+
+
+def blocks(refinement):
+    """Pressed in 8 steps, then slid by 0.0375 (two elements) in one."""
+    return (BLOCKS, ["Scene/Two blocks/Lower subdivisions=8, 8, 2",
+                     "Scene/Two blocks/Upper subdivisions=4, 4, 1",
+                     "Scene/Refinement=%d" % refinement,
+                     "Time stepping/End time=1.125",
+                     "Time stepping/Number of steps=9"])
+
+
+def cylinder(refinement, radial, steps):
+    return (CYLINDER, ["Scene/Refinement=%d" % refinement,
+                       "Scene/Cylinder compression/Radial refinements=%d"
+                       % radial,
+                       "Time stepping/End time=%d" % steps,
+                       "Time stepping/Number of steps=%d" % steps])
+
+
+SHARED = ["Parallel/Mesh=shared"]
+# case: [(variant, (prm, sets), processes)]
+CASES = {
+    "speedup": [("np1", blocks(3), 1), ("np2", blocks(3), 2)],
+    "communication": [("refinement %d" % r, blocks(r), 2) for r in (1, 2, 3)],
+    "memory": [("shared", (CYLINDER, cylinder(3, 2, 1)[1] + SHARED), 2),
+               ("distributed", cylinder(3, 2, 1), 2)],
+    "large": [("2 of 25 steps", cylinder(3, 3, 2), 2)],
+}
+
+
+def extras(folder):
+    """Peak memory, ghost values and contact across processes."""
+    values = {}
+    with open(folder + "/summary.txt") as f:
+        text = f.read()
+    m = re.search(r"peak memory\s+([\d.e+]+) MB per process \(max\), "
+                  r"([\d.e+]+) MB in all", text)
+    if m:
+        values["peak_mb_process"] = float(m.group(1))
+        values["peak_mb_all"] = float(m.group(2))
+    m = re.search(r"ghost values\s+max ([\d.e+]+) per process .* of which "
+                  r"contact ([\d.e+]+)", text)
+    if m:
+        values["ghost_values"] = float(m.group(1))
+        values["contact_ghost_values"] = float(m.group(2))
+    m = re.search(r"contact across processes (\d+) slave nodes", text)
+    if m:
+        values["paired_across"] = int(m.group(1))
+    m = re.search(r"linear iterations (\d+)", text)
+    if m:
+        values["linear_iterations"] = int(m.group(1))
+    return values
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--tribos", default=os.path.join(ROOT, "build",
+                                                         "tribos"))
+    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--out", default=os.path.join(ROOT, "doc", "data",
+                                                      "scaling.csv"))
+    parser.add_argument("--only", nargs="*", default=[])
+    parser.add_argument("--large", action="store_true")
+    args = parser.parse_args()
+
+    names = args.only or [n for n in CASES if n != "large" or args.large]
+    rows = []
+    with tempfile.TemporaryDirectory() as scratch:
+        for name in names:
+            variants = CASES[name]
+            runs = args.runs if name == "speedup" else 1
+            walls = {v: [] for v, _, _ in variants}
+            last = {}
+            # Alternate the variants, so that the machine's noise hits all.
+            for _ in range(runs):
+                for variant, (prm, sets), ranks in variants:
+                    folder = os.path.join(scratch, name, variant.replace(" ",
+                                                                         "_"))
+                    wall, _ = run_once(args.tribos, prm, sets, folder,
+                                       {"ranks": ranks} if ranks > 1 else None)
+                    walls[variant].append(wall)
+                    last[variant] = folder
+                    print("%-14s %-16s np %d  %.2f s" % (name, variant,
+                                                         ranks, wall),
+                          flush=True)
+            for variant, (prm, sets), ranks in variants:
+                sections, values = summary(last[variant])
+                row = {"case": name, "variant": variant, "processes": ranks,
+                       "dofs": values.get("dofs"),
+                       "newton": values.get("newton iterations"),
+                       "wall_median": statistics.median(walls[variant]),
+                       "walls": " ".join("%.2f" % w for w in walls[variant])}
+                for section in ("assembly", "contact assembly",
+                                "contact search", "linear solve"):
+                    row[section.replace(" ", "_")] = \
+                        sections.get(section, (0, 0.))[1]
+                row.update(extras(last[variant]))
+                rows.append(row)
+
+    columns = ["case", "variant", "processes", "dofs", "newton",
+               "wall_median", "walls", "assembly", "contact_assembly",
+               "contact_search", "linear_solve", "linear_iterations",
+               "peak_mb_process", "peak_mb_all", "ghost_values",
+               "contact_ghost_values", "paired_across"]
+    os.makedirs(os.path.dirname(args.out), exist_ok=True)
+    with open(args.out, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=columns)
+        writer.writeheader()
+        for row in rows:
+            writer.writerow({c: row.get(c, "") for c in columns})
+    print("wrote " + args.out)
+
+    by = {(r["case"], r["variant"]): r for r in rows}
+    if ("speedup", "np1") in by and ("speedup", "np2") in by:
+        ratio = by["speedup", "np1"]["wall_median"] / \
+            by["speedup", "np2"]["wall_median"]
+        print("target: np 2 vs np 1 speed-up, frictional two blocks "
+              "(%d dofs): %.2f (target >= 1.7; measured/target %.2f)"
+              % (by["speedup", "np2"]["dofs"], ratio, 1.7 / ratio))
+
+
+if __name__ == "__main__":
+    main()
