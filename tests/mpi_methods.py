@@ -1,5 +1,5 @@
-"""MPI, every enforcement method with friction: `mpirun -np 2` and `-np 3`
-(oversubscribed on small machines) give the serial history to 1e-8
+"""MPI, every enforcement method with friction: `mpirun -np 2`, `-np 3` and
+`-np 4` (oversubscribed on small machines) give the serial history to 1e-8
 relative (reactions, contact forces, stick/slip counts) for penalty,
 augmented Lagrangian and Lagrange multipliers, in 2D (a block dragged over
 a rigid plane; the ironing: large frictional sliding over a deformable
@@ -37,7 +37,7 @@ for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d",
         serial = out + "/" + name + "_np1"
         run(tribos, prm, serial, sets)
         strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
-        for ranks in (2, 3):
+        for ranks in (2, 3, 4):
             parallel = out + "/%s_np%d" % (name, ranks)
             run(tribos, prm, parallel, sets, mpi_ranks=ranks)
             strip_columns(parallel + "/history.csv", parallel + "/h.csv",
