@@ -122,4 +122,17 @@ expect mortar_pair_key "discretization <segment>" "$tribos" \
 expect mortar_rigid "needs a deformable master" "$tribos" \
   "$tests/sliding_block.prm" \
   --set "Contact/Pairs=2 : plane : discretization=mortar"
+# A boundary id the mesh does not have, on a distributed mesh: the outer
+# faces of a process's ghost layer are boundary faces with id 0, and -np 2
+# accepted a condition on boundary 0 of a mesh whose sides are tagged 1-4
+# (it constrained nothing).
+if command -v mpirun > /dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  expect mpi_absent_boundary_0 "boundary id 0" mpirun -np 2 --oversubscribe \
+    "$tribos" "$tests/gmsh_import.prm" \
+    --set "Scene/Mesh file=$tests/square_tagged_sides.msh" \
+    --set "Scene/Refinement=3" --set "Materials/Young's modulus=1, 1" \
+    --set "Boundary conditions/Dirichlet=0 : xy : 0, 0 ; 2 : x : 0.01*t"
+fi
+
 exit $failed

@@ -58,9 +58,11 @@ namespace tribos
                            dof,
                            [](const types::global_dof_index d, const auto &s)
                            { return d < s.first; });
-        Assert(it != starts.begin(), ExcInternalError());
+        AssertThrow(it != starts.begin(), ExcInternalError());
         const unsigned int owner = std::prev(it)->second;
-        Assert(owned_per_process[owner].is_element(dof), ExcInternalError());
+        AssertThrow(owned_per_process[owner].is_element(dof),
+                    ExcMessage("import_constraints: the owned dofs of the "
+                               "processes are not contiguous ranges."));
         requests[owner].push_back(dof);
       }
 

@@ -165,11 +165,13 @@ namespace tribos
     types::global_dof_index                         &n_unknowns,
     IndexSet                                        &contact_dofs)
   {
+    // The boundary ids of the faces of own cells (see Problem::make_grid).
     std::set<types::boundary_id> existing;
-    for (const auto &face :
-         dof_handler.get_triangulation().active_face_iterators())
-      if (face->at_boundary())
-        existing.insert(face->boundary_id());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            existing.insert(face->boundary_id());
     existing = Utilities::MPI::compute_set_union(
       existing,
       dof_handler.get_triangulation().get_communicator());

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 
 namespace tribos
 {
@@ -104,20 +105,34 @@ namespace tribos
       Point<dim> point;
       for (unsigned int d = 0; d < dim; ++d)
         point[d] = p[d];
-      double                                   best = 1e300;
-      std::array<types::global_dof_index, dim> dofs{};
+      // Ties (a point halfway between vertices, coincident vertices of
+      // two bodies) go by position, then by body: the same vertex for
+      // every partition.
+      using Key         = std::array<double, dim + 2>;
+      const auto key_of = [&point](const auto &cell, const unsigned int v)
+      {
+        Key key;
+        key[0] = cell->vertex(v).distance(point);
+        for (unsigned int d = 0; d < dim; ++d)
+          key[d + 1] = cell->vertex(v)[d];
+        key[dim + 1] = cell->material_id();
+        return key;
+      };
+      std::pair<Key, std::array<types::global_dof_index, dim>> best;
+      best.first.fill(std::numeric_limits<double>::max());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto v : cell->vertex_indices())
-            if (cell->vertex(v).distance(point) < best)
+            if (key_of(cell, v) < best.first)
             {
-              best = cell->vertex(v).distance(point);
+              best.first = key_of(cell, v);
               for (unsigned int d = 0; d < dim; ++d)
-                dofs[d] = cell->vertex_dof_index(v, d);
+                best.second[d] = cell->vertex_dof_index(v, d);
             }
-      const auto nearest = Utilities::MPI::min_max_avg(best, mpi_communicator);
+      const auto candidates =
+        Utilities::MPI::all_gather(mpi_communicator, best);
       probe_dofs.push_back(
-        Utilities::MPI::broadcast(mpi_communicator, dofs, nearest.min_index));
+        std::min_element(candidates.begin(), candidates.end())->second);
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back("probe" + std::to_string(k) + "_u" + axis[d]);
     }
@@ -451,12 +466,12 @@ namespace tribos
       DoFTools::extract_locally_relevant_dofs(node_dof_handler, node_relevant);
       for (auto &v : contact_scalars)
         v.reinit(node_owned, mpi_communicator);
-      owned = 0;
-      contact_output->nodal_fields(scalar_dof, contact_scalars, owned);
+      Vector owned_shear(locally_owned_dofs, mpi_communicator);
+      contact_output->nodal_fields(scalar_dof, contact_scalars, owned_shear);
       contact_shear.reinit(locally_owned_dofs,
                            locally_relevant_dofs,
                            mpi_communicator);
-      contact_shear = owned;
+      contact_shear = owned_shear;
       for (auto &v : contact_scalars)
       {
         Vector ghosted(node_owned, node_relevant, mpi_communicator);

@@ -85,23 +85,30 @@ namespace tribos
     std::vector<types::global_dof_index> dofs(n);
     AssertThrow(values.size() == cells.size() * n,
                 ExcMessage("The checkpoint's vector does not fit the mesh."));
+    unsigned int n_missing = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
       {
         const CellKey key = cell->id().template to_binary<dim>();
         const auto    it =
           std::lower_bound(cells.begin(), cells.end(), key, cell_less);
-        AssertThrow(it != cells.end() && *it == key,
-                    ExcMessage("--restart <" + parameters.restart_directory +
-                               ">: the checkpoint's mesh is not this run's "
-                               "(cell " +
-                               cell->id().to_string() + " is missing)."));
+        if (it == cells.end() || *it != key)
+        {
+          ++n_missing;
+          continue;
+        }
         const std::size_t position = it - cells.begin();
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           if (locally_owned_dofs.is_element(dofs[i]))
             v[dofs[i]] = values[position * n + i];
       }
+    // Every process says so, or none (no process waits for the others).
+    n_missing = Utilities::MPI::sum(n_missing, mpi_communicator);
+    AssertThrow(n_missing == 0,
+                ExcMessage("--restart <" + parameters.restart_directory +
+                           ">: the checkpoint's mesh is not this run's (" +
+                           std::to_string(n_missing) + " cells missing)."));
     v.compress(VectorOperation::insert);
   }
 
@@ -239,6 +246,7 @@ namespace tribos
     owned_solution.compress(VectorOperation::insert);
     solution_changed();
 
+    unsigned int                                   n_missing = 0;
     std::map<CellKey, const std::vector<double> *> by_cell;
     for (const auto &[cell, values] : c.history)
       by_cell[cell] = &values;
@@ -250,16 +258,21 @@ namespace tribos
       {
         const unsigned int n = n_history_variables(cell->material_id());
         const auto it = by_cell.find(cell->id().template to_binary<dim>());
-        AssertThrow(it != by_cell.end() && it->second->size() == n * n_q,
-                    ExcMessage(where + "the checkpoint has no plastic "
-                                       "history for a cell that needs one: "
-                                       "Materials must be those of the run "
-                                       "that wrote it."));
+        if (it == by_cell.end() || it->second->size() != n * n_q)
+        {
+          ++n_missing;
+          continue;
+        }
         std::copy(it->second->begin(),
                   it->second->end(),
                   history_old.begin() +
                     history_offset[cell->active_cell_index()]);
       }
+    AssertThrow(Utilities::MPI::sum(n_missing, mpi_communicator) == 0,
+                ExcMessage(where + "the checkpoint has no plastic "
+                                   "history for a cell that needs one: "
+                                   "Materials must be those of the run "
+                                   "that wrote it."));
     history_new = history_old;
 
     time = c.stepper.time;

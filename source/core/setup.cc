@@ -59,11 +59,15 @@ namespace tribos
     else
       create_distributed_scene();
 
-    // Every boundary id named in a condition must exist in the mesh.
+    // Every boundary id named in a condition must exist in the mesh (the
+    // faces of own cells: on a distributed mesh the outer faces of the
+    // ghost layer are boundary faces with id 0 too).
     std::set<types::boundary_id> existing;
-    for (const auto &face : triangulation.active_face_iterators())
-      if (face->at_boundary())
-        existing.insert(face->boundary_id());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            existing.insert(face->boundary_id());
     existing = Utilities::MPI::compute_set_union(existing, mpi_communicator);
     const auto require = [&](const unsigned int id, const std::string &entry)
     {
@@ -539,12 +543,14 @@ namespace tribos
         symmetry,
         AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
     }
-    // Every dof this process does not own (ghosts, and the master and
-    // slave dofs of other processes' cells) as its owner constrains it.
-    import_constraints(constraints,
-                       owned_per_process,
-                       locally_relevant_dofs,
-                       mpi_communicator);
+    // On a distributed mesh, every dof this process does not own (ghosts,
+    // and the master and slave dofs of other processes' cells) as its owner
+    // constrains it. A shared mesh has every cell on every process.
+    if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
+      import_constraints(constraints,
+                         owned_per_process,
+                         locally_relevant_dofs,
+                         mpi_communicator);
     constraints.close();
   }
 

@@ -17,7 +17,9 @@ namespace tribos
    * A process computes constraints only from the cells it has, and for a
    * dof at the edge of its ghost layer that is not enough: a corner node
    * of two symmetry planes whose second plane lies beyond the ghost layer
-   * gets one constrained component instead of two. The owner of a dof has
+   * gets one constrained component instead of two, and the outer faces of
+   * the ghost layer are boundary faces (id 0) of the local mesh, which a
+   * condition on boundary 0 would constrain. The owner of a dof has
    * every cell at it (own or ghost), so its line is the complete one; and
    * contact couples a slave node to master faces anywhere in the mesh, so
    * a process writes matrix entries in rows and columns of dofs whose cells
