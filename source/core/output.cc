@@ -92,8 +92,8 @@ namespace tribos
       columns.push_back("error_L2");
       columns.push_back("error_H1");
     }
-    // Probes: the vertex nearest to each point (of the process whose own
-    // cells hold the nearest; the first such process on a tie).
+    // Probes: the vertex nearest to each point, over every process's own
+    // cells.
     probe_dofs.clear();
     for (unsigned int k = 0; k < parameters.output.probes.size(); ++k)
     {
@@ -123,9 +123,9 @@ namespace tribos
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto v : cell->vertex_indices())
-            if (key_of(cell, v) < best.first)
+            if (const Key key = key_of(cell, v); key < best.first)
             {
-              best.first = key_of(cell, v);
+              best.first = key;
               for (unsigned int d = 0; d < dim; ++d)
                 best.second[d] = cell->vertex_dof_index(v, d);
             }

@@ -50,7 +50,8 @@ namespace tribos
 
   template <int dim>
   std::vector<double>
-  Problem<dim>::cell_values(const Vector &v) const
+  Problem<dim>::cell_values(const Vector                         &v,
+                            std::vector<std::array<unsigned, 4>> *cells) const
   {
     Vector ghosted(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
     ghosted                                = v;
@@ -69,7 +70,11 @@ namespace tribos
     std::vector<double> values;
     for (const auto &[cell, cell_values] :
          gather_by_cell(mine, mpi_communicator))
+    {
       values.insert(values.end(), cell_values.begin(), cell_values.end());
+      if (cells != nullptr)
+        cells->push_back(cell);
+    }
     return values;
   }
 
@@ -135,15 +140,7 @@ namespace tribos
     for (const auto i : locally_owned_dofs)
       owned[i] = owned_solution[i];
     owned.compress(VectorOperation::insert);
-    {
-      std::vector<std::pair<CellKey, bool>> mine;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned())
-          mine.emplace_back(cell->id().template to_binary<dim>(), true);
-      for (const auto &[cell, unused] : gather_by_cell(mine, mpi_communicator))
-        c.cells.push_back(cell);
-    }
-    c.cell_values["solution"] = cell_values(owned);
+    c.cell_values["solution"] = cell_values(owned, &c.cells);
     for (types::global_dof_index i = 0; i < n_multipliers; ++i)
       c.multipliers.push_back(ghosted_solution[dof_handler.n_dofs() + i]);
 

@@ -25,6 +25,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -283,9 +284,11 @@ namespace tribos
      * of this (set up) problem; returns where the stepping stands. */
     StepperState
     read_checkpoint();
-    /** The values of @p v (dof-sized, owned) per active cell. */
+    /** The values of @p v (dof-sized, owned) per active cell, gathered on
+     * rank 0 in CellId order (the cells' CellIds into @p cells if given). */
     std::vector<double>
-    cell_values(const Vector &v) const;
+    cell_values(const Vector                         &v,
+                std::vector<std::array<unsigned, 4>> *cells = nullptr) const;
     /** Set the owned entries of @p v (dof-sized or the system vector) from
      * cell_values(). */
     void
