@@ -357,15 +357,6 @@ namespace tribos
     system_relevant.add_indices(locally_relevant_dofs);
     if (n_multipliers > 0)
     {
-      // The iterative solve eliminates the multipliers from a copy of the
-      // system held on one process (LinearSolver).
-      AssertThrow(parameters.linear_solver.type !=
-                      Parameters::LinearSolver::Type::iterative ||
-                    Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
-                  ExcMessage("Contact/Method = lagrange multiplier with "
-                             "Linear solver/Type = iterative runs on one "
-                             "process only; under MPI use Linear "
-                             "solver/Type = direct."));
       // A node's multipliers belong to the process that owns the node (and
       // evaluates it); every process reads all of them (the contact zone's
       // unknowns, few against the dofs).

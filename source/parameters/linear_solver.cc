@@ -15,11 +15,11 @@ namespace tribos
         "direct: a sparse direct solver (Direct solver); iterative: GMRES "
         "preconditioned by algebraic multigrid (ML with the rigid-body "
         "modes), its tolerance following Newton's residual (inexact "
-        "Newton); with Lagrange multipliers (one process): FGMRES on the "
+        "Newton); with Lagrange multipliers: FGMRES on the "
         "saddle-point system, preconditioned by the multipliers' "
         "elimination with GMRES + ML on the displacement-only matrix; "
         "auto: iterative for 3D systems above Iterative above "
-        "unknowns (with Lagrange multipliers on one process only), direct "
+        "unknowns, direct "
         "otherwise (the log says which). A direct 3D solve grows faster with the size than "
         "AMG (Hertz 3D, 121k unknowns: 3.2 s against 1.5 s per solve; "
         "21k: 0.13 against 0.27 s).");
@@ -27,8 +27,8 @@ namespace tribos
                         "50000",
                         dealii::Patterns::Integer(0),
                         "Type = auto: the size (unknowns) above which a 3D "
-                        "system is solved iteratively (with multipliers on "
-                        "one process only). With multipliers the two break "
+                        "system is solved iteratively. With multipliers (one "
+                        "process) the two break "
                         "even near 56k unknowns (3D Hertz: 1.95 s per "
                         "direct and 1.87 s per iterative solve) and the "
                         "iterative one wins at 121k (5.5 against 9.3 s).");
@@ -85,13 +85,11 @@ namespace tribos
 
     bool
     LinearSolver::iterative_for(const unsigned int  dim,
-                                const unsigned long n,
-                                const bool          saddle_point,
-                                const bool          serial) const
+                                const unsigned long n) const
     {
       if (type != Type::automatic)
         return type == Type::iterative;
-      return dim == 3 && (serial || !saddle_point) && n > iterative_above;
+      return dim == 3 && n > iterative_above;
     }
 
 

@@ -1,6 +1,6 @@
 #include <tribos/base/exceptions.h>
+#include <tribos/solver/distributed_elimination.h>
 #include <tribos/solver/linear_solver.h>
-#include <tribos/solver/multiplier_elimination.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
@@ -30,20 +30,18 @@ namespace tribos
 
 
   /**
-   * The iterative solve of a system with multipliers (serial): the
-   * multipliers are eliminated from a copy regularized like a penalty of
-   * 1/alpha times the local stiffness (MultiplierElimination), GMRES with
-   * ML solves the displacement-only matrix approximately, and that is the
+   * The iterative solve of a system with multipliers: the multipliers are
+   * eliminated from a copy regularized like a penalty of 1/alpha times the
+   * local stiffness (DistributedElimination), GMRES with ML solves the
+   * displacement-only matrix approximately, and that is the
    * preconditioner of FGMRES on the unmodified saddle-point system, which
    * removes the regularization.
    */
   struct LinearSolver::Eliminated
   {
-    unsigned long                  version = static_cast<unsigned long>(-1);
-    CompressedRows                 system, reduced;
-    MultiplierElimination          elimination;
-    TrilinosWrappers::SparseMatrix matrix;
-    Hierarchy                      hierarchy;
+    unsigned long          version = static_cast<unsigned long>(-1);
+    DistributedElimination elimination;
+    Hierarchy              hierarchy;
   };
 
 
@@ -151,118 +149,69 @@ namespace tribos
     constexpr double alpha = 1e-2;
     // The inner solves are a preconditioner: loose, FGMRES corrects them.
     constexpr double inner_tolerance = 1e-2;
-    AssertThrow(Utilities::MPI::n_mpi_processes(
-                  matrix.get_mpi_communicator()) == 1,
-                ExcMessage("Contact/Method = lagrange multiplier with Linear "
-                           "solver/Type = iterative runs on one process "
-                           "only; under MPI use Type = direct."));
     if (!eliminated)
       eliminated = std::make_unique<Eliminated>();
-    auto      &e           = *eliminated;
-    const bool new_pattern = e.version != pattern_version;
-    e.system.extract(matrix, new_pattern);
-    if (new_pattern)
+    auto &e = *eliminated;
+    if (e.version != pattern_version)
     {
-      if (!e.elimination.prepare(e.system,
-                                 first_multiplier,
-                                 multiplier_block,
-                                 e.reduced))
+      if (!e.elimination.prepare(matrix, first_multiplier, multiplier_block))
         throw NonConvergence(
           "the multipliers cannot be eliminated (a multiplier row couples "
           "to another node's multipliers): use Linear solver/Type = direct");
-      DynamicSparsityPattern pattern(e.reduced.n_rows(), e.reduced.n_rows());
-      for (int i = 0; i < e.reduced.n_rows(); ++i)
-        for (int k = e.reduced.row_start[i]; k < e.reduced.row_start[i + 1];
-             ++k)
-          pattern.add(i, e.reduced.columns[k]);
-      e.matrix.reinit(complete_index_set(e.reduced.n_rows()),
-                      complete_index_set(e.reduced.n_rows()),
-                      pattern,
-                      matrix.get_mpi_communicator());
       e.hierarchy.amg.reset();
       e.version = pattern_version;
     }
-    e.elimination.eliminate(e.system, alpha, e.reduced);
-    std::vector<types::global_dof_index> indices;
-    for (int i = 0; i < e.reduced.n_rows(); ++i)
-    {
-      const int begin = e.reduced.row_start[i],
-                end   = e.reduced.row_start[i + 1];
-      indices.assign(e.reduced.columns.begin() + begin,
-                     e.reduced.columns.begin() + end);
-      e.matrix.set(i,
-                   indices.size(),
-                   indices.data(),
-                   e.reduced.values.data() + begin,
-                   false);
-    }
-    e.matrix.compress(VectorOperation::insert);
+    e.elimination.eliminate(matrix, alpha);
 
     // The inner solve: GMRES + ML on the eliminated matrix (solve_with_amg).
-    const IndexSet rows = complete_index_set(e.reduced.n_rows());
-    Vector     inner_x(rows, matrix.get_mpi_communicator()), inner_b(inner_x);
-    const auto inner = [&](double *y, const double *z)
+    const auto inner = [&](Vector &y, const Vector &z)
     {
-      std::copy_n(z, e.reduced.n_rows(), inner_b.trilinos_vector()[0]);
-      inner_x = 0;
       try
       {
-        solve_with_amg(e.matrix,
+        solve_with_amg(e.elimination.matrix(),
                        e.hierarchy,
-                       inner_x,
-                       inner_b,
+                       y,
+                       z,
                        inner_tolerance);
       }
       catch (const SolverControl::NoConvergence &)
       {
         return false;
       }
-      std::copy_n(inner_x.trilinos_vector()[0], e.reduced.n_rows(), y);
       return true;
     };
 
     // FGMRES on the saddle-point system, preconditioned by the
     // elimination.
-    const unsigned int n = e.system.n_rows();
-    struct Operator
+    struct Preconditioner
     {
-      std::function<void(dealii::Vector<double> &,
-                         const dealii::Vector<double> &)>
-        function;
+      std::function<void(Vector &, const Vector &)> function;
       void
-      vmult(dealii::Vector<double> &y, const dealii::Vector<double> &z) const
+      vmult(Vector &y, const Vector &z) const
       {
         function(y, z);
       }
     };
-    bool           inner_failed = false;
-    const Operator A{
-      [&](dealii::Vector<double> &y, const dealii::Vector<double> &z)
-      {
-        e.system.vmult(z.begin(), y.begin());
-      }};
-    const Operator P{
-      [&](dealii::Vector<double> &y, const dealii::Vector<double> &z)
-      {
-        if (!e.elimination.apply(e.system, z.begin(), y.begin(), inner))
-        {
-          inner_failed = true;
-          y            = z;
-        }
-      }};
-    dealii::Vector<double> solution(n), right_hand_side(n);
-    std::copy_n(rhs.trilinos_vector()[0], n, right_hand_side.begin());
-    const double  relative = std::max(tolerance, parameters.tolerance);
-    SolverControl control(std::min(parameters.max_iterations, 200u),
-                          relative * right_hand_side.l2_norm(),
+    bool                 inner_failed = false;
+    const Preconditioner P{[&](Vector &y, const Vector &z)
+                           {
+                             if (!e.elimination.apply(z, y, inner))
+                             {
+                               inner_failed = true;
+                               y            = z;
+                             }
+                           }};
+    const double         relative = std::max(tolerance, parameters.tolerance);
+    SolverControl        control(std::min(parameters.max_iterations, 200u),
+                          relative * rhs.l2_norm(),
                           false,
                           false);
-    SolverFGMRES<dealii::Vector<double>> outer(
-      control,
-      SolverFGMRES<dealii::Vector<double>>::AdditionalData(200));
+    SolverFGMRES<Vector> outer(control,
+                               SolverFGMRES<Vector>::AdditionalData(200));
+    x = 0;
     try
     {
-      outer.solve(A, solution, right_hand_side, P);
+      outer.solve(matrix, x, rhs, P);
     }
     catch (const SolverControl::NoConvergence &failure)
     {
@@ -275,7 +224,6 @@ namespace tribos
                            "; try Linear solver/Type = direct");
     }
     total_refinements += control.last_step();
-    std::copy_n(solution.begin(), n, x.trilinos_vector()[0]);
     last = "FGMRES + eliminated multipliers (GMRES + ML)";
   }
 

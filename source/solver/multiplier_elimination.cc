@@ -7,6 +7,84 @@
 
 namespace tribos
 {
+  template <typename Index>
+  void
+  regularized_block_inverse(const unsigned int         size,
+                            const std::vector<double> &G,
+                            const std::vector<Index>  &rows,
+                            const std::vector<double> &H,
+                            const std::vector<Index>  &columns,
+                            const double               stiffness,
+                            const double               alpha,
+                            LAPACKFullMatrix<double>  &D,
+                            std::vector<double>       &inverse)
+  {
+    const unsigned int n_r = rows.size(), n_c = columns.size();
+    D.compute_svd();
+    const auto         &U  = D.get_svd_u();
+    const auto         &VT = D.get_svd_vt();
+    std::vector<double> Gv, Hw;
+    inverse.assign(size * size, 0.);
+    for (unsigned int s = 0; s < size; ++s)
+    {
+      // G v and H^T w of this singular pair, and their product over the
+      // dofs both touch (rows and columns are sorted).
+      Gv.assign(n_r, 0.);
+      Hw.assign(n_c, 0.);
+      for (unsigned int a = 0; a < n_r; ++a)
+        for (unsigned int c = 0; c < size; ++c)
+          Gv[a] += G[a * size + c] * VT(s, c);
+      for (unsigned int a = 0; a < n_c; ++a)
+        for (unsigned int c = 0; c < size; ++c)
+          Hw[a] += U(c, s) * H[c * n_c + a];
+      double g = 0, h = 0, product = 0;
+      for (const double v : Gv)
+        g += v * v;
+      for (const double v : Hw)
+        h += v * v;
+      for (unsigned int a = 0, c = 0; a < n_r && c < n_c;)
+        if (rows[a] < columns[c])
+          ++a;
+        else if (columns[c] < rows[a])
+          ++c;
+        else
+          product += Gv[a++] * Hw[c++];
+      const double penalty = alpha * std::sqrt(g * h) / stiffness;
+      double       sigma   = D.singular_value(s);
+      if (sigma < penalty)
+        sigma = product > 0 ? -penalty : penalty;
+      if (sigma == 0)
+        sigma = 1; // no coupling either way: any value
+      for (unsigned int c = 0; c < size; ++c)
+        for (unsigned int d = 0; d < size; ++d)
+          inverse[c * size + d] += VT(s, c) * U(d, s) / sigma;
+    }
+  }
+
+  template void
+  regularized_block_inverse<int>(const unsigned int,
+                                 const std::vector<double> &,
+                                 const std::vector<int> &,
+                                 const std::vector<double> &,
+                                 const std::vector<int> &,
+                                 const double,
+                                 const double,
+                                 LAPACKFullMatrix<double> &,
+                                 std::vector<double> &);
+  template void
+  regularized_block_inverse<types::global_dof_index>(
+    const unsigned int,
+    const std::vector<double> &,
+    const std::vector<types::global_dof_index> &,
+    const std::vector<double> &,
+    const std::vector<types::global_dof_index> &,
+    const double,
+    const double,
+    LAPACKFullMatrix<double> &,
+    std::vector<double> &);
+
+
+
   bool
   MultiplierElimination::prepare(const CompressedRows &A,
                                  const int             first_multiplier,
@@ -153,7 +231,7 @@ namespace tribos
           r.values[k_entries[k]] += values[k];
 
     LAPACKFullMatrix<double> D(size, size);
-    std::vector<double>      G, H, GI, Gv, Hw;
+    std::vector<double>      G, H, GI;
     for (int blk = 0; blk < n_blocks; ++blk)
     {
       const auto        &rows = g_rows[blk];
@@ -177,52 +255,22 @@ namespace tribos
       if (stiffness == 0)
         stiffness = 1;
 
-      D.compute_svd();
-      const auto &U     = D.get_svd_u();
-      const auto &VT    = D.get_svd_vt();
-      auto       &block = inverse[blk];
-      std::fill(block.begin(), block.end(), 0.);
-      for (int s = 0; s < size; ++s)
-      {
-        // G v and H^T w of this singular pair, and their product over the
-        // dofs both touch (rows and columns are sorted).
-        Gv.assign(n_r, 0.);
-        Hw.assign(n_c, 0.);
-        for (unsigned int a = 0; a < n_r; ++a)
-          for (int c = 0; c < size; ++c)
-            Gv[a] += G[a * size + c] * VT(s, c);
-        for (unsigned int a = 0; a < n_c; ++a)
-          for (int c = 0; c < size; ++c)
-            Hw[a] += U(c, s) * H[c * n_c + a];
-        double g = 0, h = 0, product = 0;
-        for (const double v : Gv)
-          g += v * v;
-        for (const double v : Hw)
-          h += v * v;
-        for (unsigned int a = 0, c = 0; a < n_r && c < n_c;)
-          if (rows[a] < cols[c])
-            ++a;
-          else if (cols[c] < rows[a])
-            ++c;
-          else
-            product += Gv[a++] * Hw[c++];
-        const double penalty = alpha * std::sqrt(g * h) / stiffness;
-        double       sigma   = D.singular_value(s);
-        if (sigma < penalty)
-          sigma = product > 0 ? -penalty : penalty;
-        if (sigma == 0)
-          sigma = 1; // no coupling either way: any value
-        for (int c = 0; c < size; ++c)
-          for (int d = 0; d < size; ++d)
-            block[c * size + d] += VT(s, c) * U(d, s) / sigma;
-      }
+      regularized_block_inverse(size,
+                                G,
+                                rows,
+                                H,
+                                cols,
+                                stiffness,
+                                alpha,
+                                D,
+                                inverse[blk]);
 
       // K - G D^-1 H.
       GI.assign(n_r * size, 0.);
       for (unsigned int a = 0; a < n_r; ++a)
         for (int c = 0; c < size; ++c)
           for (int d = 0; d < size; ++d)
-            GI[a * size + d] += G[a * size + c] * block[c * size + d];
+            GI[a * size + d] += G[a * size + c] * inverse[blk][c * size + d];
       for (unsigned int a = 0; a < n_r; ++a)
         for (unsigned int c = 0; c < n_c; ++c)
         {

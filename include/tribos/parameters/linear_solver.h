@@ -21,8 +21,8 @@ namespace tribos
         iterative
       };
       Type type;
-      /** auto: 3D systems without multipliers above this many unknowns are
-       * solved iteratively. */
+      /** auto: 3D systems above this many unknowns are solved
+       * iteratively. */
       unsigned long iterative_above;
       /** Direct solver as written: auto or an Amesos solver's name. */
       std::string direct_solver;
@@ -43,15 +43,10 @@ namespace tribos
       /**
        * Whether a system of @p n unknowns in @p dim dimensions is solved
        * iteratively: Type = iterative, or auto for a 3D system above
-       * Iterative above, with multipliers (@p saddle_point) only on one
-       * process (@p serial: the iterative solve with multipliers
-       * eliminates them on one process).
+       * Iterative above.
        */
       bool
-      iterative_for(const unsigned int  dim,
-                    const unsigned long n,
-                    const bool          saddle_point,
-                    const bool          serial) const;
+      iterative_for(const unsigned int dim, const unsigned long n) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -19,8 +19,7 @@ namespace tribos
 
   /**
    * The linear solve of a Newton iteration, chosen by Linear solver (Type
-   * = auto: iterative for large 3D systems, with multipliers on one
-   * process only, direct otherwise):
+   * = auto: iterative for large 3D systems, direct otherwise):
    *
    * - direct: on one process SuiteSparse (CHOLMOD for symmetric positive
    *   definite matrices, UMFPACK otherwise, contact multipliers eliminated
@@ -29,9 +28,10 @@ namespace tribos
    *   computed once per sparsity pattern and reused;
    * - iterative: GMRES preconditioned by ML algebraic multigrid with the
    *   near-null space it is given (the rigid-body modes), the tolerance
-   *   given by the Newton solver (inexact Newton); with multipliers (one
-   *   process) FGMRES on the whole system, preconditioned by their
-   *   elimination (MultiplierElimination) with GMRES + ML inside.
+   *   given by the Newton solver (inexact Newton); with multipliers
+   *   FGMRES on the whole system, preconditioned by their elimination
+   *   (DistributedElimination, any number of processes) with GMRES + ML
+   *   inside.
    *
    * A failure (singular matrix, GMRES without convergence) throws
    * NonConvergence, which cuts the increment.
@@ -125,11 +125,7 @@ namespace tribos
     bool
     iterative(const TrilinosWrappers::SparseMatrix &matrix) const
     {
-      return parameters.iterative_for(dim,
-                                      matrix.m(),
-                                      saddle_point,
-                                      Utilities::MPI::n_mpi_processes(
-                                        matrix.get_mpi_communicator()) == 1);
+      return parameters.iterative_for(dim, matrix.m());
     }
 
   private:

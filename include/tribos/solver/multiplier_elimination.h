@@ -3,11 +3,36 @@
 
 #include <tribos/solver/compressed_rows.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
+
 #include <functional>
 #include <vector>
 
 namespace tribos
 {
+  /**
+   * The inverse of one node's multiplier block @p D (@p size x @p size,
+   * overwritten by its SVD) into @p inverse (row-major), with D's singular
+   * values that are small against the block's coupling replaced as
+   * MultiplierElimination describes: @p G (|rows| x size, row-major) the
+   * block's columns in the displacement rows @p rows, @p H (size x
+   * |columns|) its rows in the displacement columns @p columns (both
+   * sorted), @p stiffness the largest diagonal entry of K among them.
+   */
+  template <typename Index>
+  void
+  regularized_block_inverse(const unsigned int         size,
+                            const std::vector<double> &G,
+                            const std::vector<Index>  &rows,
+                            const std::vector<double> &H,
+                            const std::vector<Index>  &columns,
+                            const double               stiffness,
+                            const double               alpha,
+                            LAPACKFullMatrix<double>  &D,
+                            std::vector<double>       &inverse);
+
+
+
   /**
    * Elimination of the contact multipliers from a saddle-point system,
    * for a solver of displacement-only systems (CHOLMOD, AMG).

@@ -1,0 +1,401 @@
+#include <tribos/solver/distributed_elimination.h>
+#include <tribos/solver/multiplier_elimination.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace tribos
+{
+  namespace
+  {
+    /** The position of @p index in the sorted @p list. */
+    unsigned int
+    position(const std::vector<types::global_dof_index> &list,
+             const types::global_dof_index               index)
+    {
+      const auto it = std::lower_bound(list.begin(), list.end(), index);
+      Assert(it != list.end() && *it == index, ExcInternalError());
+      return it - list.begin();
+    }
+  } // namespace
+
+
+
+  bool
+  DistributedElimination::prepare(const TrilinosWrappers::SparseMatrix &A,
+                                  const types::global_dof_index         first,
+                                  const unsigned int                    size)
+  {
+    communicator             = A.get_mpi_communicator();
+    this->first              = first;
+    this->size               = size;
+    const auto  n            = A.m();
+    const auto &system_owned = A.locally_owned_range_indices();
+    AssertThrow(size > 0 && first < n && (n - first) % size == 0,
+                ExcInternalError());
+    owned = system_owned.get_view(0, first);
+
+    // The blocks of this process, and the owner of every block.
+    std::vector<unsigned int> mine;
+    for (const auto i : system_owned.get_view(first, n))
+      if (i % size == 0)
+        mine.push_back(i / size);
+    block_owner.assign((n - first) / size, 0);
+    const auto all = Utilities::MPI::all_gather(communicator, mine);
+    for (unsigned int rank = 0; rank < all.size(); ++rank)
+      for (const auto b : all[rank])
+        block_owner[b] = rank;
+    blocks.assign(mine.size(), Block());
+    for (unsigned int k = 0; k < mine.size(); ++k)
+      blocks[k].first = first + mine[k] * size;
+
+    const bool separate = read_rows(A, true);
+    if (Utilities::MPI::min(separate ? 1 : 0, communicator) == 0)
+      return false;
+    gather_columns(A, true);
+
+    g_rows    = IndexSet(first);
+    h_columns = IndexSet(first);
+    for (const auto &b : blocks)
+    {
+      g_rows.add_indices(b.rows.begin(), b.rows.end());
+      h_columns.add_indices(b.columns.begin(), b.columns.end());
+    }
+    g_rows.compress();
+    h_columns.compress();
+
+    // The pattern: K's and, per block, rows x columns (rows anywhere).
+    IndexSet relevant = owned;
+    relevant.add_indices(g_rows);
+    DynamicSparsityPattern               pattern(first, first, relevant);
+    const Epetra_CrsMatrix              &E = A.trilinos_matrix();
+    int                                  length;
+    double                              *values;
+    int                                 *indices;
+    std::vector<types::global_dof_index> row;
+    for (const auto i : owned)
+    {
+      E.ExtractMyRowView(E.RowMap().LID(int(i)), length, values, indices);
+      row.clear();
+      for (int k = 0; k < length; ++k)
+      {
+        const types::global_dof_index j = E.ColMap().GID(indices[k]);
+        if (j < first)
+          row.push_back(j);
+      }
+      std::sort(row.begin(), row.end());
+      pattern.add_entries(i, row.begin(), row.end(), true);
+    }
+    for (const auto &b : blocks)
+      for (const auto i : b.rows)
+        pattern.add_entries(i, b.columns.begin(), b.columns.end(), true);
+    SparsityTools::distribute_sparsity_pattern(pattern,
+                                               owned,
+                                               communicator,
+                                               relevant);
+    reduced.clear();
+    reduced.reinit(owned, owned, pattern, communicator);
+
+    IndexSet ghosts = owned;
+    ghosts.add_indices(h_columns);
+    f.reinit(owned, communicator);
+    y_reduced.reinit(owned, communicator);
+    y_ghosted.reinit(owned, ghosts, communicator);
+    diagonal.reinit(owned, ghosts, communicator);
+    return true;
+  }
+
+
+
+  bool
+  DistributedElimination::read_rows(const TrilinosWrappers::SparseMatrix &A,
+                                    const bool pattern)
+  {
+    const Epetra_CrsMatrix &E = A.trilinos_matrix();
+    int                     length;
+    double                 *values;
+    int                    *indices;
+    for (auto &b : blocks)
+    {
+      if (pattern)
+      {
+        b.columns.clear();
+        for (unsigned int c = 0; c < size; ++c)
+        {
+          E.ExtractMyRowView(E.RowMap().LID(int(b.first + c)),
+                             length,
+                             values,
+                             indices);
+          for (int k = 0; k < length; ++k)
+          {
+            const types::global_dof_index j = E.ColMap().GID(indices[k]);
+            if (j < first)
+              b.columns.push_back(j);
+            else if (j < b.first || j >= b.first + size)
+              return false;
+          }
+        }
+        std::sort(b.columns.begin(), b.columns.end());
+        b.columns.erase(std::unique(b.columns.begin(), b.columns.end()),
+                        b.columns.end());
+      }
+      b.h.assign(size * b.columns.size(), 0.);
+      b.d.assign(size * size, 0.);
+      for (unsigned int c = 0; c < size; ++c)
+      {
+        E.ExtractMyRowView(E.RowMap().LID(int(b.first + c)),
+                           length,
+                           values,
+                           indices);
+        for (int k = 0; k < length; ++k)
+        {
+          const types::global_dof_index j = E.ColMap().GID(indices[k]);
+          if (j < first)
+            b.h[c * b.columns.size() + position(b.columns, j)] += values[k];
+          else
+            b.d[c * size + (j - b.first)] += values[k];
+        }
+      }
+    }
+    return true;
+  }
+
+
+
+  void
+  DistributedElimination::gather_columns(
+    const TrilinosWrappers::SparseMatrix &A,
+    const bool                            pattern)
+  {
+    // Per entry of a displacement row in a multiplier column: the block,
+    // the row, the multiplier of the block, the value and the row's
+    // diagonal entry, to the block's owner.
+    const Epetra_CrsMatrix                     &E = A.trilinos_matrix();
+    int                                         length;
+    double                                     *values;
+    int                                        *indices;
+    std::map<unsigned int, std::vector<double>> send;
+    for (const auto i : owned)
+    {
+      E.ExtractMyRowView(E.RowMap().LID(int(i)), length, values, indices);
+      double diagonal_entry = 0;
+      bool   coupled        = false;
+      for (int k = 0; k < length; ++k)
+      {
+        const types::global_dof_index j = E.ColMap().GID(indices[k]);
+        if (j == i)
+          diagonal_entry = values[k];
+        coupled = coupled || j >= first;
+      }
+      if (!coupled)
+        continue;
+      for (int k = 0; k < length; ++k)
+      {
+        const types::global_dof_index j = E.ColMap().GID(indices[k]);
+        if (j < first)
+          continue;
+        const unsigned int b = (j - first) / size;
+        auto              &m = send[block_owner[b]];
+        m.insert(m.end(),
+                 {double(b),
+                  double(i),
+                  double((j - first) % size),
+                  values[k],
+                  diagonal_entry});
+      }
+    }
+    const auto received = Utilities::MPI::some_to_some(communicator, send);
+
+    // The blocks of this process by global number.
+    std::map<types::global_dof_index, unsigned int> local;
+    for (unsigned int k = 0; k < blocks.size(); ++k)
+      local[(blocks[k].first - first) / size] = k;
+    if (pattern)
+    {
+      for (auto &b : blocks)
+        b.rows.clear();
+      for (const auto &[rank, m] : received)
+        for (std::size_t k = 0; k < m.size(); k += 5)
+          blocks[local.at(types::global_dof_index(m[k]))].rows.push_back(
+            types::global_dof_index(m[k + 1]));
+      for (auto &b : blocks)
+      {
+        std::sort(b.rows.begin(), b.rows.end());
+        b.rows.erase(std::unique(b.rows.begin(), b.rows.end()), b.rows.end());
+      }
+    }
+    for (auto &b : blocks)
+    {
+      b.g.assign(b.rows.size() * size, 0.);
+      b.row_diagonal.assign(b.rows.size(), 0.);
+    }
+    for (const auto &[rank, m] : received)
+      for (std::size_t k = 0; k < m.size(); k += 5)
+      {
+        auto              &b = blocks[local.at(types::global_dof_index(m[k]))];
+        const unsigned int a =
+          position(b.rows, types::global_dof_index(m[k + 1]));
+        b.g[a * size + (unsigned int)(m[k + 2])] += m[k + 3];
+        b.row_diagonal[a] = m[k + 4];
+      }
+  }
+
+
+
+  void
+  DistributedElimination::eliminate(const TrilinosWrappers::SparseMatrix &A,
+                                    const double                          alpha)
+  {
+    read_rows(A, false);
+    gather_columns(A, false);
+
+    // K, and its diagonal for the regularization's scale.
+    reduced = 0;
+    Vector                               own_diagonal(owned, communicator);
+    const Epetra_CrsMatrix              &E = A.trilinos_matrix();
+    int                                  length;
+    double                              *values;
+    int                                 *indices;
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  entries;
+    for (const auto i : owned)
+    {
+      E.ExtractMyRowView(E.RowMap().LID(int(i)), length, values, indices);
+      columns.clear();
+      entries.clear();
+      for (int k = 0; k < length; ++k)
+      {
+        const types::global_dof_index j = E.ColMap().GID(indices[k]);
+        if (j >= first)
+          continue;
+        columns.push_back(j);
+        entries.push_back(values[k]);
+        if (j == i)
+          own_diagonal(i) = values[k];
+      }
+      reduced.add(i, columns, entries, false);
+    }
+    own_diagonal.compress(VectorOperation::insert);
+    diagonal = own_diagonal;
+
+    LAPACKFullMatrix<double> D(size, size);
+    std::vector<double>      GI;
+    for (auto &b : blocks)
+    {
+      const unsigned int n_r = b.rows.size(), n_c = b.columns.size();
+      double             stiffness = 0;
+      for (const double k : b.row_diagonal)
+        stiffness = std::max(stiffness, std::abs(k));
+      for (const auto j : b.columns)
+        stiffness = std::max(stiffness, std::abs(diagonal(j)));
+      if (stiffness == 0)
+        stiffness = 1;
+      D.reinit(size, size);
+      for (unsigned int c = 0; c < size; ++c)
+        for (unsigned int d = 0; d < size; ++d)
+          D(c, d) = b.d[c * size + d];
+      regularized_block_inverse(size,
+                                b.g,
+                                b.rows,
+                                b.h,
+                                b.columns,
+                                stiffness,
+                                alpha,
+                                D,
+                                b.inverse);
+
+      // - G D~^-1 H into the rows of G.
+      GI.assign(n_r * size, 0.);
+      for (unsigned int a = 0; a < n_r; ++a)
+        for (unsigned int c = 0; c < size; ++c)
+          for (unsigned int d = 0; d < size; ++d)
+            GI[a * size + d] += b.g[a * size + c] * b.inverse[c * size + d];
+      entries.resize(n_c);
+      for (unsigned int a = 0; a < n_r; ++a)
+      {
+        for (unsigned int c = 0; c < n_c; ++c)
+        {
+          double sum = 0;
+          for (unsigned int d = 0; d < size; ++d)
+            sum += GI[a * size + d] * b.h[d * n_c + c];
+          entries[c] = -sum;
+        }
+        reduced.add(b.rows[a], b.columns, entries, false);
+      }
+    }
+    reduced.compress(VectorOperation::add);
+  }
+
+
+
+  bool
+  DistributedElimination::apply(const Vector       &z,
+                                Vector             &y,
+                                const ReducedSolve &solve)
+  {
+    // The multipliers' part through D~^-1 into the rows of G, the reduced
+    // solve, then the multipliers from their rows.
+    const unsigned int n_own = owned.n_elements();
+    const auto        &Z     = z.trilinos_vector();
+    auto              &Y     = y.trilinos_vector();
+    std::copy_n(Z[0], n_own, f.trilinos_vector()[0]);
+    std::vector<types::global_dof_index> rows;
+    std::vector<double>                  values;
+    double                               t[3];
+    for (const auto &b : blocks)
+    {
+      const double *zl = Z[0] + Z.Map().LID(int(b.first));
+      for (unsigned int c = 0; c < size; ++c)
+      {
+        t[c] = 0;
+        for (unsigned int d = 0; d < size; ++d)
+          t[c] += b.inverse[c * size + d] * zl[d];
+      }
+      for (unsigned int a = 0; a < b.rows.size(); ++a)
+      {
+        double sum = 0;
+        for (unsigned int c = 0; c < size; ++c)
+          sum += b.g[a * size + c] * t[c];
+        rows.push_back(b.rows[a]);
+        values.push_back(-sum);
+      }
+    }
+    f.add(rows, values);
+    f.compress(VectorOperation::add);
+
+    y_reduced = 0;
+    if (!solve(y_reduced, f))
+      return false;
+    y_ghosted = y_reduced;
+    std::copy_n(y_reduced.trilinos_vector()[0], n_own, Y[0]);
+    double q[3];
+    for (const auto &b : blocks)
+    {
+      const double      *zl  = Z[0] + Z.Map().LID(int(b.first));
+      double            *yl  = Y[0] + Y.Map().LID(int(b.first));
+      const unsigned int n_c = b.columns.size();
+      for (unsigned int c = 0; c < size; ++c)
+      {
+        q[c] = zl[c];
+        for (unsigned int a = 0; a < n_c; ++a)
+          q[c] -= b.h[c * n_c + a] * y_ghosted(b.columns[a]);
+      }
+      for (unsigned int c = 0; c < size; ++c)
+      {
+        yl[c] = 0;
+        for (unsigned int d = 0; d < size; ++d)
+          yl[c] += b.inverse[c * size + d] * q[d];
+      }
+    }
+    return true;
+  }
+} // namespace tribos
