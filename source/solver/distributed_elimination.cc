@@ -23,7 +23,7 @@ namespace tribos
              const types::global_dof_index               index)
     {
       const auto it = std::lower_bound(list.begin(), list.end(), index);
-      Assert(it != list.end() && *it == index, ExcInternalError());
+      AssertThrow(it != list.end() && *it == index, ExcInternalError());
       return it - list.begin();
     }
   } // namespace
@@ -40,7 +40,7 @@ namespace tribos
     this->size               = size;
     const auto  n            = A.m();
     const auto &system_owned = A.locally_owned_range_indices();
-    AssertThrow(size > 0 && first < n && (n - first) % size == 0,
+    AssertThrow(size > 0 && size <= 3 && first < n && (n - first) % size == 0,
                 ExcInternalError());
     owned = system_owned.get_view(0, first);
 
@@ -63,7 +63,7 @@ namespace tribos
       return false;
     gather_columns(A, true);
 
-    g_rows    = IndexSet(first);
+    IndexSet g_rows(first);
     h_columns = IndexSet(first);
     for (const auto &b : blocks)
     {
@@ -105,11 +105,51 @@ namespace tribos
     reduced.clear();
     reduced.reinit(owned, owned, pattern, communicator);
 
+    // Where eliminate() copies K to and finds the diagonal entries.
+    const Epetra_CrsMatrix &R = reduced.trilinos_matrix();
+    AssertThrow(R.NumMyRows() == int(owned.n_elements()), ExcInternalError());
+    column_in_reduced.assign(E.NumMyCols(), -1);
+    for (int c = 0; c < E.NumMyCols(); ++c)
+    {
+      const types::global_dof_index j = E.ColMap().GID(c);
+      if (j < first)
+      {
+        column_in_reduced[c] = R.ColMap().LID(int(j));
+        AssertThrow(column_in_reduced[c] >= 0, ExcInternalError());
+      }
+    }
+    diagonal_position.assign(owned.n_elements(), -1);
+    coupled_rows.clear();
+    for (int r = 0; r < int(owned.n_elements()); ++r)
+    {
+      AssertThrow(E.RowMap().GID(r) == int(owned.nth_index_in_set(r)),
+                  ExcInternalError());
+      E.ExtractMyRowView(r, length, values, indices);
+      bool coupled = false;
+      for (int k = 0; k < length; ++k)
+      {
+        if (E.ColMap().GID(indices[k]) == E.RowMap().GID(r))
+          diagonal_position[r] = k;
+        coupled = coupled || column_in_reduced[indices[k]] < 0;
+      }
+      if (coupled)
+        coupled_rows.push_back(r);
+      // eliminate() finds entries by bisection.
+      int     r_length;
+      double *r_values;
+      int    *r_indices;
+      R.ExtractMyRowView(r, r_length, r_values, r_indices);
+      AssertThrow(std::is_sorted(r_indices, r_indices + r_length),
+                  ExcInternalError());
+    }
+
     IndexSet ghosts = owned;
     ghosts.add_indices(h_columns);
     f.reinit(owned, communicator);
     y_reduced.reinit(owned, communicator);
     y_ghosted.reinit(owned, ghosts, communicator);
+    import = std::make_unique<Epetra_Import>(y_ghosted.trilinos_vector().Map(),
+                                             y_reduced.trilinos_vector().Map());
     diagonal.reinit(owned, ghosts, communicator);
     return true;
   }
@@ -184,9 +224,17 @@ namespace tribos
     double                                     *values;
     int                                        *indices;
     std::map<unsigned int, std::vector<double>> send;
-    for (const auto i : owned)
+    // A new pattern: every row is looked at; later ones only the rows found
+    // coupled then.
+    std::vector<int> rows;
+    if (pattern)
+      for (int r = 0; r < int(owned.n_elements()); ++r)
+        rows.push_back(r);
+    const auto &candidates = pattern ? rows : coupled_rows;
+    for (const int r : candidates)
     {
-      E.ExtractMyRowView(E.RowMap().LID(int(i)), length, values, indices);
+      const types::global_dof_index i = E.RowMap().GID(r);
+      E.ExtractMyRowView(r, length, values, indices);
       double diagonal_entry = 0;
       bool   coupled        = false;
       for (int k = 0; k < length; ++k)
@@ -258,35 +306,34 @@ namespace tribos
     read_rows(A, false);
     gather_columns(A, false);
 
-    // K, and its diagonal for the regularization's scale.
-    reduced = 0;
-    Vector                               own_diagonal(owned, communicator);
-    const Epetra_CrsMatrix              &E = A.trilinos_matrix();
-    int                                  length;
-    double                              *values;
-    int                                 *indices;
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  entries;
-    for (const auto i : owned)
+    // K, and its diagonal for the regularization's scale, row by row
+    // through the maps prepare() made (local indices, sorted rows).
+    reduced                   = 0;
+    const Epetra_CrsMatrix &E = A.trilinos_matrix();
+    // Epetra's views are writable through a const matrix.
+    const Epetra_CrsMatrix &R = reduced.trilinos_matrix();
+    Vector                  own_diagonal(owned, communicator);
+    double                 *diagonal_values = own_diagonal.trilinos_vector()[0];
+    int                     length, r_length;
+    double                 *values, *r_values;
+    int                    *indices, *r_indices;
+    for (int r = 0; r < int(owned.n_elements()); ++r)
     {
-      E.ExtractMyRowView(E.RowMap().LID(int(i)), length, values, indices);
-      columns.clear();
-      entries.clear();
+      E.ExtractMyRowView(r, length, values, indices);
+      R.ExtractMyRowView(r, r_length, r_values, r_indices);
       for (int k = 0; k < length; ++k)
       {
-        const types::global_dof_index j = E.ColMap().GID(indices[k]);
-        if (j >= first)
-          continue;
-        columns.push_back(j);
-        entries.push_back(values[k]);
-        if (j == i)
-          own_diagonal(i) = values[k];
+        const int c = column_in_reduced[indices[k]];
+        if (c >= 0)
+          r_values[std::lower_bound(r_indices, r_indices + r_length, c) -
+                   r_indices] += values[k];
       }
-      reduced.add(i, columns, entries, false);
+      diagonal_values[r] =
+        diagonal_position[r] >= 0 ? values[diagonal_position[r]] : 0.;
     }
-    own_diagonal.compress(VectorOperation::insert);
     diagonal = own_diagonal;
 
+    std::vector<double>      entries;
     LAPACKFullMatrix<double> D(size, size);
     std::vector<double>      GI;
     for (auto &b : blocks)
@@ -375,7 +422,9 @@ namespace tribos
     y_reduced = 0;
     if (!solve(y_reduced, f))
       return false;
-    y_ghosted = y_reduced;
+    y_ghosted.trilinos_vector().Import(y_reduced.trilinos_vector(),
+                                       *import,
+                                       Insert);
     std::copy_n(y_reduced.trilinos_vector()[0], n_own, Y[0]);
     double q[3];
     for (const auto &b : blocks)

@@ -5,7 +5,10 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Epetra_Import.h>
+
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace tribos
@@ -92,9 +95,19 @@ namespace tribos
     types::global_dof_index first = 0;
     unsigned int            size  = 0;
     MPI_Comm                communicator;
-    /** This process's displacement rows; the rows of G and the columns of
-     * H of its blocks (ghosts of the vectors apply() uses). */
-    IndexSet owned, g_rows, h_columns;
+    /** This process's displacement rows; the columns of H of its blocks
+     * (the ghosts of the vectors apply() and eliminate() read). */
+    IndexSet owned, h_columns;
+    /**
+     * Per local column of the system matrix, its local column in the
+     * eliminated matrix (-1: a multiplier); per owned row, the position of
+     * its diagonal entry in the system matrix's row; the owned rows with
+     * entries in multiplier columns. The system's own rows are its dofs
+     * first, so a dof's local row is the same in both matrices.
+     */
+    std::vector<int> column_in_reduced, diagonal_position, coupled_rows;
+    /** y_reduced's values into y_ghosted (owned and H's columns). */
+    std::unique_ptr<Epetra_Import> import;
     /** Per block of the whole system (global number), its process. */
     std::vector<unsigned int>      block_owner;
     std::vector<Block>             blocks;

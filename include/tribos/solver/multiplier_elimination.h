@@ -17,7 +17,7 @@ namespace tribos
    * MultiplierElimination describes: @p G (|rows| x size, row-major) the
    * block's columns in the displacement rows @p rows, @p H (size x
    * |columns|) its rows in the displacement columns @p columns (both
-   * sorted), @p stiffness the largest diagonal entry of K among them.
+   * sorted), @p stiffness the largest |diagonal entry| of K among them.
    */
   template <typename Index>
   void
