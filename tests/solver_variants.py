@@ -1,6 +1,10 @@
 """Linear solvers: GMRES with AMG and the MUMPS direct solver give the
-same history as the default (KLU) reference of regression/cylinder_3d."""
+same history as the default (KLU) reference of regression/cylinder_3d.
+Type = auto chooses by the size and the number of processes: iterative
+above Iterative above (one process) or Iterative above under MPI
+(several), direct below, and summary.txt says which ran."""
 
+import os
 import sys
 
 from tribos_test import setup, run, strip_columns, numdiff, check, finish
@@ -19,4 +23,44 @@ for name, sets in (("gmres_amg", ["Linear solver/Type=iterative",
     numdiff(folder + "/h.csv", out + "/reference.csv", relative=1e-6,
             absolute=1e-8)
     print("ok      %s reproduces the KLU reference within 1e-6" % name)
+
+
+def solver_line(folder):
+    with open(folder + "/summary.txt") as f:
+        for line in f:
+            if line.startswith("linear solver"):
+                return line.split(None, 2)[2].strip()
+    return ""
+
+
+# Type = auto: the thresholds decide (the scene has a few thousand
+# unknowns, so 0 and 10^9 put it above and below).
+cases = [("auto_serial_above", ["Linear solver/Iterative above=0"], 0,
+          "GMRES + ML"),
+         ("auto_serial_below", ["Linear solver/Iterative above=1000000000"],
+          0, "(SuiteSparse)"),
+         # one process ignores the MPI threshold
+         ("auto_serial_mpi_threshold",
+          ["Linear solver/Iterative above=1000000000",
+           "Linear solver/Iterative above under MPI=0"], 0,
+          "(SuiteSparse)")]
+if os.environ.get("MPIEXEC") or any(
+        os.access(os.path.join(p, "mpirun"), os.X_OK)
+        for p in os.environ.get("PATH", "").split(os.pathsep)):
+    os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+    os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+    os.environ.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+    cases += [("auto_np2_above", ["Linear solver/Iterative above=1000000000",
+                                  "Linear solver/Iterative above under MPI=0"],
+               2, "GMRES + ML"),
+              ("auto_np2_below", ["Linear solver/Iterative above=0",
+                                  "Linear solver/Iterative above under "
+                                  "MPI=1000000000"], 2, "Amesos_Mumps")]
+for name, sets, ranks, expected in cases:
+    folder = out + "/" + name
+    run(tribos, tests + "/cylinder_3d.prm", folder,
+        ["Linear solver/Type=auto"] + sets, mpi_ranks=ranks)
+    used = solver_line(folder)
+    check(used.endswith(expected), "%s: solved with <%s> (expected <%s>)"
+          % (name, used, expected))
 finish()

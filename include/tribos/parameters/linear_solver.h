@@ -24,6 +24,8 @@ namespace tribos
       /** auto: 3D systems above this many unknowns are solved
        * iteratively. */
       unsigned long iterative_above;
+      /** The same on several processes (the direct solver is MUMPS). */
+      unsigned long iterative_above_under_mpi;
       /** Direct solver as written: auto or an Amesos solver's name. */
       std::string direct_solver;
       /** Multipliers (serial suitesparse solves): eliminated from a
@@ -43,10 +45,13 @@ namespace tribos
       /**
        * Whether a system of @p n unknowns in @p dim dimensions is solved
        * iteratively: Type = iterative, or auto for a 3D system above
-       * Iterative above.
+       * Iterative above, or on several processes (not @p serial) above
+       * Iterative above under MPI.
        */
       bool
-      iterative_for(const unsigned int dim, const unsigned long n) const;
+      iterative_for(const unsigned int  dim,
+                    const unsigned long n,
+                    const bool          serial) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -125,7 +125,10 @@ namespace tribos
     bool
     iterative(const TrilinosWrappers::SparseMatrix &matrix) const
     {
-      return parameters.iterative_for(dim, matrix.m());
+      return parameters.iterative_for(dim,
+                                      matrix.m(),
+                                      Utilities::MPI::n_mpi_processes(
+                                        matrix.get_mpi_communicator()) == 1);
     }
 
   private:
