@@ -135,8 +135,9 @@ namespace tribos
                         "node updated (Uzawa) until the penetration is "
                         "below Augmentation tolerance; lagrange multiplier: "
                         "exact contact, the traction of every slave node is "
-                        "an unknown of the system (saddle point, direct "
-                        "solver, one MPI process); the active set and "
+                        "an unknown of the system (saddle point; direct or, "
+                        "the multipliers eliminated, iterative solves, on "
+                        "any number of MPI processes); the active set and "
                         "stick/slip follow from lambda - eps_N g_N inside "
                         "Newton, so eps_N then only affects the iterates.");
       prm.declare_entry(
