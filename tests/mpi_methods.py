@@ -10,7 +10,9 @@ distributed (Parallel/Mesh = distributed: each process holds its own cells
 and a ghost layer): every run with a deformable master must pair slave
 nodes with master faces of another process, and the 3D blocks (node to
 segment) must see a slave node's master face pass to another process while
-sliding (summary.txt counts both)."""
+sliding (summary.txt counts both). The 3D blocks, node to segment and
+mortar, also run each method with Linear solver/Type = iterative at np 2
+(GMRES + ML; FGMRES with the multipliers eliminated across processes)."""
 
 import sys
 
