@@ -42,7 +42,7 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
-from solver_speed import run_once, summary  # noqa: E402
+from solver_speed import run_once, summary, with_earlier_rows  # noqa: E402
 
 BLOCKS = "tests/sliding_blocks_3d.prm"
 CYLINDER = "parameters/cylinder_compression.prm"
@@ -175,11 +175,7 @@ def main():
                "peak_mb_process", "peak_mb_all", "ghost_values",
                "contact_ghost_values", "paired_across"]
     # The rows of the cases not run stay as they were.
-    kept = []
-    if os.path.exists(args.out):
-        with open(args.out) as f:
-            kept = [r for r in csv.DictReader(f) if r["case"] not in names]
-    rows = kept + rows
+    rows = with_earlier_rows(args.out, rows, names)
     os.makedirs(os.path.dirname(args.out), exist_ok=True)
     with open(args.out, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=columns)

@@ -97,6 +97,15 @@ SECTIONS = ["assembly", "contact assembly", "contact search",
             "linear solve", "output", "setup"]
 
 
+def with_earlier_rows(path, rows, cases):
+    """rows after the rows of the CSV at path whose case is not in cases:
+    a run of some cases keeps the others' measurements."""
+    if not os.path.exists(path):
+        return rows
+    with open(path) as f:
+        return [r for r in csv.DictReader(f) if r["case"] not in cases] + rows
+
+
 def run_once(tribos, prm, sets, folder, launch=None):
     """Wall time and peak RSS (MB) of one run (os.wait4 gives the child's
     own rusage, under mpirun the largest of its processes'). launch:
@@ -230,11 +239,8 @@ def main():
             print("%-22s %7.3f s" % ("tribos --help", w))
 
     # With --only, the rows of the cases not run stay as they were.
-    if args.only and rows and os.path.exists(args.out):
-        ran = {r["case"] for r in rows}
-        with open(args.out) as f:
-            kept = [r for r in csv.DictReader(f) if r["case"] not in ran]
-        rows = kept + rows
+    if args.only and rows:
+        rows = with_earlier_rows(args.out, rows, {r["case"] for r in rows})
     if rows:
         names = []
         for r in rows:

@@ -13,7 +13,8 @@ history within 1e-6."""
 import os
 import sys
 
-from tribos_test import (setup, run, strip_columns, numdiff, check, finish)
+from tribos_test import (setup, run, strip_columns, numdiff, check, finish,
+                         mpi_available, solver_line)
 
 tribos, tests, out = setup(sys.argv)
 LM = ["Contact/Method=lagrange multiplier"]
@@ -40,13 +41,6 @@ noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all", "chattering_nodes")
 
 
-def solver_line(folder):
-    with open(folder + "/summary.txt") as f:
-        for line in f:
-            if line.startswith("linear solver"):
-                return line.split(None, 2)[2].strip()
-    return ""
-
 
 for case, (prm, sets, direct) in CASES.items():
     for solve, extra in SOLVES.items():
@@ -69,12 +63,7 @@ for case, (prm, sets, direct) in CASES.items():
 # Under MPI the multipliers are eliminated across processes (each node's
 # block on its owner, its columns gathered from the owners of the slave
 # and master rows): the same history as the serial LU to 1e-6.
-if os.environ.get("MPIEXEC") or any(
-        os.access(os.path.join(p, "mpirun"), os.X_OK)
-        for p in os.environ.get("PATH", "").split(os.pathsep)):
-    os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-    os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    os.environ.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+if mpi_available():
     for case, ranks in (("sliding_blocks_3d", 2), ("sliding_blocks_3d", 3),
                         ("hertz_3d", 2)):
         prm, sets, _ = CASES[case]

@@ -28,14 +28,22 @@ tribos, tests, out = setup(sys.argv)
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all", "chattering_nodes")
 methods = ("penalty", "augmented lagrangian", "lagrange multiplier")
+
+
+def case(scene, method):
+    """The parameter file, settings and name of a scene (a _mortar suffix:
+    the same file with mortar) with an enforcement method."""
+    sets = ["Contact/Method=" + method, "Output/Write VTU=false"]
+    if scene.endswith("mortar"):
+        sets.append("Contact/Discretization=mortar")
+    return ("%s/%s.prm" % (tests, scene.replace("_mortar", "")), sets,
+            "%s_%s" % (scene, method.replace(" ", "_")))
+
+
 for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d",
               "ironing_2d_mortar", "sliding_blocks_3d_mortar"):
-    prm = "%s/%s.prm" % (tests, scene.replace("_mortar", ""))
     for method in methods:
-        sets = ["Contact/Method=" + method, "Output/Write VTU=false"]
-        if scene.endswith("mortar"):
-            sets.append("Contact/Discretization=mortar")
-        name = "%s_%s" % (scene, method.replace(" ", "_"))
+        prm, sets, name = case(scene, method)
         serial = out + "/" + name + "_np1"
         run(tribos, prm, serial, sets)
         strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
@@ -71,12 +79,8 @@ for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d",
 # where every node slips, the sliding mode is nearly free, so that gap
 # (1.9e-6) differs in its third digit between two converged solves.
 for scene in ("sliding_blocks_3d", "sliding_blocks_3d_mortar"):
-    prm = "%s/%s.prm" % (tests, scene.replace("_mortar", ""))
     for method in methods:
-        sets = ["Contact/Method=" + method, "Output/Write VTU=false"]
-        if scene.endswith("mortar"):
-            sets.append("Contact/Discretization=mortar")
-        name = "%s_%s" % (scene, method.replace(" ", "_"))
+        prm, sets, name = case(scene, method)
         serial = out + "/" + name + "_np1"
         parallel = out + "/%s_iterative_np2" % name
         run(tribos, prm, parallel, sets + ["Linear solver/Type=iterative",

@@ -16,13 +16,14 @@ import shutil
 import subprocess
 import sys
 
-from tribos_test import setup, run, strip_columns, numdiff, check, finish
+from tribos_test import (setup, run, strip_columns, numdiff, check, finish,
+                         mpi_available)
 
 tribos, tests, out = setup(sys.argv)
 parameters = os.path.join(tests, "..", "parameters")
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all", "energy_error")
-has_mpi = shutil.which(os.environ.get("MPIEXEC", "mpirun")) is not None
+has_mpi = mpi_available()
 
 
 def compare(reference, restarted, name):

@@ -4,10 +4,10 @@ Type = auto chooses by the size and the number of processes: iterative
 above Iterative above (one process) or Iterative above under MPI
 (several), direct below, and summary.txt says which ran."""
 
-import os
 import sys
 
-from tribos_test import setup, run, strip_columns, numdiff, check, finish
+from tribos_test import (setup, run, strip_columns, numdiff, check, finish,
+                         mpi_available, solver_line)
 
 tribos, tests, out = setup(sys.argv)
 noisy = ("wall_time", "residual", "newton_iterations",
@@ -24,15 +24,6 @@ for name, sets in (("gmres_amg", ["Linear solver/Type=iterative",
             absolute=1e-8)
     print("ok      %s reproduces the KLU reference within 1e-6" % name)
 
-
-def solver_line(folder):
-    with open(folder + "/summary.txt") as f:
-        for line in f:
-            if line.startswith("linear solver"):
-                return line.split(None, 2)[2].strip()
-    return ""
-
-
 # Type = auto: the thresholds decide (the scene has a few thousand
 # unknowns, so 0 and 10^9 put it above and below).
 cases = [("auto_serial_above", ["Linear solver/Iterative above=0"], 0,
@@ -44,12 +35,7 @@ cases = [("auto_serial_above", ["Linear solver/Iterative above=0"], 0,
           ["Linear solver/Iterative above=1000000000",
            "Linear solver/Iterative above under MPI=0"], 0,
           "(SuiteSparse)")]
-if os.environ.get("MPIEXEC") or any(
-        os.access(os.path.join(p, "mpirun"), os.X_OK)
-        for p in os.environ.get("PATH", "").split(os.pathsep)):
-    os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-    os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    os.environ.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
+if mpi_available():
     cases += [("auto_np2_above", ["Linear solver/Iterative above=1000000000",
                                   "Linear solver/Iterative above under MPI=0"],
                2, "GMRES + ML"),

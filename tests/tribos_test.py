@@ -38,6 +38,27 @@ def run(tribos, prm, out, sets=(), mpi_ranks=0, expect_success=True,
     return result
 
 
+def mpi_available():
+    """Whether mpirun (or $MPIEXEC) is installed; if so, let it run as root
+    and oversubscribe a small machine (unless the environment says
+    otherwise)."""
+    if shutil.which(os.environ.get("MPIEXEC", "mpirun")) is None:
+        return False
+    for variable in ("OMPI_ALLOW_RUN_AS_ROOT", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM",
+                     "OMPI_MCA_rmaps_base_oversubscribe"):
+        os.environ.setdefault(variable, "1")
+    return True
+
+
+def solver_line(folder):
+    """The linear solver summary.txt reports ("" if none)."""
+    with open(folder + "/summary.txt") as f:
+        for line in f:
+            if line.startswith("linear solver"):
+                return line.split(None, 2)[2].strip()
+    return ""
+
+
 def read_csv(path):
     """Rows of a CSV file as a list of dicts of floats."""
     with open(path) as f:

@@ -58,6 +58,31 @@ namespace tribos
     for (unsigned int k = 0; k < mine.size(); ++k)
       blocks[k].first = first + mine[k] * size;
 
+    // Per owned row: its diagonal entry, and whether it has entries in
+    // multiplier columns (the rows gather_columns() sends).
+    const Epetra_CrsMatrix &E = A.trilinos_matrix();
+    int                     length;
+    double                 *values;
+    int                    *indices;
+    diagonal_position.assign(owned.n_elements(), -1);
+    coupled_rows.clear();
+    for (int r = 0; r < int(owned.n_elements()); ++r)
+    {
+      const types::global_dof_index i = owned.nth_index_in_set(r);
+      AssertThrow(E.RowMap().GID(r) == int(i), ExcInternalError());
+      E.ExtractMyRowView(r, length, values, indices);
+      bool coupled = false;
+      for (int k = 0; k < length; ++k)
+      {
+        const types::global_dof_index j = E.ColMap().GID(indices[k]);
+        if (j == i)
+          diagonal_position[r] = k;
+        coupled = coupled || j >= first;
+      }
+      if (coupled)
+        coupled_rows.push_back(r);
+    }
+
     const bool separate = read_rows(A, true);
     if (Utilities::MPI::min(separate ? 1 : 0, communicator) == 0)
       return false;
@@ -77,10 +102,6 @@ namespace tribos
     IndexSet relevant = owned;
     relevant.add_indices(g_rows);
     DynamicSparsityPattern               pattern(first, first, relevant);
-    const Epetra_CrsMatrix              &E = A.trilinos_matrix();
-    int                                  length;
-    double                              *values;
-    int                                 *indices;
     std::vector<types::global_dof_index> row;
     for (const auto i : owned)
     {
@@ -105,7 +126,7 @@ namespace tribos
     reduced.clear();
     reduced.reinit(owned, owned, pattern, communicator);
 
-    // Where eliminate() copies K to and finds the diagonal entries.
+    // Where eliminate() copies K to.
     const Epetra_CrsMatrix &R = reduced.trilinos_matrix();
     AssertThrow(R.NumMyRows() == int(owned.n_elements()), ExcInternalError());
     column_in_reduced.assign(E.NumMyCols(), -1);
@@ -118,28 +139,11 @@ namespace tribos
         AssertThrow(column_in_reduced[c] >= 0, ExcInternalError());
       }
     }
-    diagonal_position.assign(owned.n_elements(), -1);
-    coupled_rows.clear();
-    for (int r = 0; r < int(owned.n_elements()); ++r)
+    // eliminate() finds entries by bisection.
+    for (int r = 0; r < R.NumMyRows(); ++r)
     {
-      AssertThrow(E.RowMap().GID(r) == int(owned.nth_index_in_set(r)),
-                  ExcInternalError());
-      E.ExtractMyRowView(r, length, values, indices);
-      bool coupled = false;
-      for (int k = 0; k < length; ++k)
-      {
-        if (E.ColMap().GID(indices[k]) == E.RowMap().GID(r))
-          diagonal_position[r] = k;
-        coupled = coupled || column_in_reduced[indices[k]] < 0;
-      }
-      if (coupled)
-        coupled_rows.push_back(r);
-      // eliminate() finds entries by bisection.
-      int     r_length;
-      double *r_values;
-      int    *r_indices;
-      R.ExtractMyRowView(r, r_length, r_values, r_indices);
-      AssertThrow(std::is_sorted(r_indices, r_indices + r_length),
+      R.ExtractMyRowView(r, length, values, indices);
+      AssertThrow(std::is_sorted(indices, indices + length),
                   ExcInternalError());
     }
 
@@ -161,35 +165,12 @@ namespace tribos
                                     const bool pattern)
   {
     const Epetra_CrsMatrix &E = A.trilinos_matrix();
-    int                     length;
-    double                 *values;
-    int                    *indices;
-    for (auto &b : blocks)
+    // f(c, j, value) for every entry (column j) of the block's row c.
+    const auto for_each_entry = [&](const Block &b, const auto &f)
     {
-      if (pattern)
-      {
-        b.columns.clear();
-        for (unsigned int c = 0; c < size; ++c)
-        {
-          E.ExtractMyRowView(E.RowMap().LID(int(b.first + c)),
-                             length,
-                             values,
-                             indices);
-          for (int k = 0; k < length; ++k)
-          {
-            const types::global_dof_index j = E.ColMap().GID(indices[k]);
-            if (j < first)
-              b.columns.push_back(j);
-            else if (j < b.first || j >= b.first + size)
-              return false;
-          }
-        }
-        std::sort(b.columns.begin(), b.columns.end());
-        b.columns.erase(std::unique(b.columns.begin(), b.columns.end()),
-                        b.columns.end());
-      }
-      b.h.assign(size * b.columns.size(), 0.);
-      b.d.assign(size * size, 0.);
+      int     length;
+      double *values;
+      int    *indices;
       for (unsigned int c = 0; c < size; ++c)
       {
         E.ExtractMyRowView(E.RowMap().LID(int(b.first + c)),
@@ -197,14 +178,42 @@ namespace tribos
                            values,
                            indices);
         for (int k = 0; k < length; ++k)
-        {
-          const types::global_dof_index j = E.ColMap().GID(indices[k]);
-          if (j < first)
-            b.h[c * b.columns.size() + position(b.columns, j)] += values[k];
-          else
-            b.d[c * size + (j - b.first)] += values[k];
-        }
+          f(c, types::global_dof_index(E.ColMap().GID(indices[k])), values[k]);
       }
+    };
+    bool separate = true;
+    for (auto &b : blocks)
+    {
+      if (pattern)
+      {
+        b.columns.clear();
+        for_each_entry(b,
+                       [&](unsigned int, types::global_dof_index j, double)
+                       {
+                         if (j < first)
+                           b.columns.push_back(j);
+                         else if (j < b.first || j >= b.first + size)
+                           separate = false;
+                       });
+        std::sort(b.columns.begin(), b.columns.end());
+        b.columns.erase(std::unique(b.columns.begin(), b.columns.end()),
+                        b.columns.end());
+      }
+      if (!separate)
+        return false;
+      b.h.assign(size * b.columns.size(), 0.);
+      b.d.assign(size * size, 0.);
+      for_each_entry(b,
+                     [&](const unsigned int            c,
+                         const types::global_dof_index j,
+                         const double                  value)
+                     {
+                       if (j < first)
+                         b.h[c * b.columns.size() + position(b.columns, j)] +=
+                           value;
+                       else
+                         b.d[c * size + (j - b.first)] += value;
+                     });
     }
     return true;
   }
@@ -224,28 +233,12 @@ namespace tribos
     double                                     *values;
     int                                        *indices;
     std::map<unsigned int, std::vector<double>> send;
-    // A new pattern: every row is looked at; later ones only the rows found
-    // coupled then.
-    std::vector<int> rows;
-    if (pattern)
-      for (int r = 0; r < int(owned.n_elements()); ++r)
-        rows.push_back(r);
-    const auto &candidates = pattern ? rows : coupled_rows;
-    for (const int r : candidates)
+    for (const int r : coupled_rows)
     {
       const types::global_dof_index i = E.RowMap().GID(r);
       E.ExtractMyRowView(r, length, values, indices);
-      double diagonal_entry = 0;
-      bool   coupled        = false;
-      for (int k = 0; k < length; ++k)
-      {
-        const types::global_dof_index j = E.ColMap().GID(indices[k]);
-        if (j == i)
-          diagonal_entry = values[k];
-        coupled = coupled || j >= first;
-      }
-      if (!coupled)
-        continue;
+      const double diagonal_entry =
+        diagonal_position[r] >= 0 ? values[diagonal_position[r]] : 0.;
       for (int k = 0; k < length; ++k)
       {
         const types::global_dof_index j = E.ColMap().GID(indices[k]);
