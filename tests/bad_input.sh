@@ -79,6 +79,14 @@ expect contact_bad_surface_type "unknown type <cone>" "$tribos" "$contact" \
   --set "Contact/Rigid surfaces=plane : cone : 0, 0, 0 : 1 : 0, 0"
 expect contact_q2 "Polynomial degree = 1" "$tribos" "$contact" \
   --set "Finite element/Polynomial degree=2"
+expect contact_q2_node_to_segment "needs Contact/Discretization = mortar" \
+  "$tribos" "$contact" --set "Finite element/Polynomial degree=2"
+expect contact_q2_3d "Polynomial degree = 1 (2D and 3D) or 2 (2D)" "$tribos" \
+  "$tests/patch_test_3d.prm" --set "Finite element/Polynomial degree=2"
+expect contact_q2_axisymmetric_standard "Mortar basis = standard is not available" \
+  "$tribos" "$tests/patch_test.prm" --set "Finite element/Polynomial degree=2" \
+  --set "Finite element/Axisymmetric=true" --set "Contact/Discretization=mortar" \
+  --set "Contact/Mortar basis=standard"
 expect contact_lagrange_two_pass "Contact/Passes = two-pass" "$tribos" \
   "$contact" --set "Contact/Method=lagrange multiplier" \
   --set "Contact/Passes=two-pass"

@@ -6,7 +6,10 @@
  * segments (a curved slave surface), three or four master segments below
  * it (finer and coarser than the slave), overlaps clipped at the slave
  * segments' ends and at the master's end (standard basis there), dual and
- * standard basis, plane and axisymmetric (weight 2 pi r); frictionless,
+ * standard basis, plane and axisymmetric (weight 2 pi r), straight (Q1)
+ * and quadratic (Q2: curved segments with middle nodes, the slave node a
+ * vertex of two segments or one, or a middle; the projections' Newton
+ * steps differentiated); frictionless,
  * stick and slip; with the penalty law and
  * with the Lagrange multiplier law (the rows and columns of the node's
  * multipliers included). Asserts a relative error below 1e-6 and that the
@@ -37,8 +40,8 @@ main()
 
   bool         ok          = true;
   double       worst_error = 0, worst_balance = 0;
-  unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0};
-  for (unsigned int sample = 0; sample < 2000; ++sample)
+  unsigned int n_checked = 0, n_quadratic = 0, n_status[4] = {0, 0, 0, 0};
+  for (unsigned int sample = 0; sample < 4000; ++sample)
   {
     const bool            with_multipliers = sample % 2 == 1;
     const Enforcement<2> &enforcement =
@@ -48,7 +51,10 @@ main()
     // Slave: node j at the origin, neighbours left and right (slave body
     // above, so the segments run right to left for an outward normal
     // pointing down); sometimes only one segment (an end of the slave).
+    // Every other pair of samples is quadratic (Q2): curved segments with
+    // middle nodes, node j a vertex of two segments, of one, or a middle.
     MortarInput  input;
+    const bool   quadratic = (sample / 2) % 2 == 1;
     const double h_slave   = 0.5 + 0.3 * u(random);
     input.xs[0]            = {{0.05 * u(random), 0.02 * u(random), 0}};
     input.xs[1]            = {{h_slave, 0.1 * h_slave + 0.05 * u(random), 0}};
@@ -60,10 +66,49 @@ main()
     input.slave_segment[0][1] = 0;
     input.slave_segment[1][0] = 0;
     input.slave_segment[1][1] = 2;
+    // A middle node between a and b, off the chord by up to 5 % of it.
+    const auto middle = [&](const Vec3<double> &a, const Vec3<double> &b)
+    {
+      const Vec3<double> chord = b - a;
+      const Vec3<double> off{{-chord[1], chord[0], 0}};
+      return scale(0.5, a + b) + scale(0.05 * u(random), off) +
+             scale(0.03 * u(random), chord);
+    };
+    if (quadratic)
+    {
+      input.n_segment_nodes   = 3;
+      const unsigned int kind = (sample / 4) % 3;
+      if (kind == 0 && !one_segment)
+      {
+        input.xs[3]               = middle(input.xs[1], input.xs[0]);
+        input.xs[4]               = middle(input.xs[0], input.xs[2]);
+        input.n_slave_nodes       = 5;
+        input.slave_segment[0][2] = 3;
+        input.slave_segment[1][2] = 4;
+      }
+      else if (kind == 1 || one_segment)
+      {
+        input.xs[2]               = middle(input.xs[1], input.xs[0]);
+        input.n_slave_nodes       = 3;
+        input.n_slave_segments    = 1;
+        input.slave_segment[0][2] = 2;
+      }
+      else
+      {
+        // j is the middle of the segment from node 1 to node 2.
+        input.xs[0]               = middle(input.xs[1], input.xs[2]);
+        input.n_slave_nodes       = 3;
+        input.n_slave_segments    = 1;
+        input.slave_segment[0][0] = 1;
+        input.slave_segment[0][1] = 2;
+        input.slave_segment[0][2] = 0;
+      }
+    }
 
     // Master: a polyline below, left to right (body below, normal up),
     // spacing finer or coarser than the slave; sometimes ending under
-    // the slave segment (partial coverage).
+    // the slave segment (partial coverage). Quadratic: a middle node on
+    // each segment, after the vertices.
     const unsigned int n_master = 3 + sample % 2;
     const double       h_master = (sample % 3 == 0 ? 0.4 : 1.0) * h_slave;
     const double       start =
@@ -77,10 +122,17 @@ main()
                       0}};
     for (unsigned int m = 0; m < n_master; ++m)
       input.master_segment[m] = {{m, m + 1}};
-    for (unsigned int i = 0; i < 3; ++i)
+    if (quadratic)
+      for (unsigned int m = 0; m < n_master; ++m)
+      {
+        input.xm[n_master + 1 + m] = middle(input.xm[m], input.xm[m + 1]);
+        input.master_segment[m][2] = n_master + 1 + m;
+        ++input.n_master_nodes;
+      }
+    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
       for (unsigned int d = 0; d < 2; ++d)
         input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
-    for (unsigned int l = 0; l <= n_master; ++l)
+    for (unsigned int l = 0; l < input.n_master_nodes; ++l)
       for (unsigned int d = 0; d < 2; ++d)
         input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
     input.dual = sample % 3 != 2;
@@ -89,12 +141,12 @@ main()
     input.axisymmetric = sample % 4 == 1;
     if (input.axisymmetric)
     {
-      for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
       {
         input.xs[i][0] += 3.;
         input.xs_old[i][0] += 3.;
       }
-      for (unsigned int l = 0; l <= n_master; ++l)
+      for (unsigned int l = 0; l < input.n_master_nodes; ++l)
       {
         input.xm[l][0] += 3.;
         input.xm_old[l][0] += 3.;
@@ -103,7 +155,7 @@ main()
     input.min_weight = 0;
     // Shift the slave up or down: open or closed.
     const double lift = -0.03 + 0.04 * u(random);
-    for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
       input.xs[i][1] += lift;
 
     ContactLaw law;
@@ -220,6 +272,8 @@ main()
     if (!same_branch || scale == 0)
       continue;
     ++n_checked;
+    if (quadratic)
+      ++n_quadratic;
     const double relative = error / scale;
     worst_error           = std::max(worst_error, relative);
     if (relative > 1e-6)
@@ -228,16 +282,17 @@ main()
       std::cout << "sample " << sample << ": tangent error " << relative
                 << " (status " << static_cast<int>(result.status)
                 << (with_multipliers ? ", multipliers" : ", penalty")
-                << (input.dual ? ", dual" : ", standard") << ")\n";
+                << (input.dual ? ", dual" : ", standard")
+                << (quadratic ? ", quadratic" : "") << ")\n";
     }
   }
-  std::cout << "checked " << n_checked << " mortar elements (open "
-            << n_status[0] << ", stick " << n_status[1] << ", slip "
-            << n_status[2] << ", frictionless " << n_status[3]
+  std::cout << "checked " << n_checked << " mortar elements (" << n_quadratic
+            << " quadratic; open " << n_status[0] << ", stick " << n_status[1]
+            << ", slip " << n_status[2] << ", frictionless " << n_status[3]
             << "); worst relative tangent error " << worst_error
             << ", worst force balance " << worst_balance << "\n";
-  if (n_checked < 500 || n_status[1] < 50 || n_status[2] < 50 ||
-      n_status[3] < 20)
+  if (n_checked < 500 || n_quadratic < 200 || n_status[1] < 50 ||
+      n_status[2] < 50 || n_status[3] < 20)
   {
     std::cout << "FAILED: too few elements of some kind were checked\n";
     ok = false;

@@ -73,9 +73,12 @@ namespace tribos
           const unsigned int k = c->first;
           pair.element_dofs(k, -1, dofs);
           for (; c != pair.couplings.end() && c->first == k; ++c)
-            for (const unsigned int m : pair.master->faces()[c->second].nodes)
-              for (const auto dof : pair.master->nodes()[m].dofs)
+          {
+            const auto &face = pair.master->faces()[c->second];
+            for (unsigned int i = 0; i < face.n_nodes(); ++i)
+              for (const auto dof : pair.master->nodes()[face.node(i)].dofs)
                 dofs.push_back(dof);
+          }
           std::sort(dofs.begin(), dofs.end());
           dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
           constraints.add_entries_local_to_global(dofs, dsp, false);
@@ -115,7 +118,7 @@ namespace tribos
       std::max(
         {NodeToSegment<dim>::n_dofs,
          NodeToSmoothedSegment::max_dofs,
-         2 * (3 + max_mortar_master_nodes),
+         2 * (MortarInput::max_slave_nodes + max_mortar_master_nodes),
          3 * (MortarInput3D::max_slave_nodes + max_mortar_master_nodes_3d)}) +
       dim;
     double     R[n_max], K[n_max * n_max];

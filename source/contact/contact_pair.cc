@@ -112,9 +112,12 @@ namespace tribos
   {
     nodes.assign(1, k);
     for (const unsigned int f : slave->nodes()[k].faces)
-      for (const unsigned int m : slave->faces()[f].nodes)
+      for (unsigned int i = 0; i < slave->faces()[f].n_nodes(); ++i)
+      {
+        const unsigned int m = slave->faces()[f].node(i);
         if (std::find(nodes.begin(), nodes.end(), m) == nodes.end())
           nodes.push_back(m);
+      }
   }
 
 
@@ -138,8 +141,9 @@ namespace tribos
     }
     if (master && face >= 0)
     {
-      for (const unsigned int m : master->faces()[face].nodes)
-        for (const auto dof : master->nodes()[m].dofs)
+      for (unsigned int i = 0; i < master->faces()[face].n_nodes(); ++i)
+        for (const auto dof :
+             master->nodes()[master->faces()[face].node(i)].dofs)
           dofs.push_back(dof);
       if (smoothed)
         for (const int m : master->faces()[face].beyond)
@@ -280,6 +284,25 @@ namespace tribos
       }
       else
         pair.rigid = rigid_surfaces.at(description.rigid_surface);
+      // On Q2 the surface's middle nodes need the quadratic segments of the
+      // mortar element; node to segment (to a body or a rigid surface)
+      // knows the vertices and straight faces of Q1 only.
+      AssertThrow(!pair.slave->quadratic() || pair.mortar,
+                  ExcMessage("Contact pair <" + description.text +
+                             ">: Finite element/Polynomial degree = 2 needs "
+                             "Contact/Discretization = mortar and a "
+                             "deformable master; node-to-segment contact "
+                             "(and contact with rigid surfaces) works on the "
+                             "linear faces of Polynomial degree = 1."));
+      // The standard quadratic functions of the vertex on the axis
+      // integrate to zero against 2 pi r: that node carries no multiplier,
+      // the others then miss a partition of unity and Newton does not
+      // converge even on the patch test. The dual basis has no such node.
+      AssertThrow(!pair.slave->quadratic() || !axisymmetric || pair.dual_basis,
+                  ExcMessage("Contact pair <" + description.text +
+                             ">: Contact/Mortar basis = standard is not "
+                             "available with Polynomial degree = 2 and "
+                             "Axisymmetric = true; use Mortar basis = dual."));
 
       const auto        &nodes    = pair.slave->nodes();
       const unsigned int n_slaves = nodes.size();

@@ -21,6 +21,17 @@ namespace tribos
     // of them, in the order of their cells (CellId, the same whatever the
     // partition): the surface is small against the mesh, and the search
     // needs every master face.
+    const auto        &fe     = dof_handler.get_fe();
+    const unsigned int degree = fe.degree;
+    AssertThrow(degree == 1 || (dim == 2 && degree == 2),
+                ExcMessage("Contact surfaces are built for Finite element/"
+                           "Polynomial degree = 1 (2D and 3D) or 2 (2D); "
+                           "this mesh has degree " +
+                           std::to_string(degree) + " in " +
+                           std::to_string(dim) + "D."));
+    is_quadratic = (degree == 2);
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+
     std::vector<FaceRecord> own;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -64,6 +75,19 @@ namespace tribos
               record.dofs[v * dim + d] = face->vertex_dof_index(order[v], d);
               record.x[v * dim + d]    = face->vertex(order[v])[d];
             }
+          if (is_quadratic)
+          {
+            // The line's own dofs (index 2 of the quadratic face element,
+            // after its two vertices): the middle support point.
+            cell->face(f)->get_dof_indices(face_dofs);
+            for (unsigned int i = 0; i < face_dofs.size(); ++i)
+            {
+              const auto [component, index] =
+                fe.face_system_to_component_index(i);
+              if (index == 2)
+                record.middle_dofs[component] = face_dofs[i];
+            }
+          }
           own.push_back(record);
         }
     std::vector<FaceRecord> records;
@@ -103,20 +127,33 @@ namespace tribos
         }
         contact_face.nodes[v] = it->second;
       }
+      if (is_quadratic)
+      {
+        // Its reference position is the chord's midpoint, where MappingQ1
+        // (the mesh's reference geometry) puts the support point.
+        Node node;
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          node.dofs[d]      = record.middle_dofs[d];
+          node.reference[d] = 0.5 * (record.x[d] + record.x[dim + d]);
+        }
+        contact_face.middle = node_list.size();
+        node_list.push_back(node);
+      }
       face_list.push_back(contact_face);
     }
 
-    // Adjacency and tributary areas.
-    const QGauss<dim - 1> quadrature(2);
+    // Adjacency and tributary areas (of the faces' shape functions, the
+    // quadratic ones on Q2: h/6, 2h/3, h/6 on a straight face).
+    const QGauss<dim - 1> quadrature(is_quadratic ? 3 : 2);
     for (unsigned int f = 0; f < face_list.size(); ++f)
     {
       const auto  &face = face_list[f];
       Vec3<double> x[4];
+      for (unsigned int v = 0; v < face.n_nodes(); ++v)
+        node_list[face.node(v)].faces.push_back(f);
       for (unsigned int v = 0; v < n_face_nodes; ++v)
-      {
-        node_list[face.nodes[v]].faces.push_back(f);
         x[v] = node_list[face.nodes[v]].reference;
-      }
       for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
         double xi[2] = {0, 0};
@@ -124,6 +161,12 @@ namespace tribos
           xi[c] = 2 * quadrature.point(q)[c] - 1;
         double N[4], dN[4][2];
         MasterFace<dim>::shape(xi, N, dN);
+        if (is_quadratic)
+        {
+          N[0] = 0.5 * xi[0] * (xi[0] - 1.);
+          N[1] = 0.5 * xi[0] * (xi[0] + 1.);
+          N[2] = 1. - xi[0] * xi[0];
+        }
         Vec3<double> xbar, a[2], normal;
         MasterFace<dim>::geometry(x, xi, xbar, a, normal);
         const double jacobian =
@@ -131,11 +174,11 @@ namespace tribos
         // Weights of [0,1]^(dim-1) times 2^(dim-1) for [-1,1].
         const double weight = quadrature.weight(q) * (dim == 2 ? 2. : 4.);
         const double ring   = axisymmetric ? 2 * numbers::PI * xbar[0] : 1.;
-        for (unsigned int v = 0; v < n_face_nodes; ++v)
+        for (unsigned int v = 0; v < face.n_nodes(); ++v)
         {
-          node_list[face.nodes[v]].area += N[v] * jacobian * weight * ring;
+          node_list[face.node(v)].area += N[v] * jacobian * weight * ring;
           // The face's measure (without the ring), shared by its nodes.
-          node_list[face.nodes[v]].size += jacobian * weight;
+          node_list[face.node(v)].size += jacobian * weight;
         }
       }
     }

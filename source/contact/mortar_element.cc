@@ -134,13 +134,21 @@ namespace tribos
                      bool                 &paired,
                      Vec3<double>         &weighted_point)
   {
+    if (input.n_segment_nodes == 3)
+      return evaluate_quadratic(slave,
+                                input,
+                                enforcement,
+                                R,
+                                K,
+                                paired,
+                                weighted_point);
     using AD                           = ContactAD;
     const unsigned int n_s             = input.n_slave_nodes;
     const unsigned int n_m             = input.n_master_nodes;
     const unsigned int n_displacements = 2 * (n_s + n_m);
     const unsigned int n_out = n_displacements + enforcement.n_node_unknowns();
 
-    Vec3<AD> xs[3], xm[max_mortar_master_nodes];
+    Vec3<AD> xs[MortarInput::max_slave_nodes], xm[max_mortar_master_nodes];
     for (unsigned int i = 0; i < n_s; ++i)
       xs[i] = internal::seed<2>(input.xs[i], 2 * i, n_out);
     for (unsigned int l = 0; l < n_m; ++l)
@@ -316,8 +324,14 @@ namespace tribos
       const unsigned int n = pair.enforcement->n_node_unknowns();
       for (unsigned int d = 0; d < n; ++d)
         dofs.push_back(pair.first_unknown + n * k + d);
-      mortar.dual       = pair.dual_basis;
-      mortar.min_weight = 1e-3 * pair.area[k];
+      mortar.dual = pair.dual_basis;
+      // A floor for nodes whose tributary area vanishes (Q2's vertex on
+      // the axis of an axisymmetric body: int N_j 2 pi r = 0 there), which
+      // carry no contact.
+      const double size = pair.slave->nodes()[k].size;
+      const double floor =
+        1e-9 * std::pow(size, dim - 1) * (pair.axisymmetric ? size : 1.);
+      mortar.min_weight = 1e-3 * std::max(pair.area[k], floor);
     }
 
     template void
@@ -350,17 +364,19 @@ namespace tribos
     master_nodes.clear();
     const auto local = internal::local_number;
     pair.slave_stencil(k, stencil);
+    // 2 nodes per segment on Q1, 3 (the ends, then the middle) on Q2.
+    mortar.n_segment_nodes = pair.slave->faces()[0].n_nodes();
     for (const unsigned int f : pair.slave->nodes()[k].faces)
     {
       auto &segment = mortar.slave_segment[mortar.n_slave_segments++];
-      for (unsigned int v = 0; v < 2; ++v)
-        segment[v] = local(stencil, pair.slave->faces()[f].nodes[v]);
+      for (unsigned int v = 0; v < mortar.n_segment_nodes; ++v)
+        segment[v] = local(stencil, pair.slave->faces()[f].node(v));
     }
     for (const unsigned int f : pair.mortar_faces[k])
     {
-      std::array<unsigned int, 2> segment;
-      for (unsigned int v = 0; v < 2; ++v)
-        segment[v] = local(master_nodes, pair.master->faces()[f].nodes[v]);
+      std::array<unsigned int, 3> segment{};
+      for (unsigned int v = 0; v < mortar.n_segment_nodes; ++v)
+        segment[v] = local(master_nodes, pair.master->faces()[f].node(v));
       if (master_nodes.size() > max_mortar_master_nodes)
       {
         const Vec3<double> &x = pair.slave_positions[k];

@@ -337,6 +337,7 @@ namespace tribos
       // behind it (steep slave segments would otherwise pair with faces
       // beside them).
       const bool was_closed = pair.committed[k].closed();
+      const bool quadratic  = pair.slave->quadratic();
       for (const unsigned int f : pair.slave->nodes()[k].faces)
       {
         const Vec3<double> &x_a = pair.slave_positions[slave_faces[f].nodes[0]];
@@ -362,8 +363,14 @@ namespace tribos
           const double s_d = dot(y_d - x_a, e) / length_squared;
           if (std::abs(s_c - s_d) < 1e-12)
             return false;
-          const double lo = std::max(0., std::min(s_c, s_d));
-          const double hi = std::min(1., std::max(s_c, s_d));
+          // Quadratic segments are curves, the chords only approximate
+          // where they overlap: a face found late (or lost) would change
+          // the element's weights by a jump. Faces a quarter of the
+          // segment beyond its chord are taken as well; the element skips
+          // those that do not overlap.
+          const double margin = quadratic ? 0.25 : 0.;
+          const double lo     = std::max(-margin, std::min(s_c, s_d));
+          const double hi     = std::min(1. + margin, std::max(s_c, s_d));
           if (hi <= lo)
             return false;
           // Within reach: closer than the search distance and the

@@ -425,8 +425,10 @@ namespace tribos
       data_out.add_data_vector(plastic_strain, "PEEQ");
     data_out.add_data_vector(body_id, "body_id");
     // Contact fields at the slave nodes, under the names Abaqus and
-    // CalculiX users know: scalars on a Q1 numbering, CSHEAR as a vector.
-    FE_Q<dim>       node_fe(1);
+    // CalculiX users know: scalars on the support points of the mesh's
+    // degree (on Q2 the faces' middle nodes carry contact too), CSHEAR as a
+    // vector.
+    FE_Q<dim>       node_fe(parameters.finite_element.degree);
     DoFHandler<dim> node_dof_handler(triangulation);
     std::array<TrilinosWrappers::MPI::Vector, 4> contact_scalars;
     Vector                                       contact_shear;
@@ -449,6 +451,8 @@ namespace tribos
                                interpretation);
       node_dof_handler.distribute_dofs(node_fe);
       std::map<types::global_dof_index, types::global_dof_index> scalar_dof;
+      std::vector<types::global_dof_index> cell_dofs(fe->n_dofs_per_cell()),
+        node_dofs(node_fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (!cell->is_artificial())
         {
@@ -457,9 +461,15 @@ namespace tribos
             cell->level(),
             cell->index(),
             &node_dof_handler);
-          for (const unsigned int v : cell->vertex_indices())
-            scalar_dof[cell->vertex_dof_index(v, 0)] =
-              node_cell->vertex_dof_index(v, 0);
+          cell->get_dof_indices(cell_dofs);
+          node_cell->get_dof_indices(node_dofs);
+          // The x dof of each support point names the node.
+          for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+          {
+            const auto [component, index] = fe->system_to_component_index(i);
+            if (component == 0)
+              scalar_dof[cell_dofs[i]] = node_dofs[index];
+          }
         }
       const IndexSet node_owned = node_dof_handler.locally_owned_dofs();
       IndexSet       node_relevant;

@@ -325,10 +325,6 @@ namespace tribos
 
     if (!parameters.contact.pairs.empty())
     {
-      AssertThrow(parameters.finite_element.degree == 1,
-                  ExcMessage("Contact needs Finite element/Polynomial "
-                             "degree = 1: node-to-segment contact works on "
-                             "the vertices and linear faces of Q1."));
       contact = std::make_unique<ContactHandler<dim>>(
         parameters.contact,
         dof_handler,

@@ -10,17 +10,18 @@ namespace tribos
   /**
    * The forward AD number of the contact elements: at most 150
    * derivatives (3D node to segment: the slave and a bilinear face, 5
-   * nodes x 3, plus the slave's 3 multipliers = 18; 2D mortar: 3 slave and
-   * up to 12 master nodes x 2, plus 2 multipliers = 32; 3D mortar: up to
-   * 13 slave and 36 master nodes x 3, plus 3 multipliers = 150). Operations
+   * nodes x 3, plus the slave's 3 multipliers = 18; 2D mortar: up to 5
+   * slave (Q2) and 24 master nodes x 2, plus 2 multipliers = 60; 3D mortar: up
+   * to 13 slave and 36 master nodes x 3, plus 3 multipliers = 150). Operations
    * and copies run over the derivatives in use only, so the capacity costs
    * the small elements nothing but stack. The element residual is written
    * once in this type and its derivative is the consistent tangent.
    */
   using ContactAD = Sacado::Fad::SLFad<double, 150>;
 
-  /** The most master nodes a 2D mortar element couples to one slave node. */
-  constexpr unsigned int max_mortar_master_nodes = 12;
+  /** The most master nodes a 2D mortar element couples to one slave node
+   * (Q2: a master up to about 3 times finer than the slave). */
+  constexpr unsigned int max_mortar_master_nodes = 24;
 
   /** The most master nodes (and faces) a 3D mortar element couples to one
    * slave node: a 6 x 6 patch of master nodes over the 2 x 2 slave faces

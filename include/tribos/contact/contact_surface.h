@@ -18,11 +18,11 @@ namespace tribos
 
   /**
    * The faces and nodes of a boundary part (one or more boundary ids) of a
-   * Q1 mesh, as
-   * seen by contact: as a slave, its nodes with their tributary areas; as a
-   * master, its faces (vertex order such that the normal of MasterFace
-   * points out of the body) with their neighbours. Built once from the
-   * reference configuration; positions are looked up per evaluation.
+   * Q1 mesh, or of a Q2 mesh in 2D, as seen by contact: as a slave, its nodes
+   * with their tributary areas; as a master, its faces (vertex order such that
+   * the normal of MasterFace points out of the body) with their neighbours.
+   * Built once from the reference configuration; positions are looked up per
+   * evaluation.
    *
    * Every process holds the whole surface, also on a distributed mesh:
    * each contributes the faces of its own cells and all gather them
@@ -55,7 +55,26 @@ namespace tribos
 
     struct Face
     {
+      /** The face's vertices (MasterFace order). */
       std::array<unsigned int, n_face_nodes> nodes;
+      /**
+       * 2D Q2: the node at the face's middle support point; -1 on Q1. The
+       * face is then the quadratic segment through nodes[0], middle,
+       * nodes[1]; searches and neighbourhoods still go by its vertices.
+       */
+      int middle = -1;
+      /** The number of the face's nodes: its vertices and its middle. */
+      unsigned int
+      n_nodes() const
+      {
+        return middle >= 0 ? n_face_nodes + 1 : n_face_nodes;
+      }
+      /** Node @p i of the face: the vertices, then the middle. */
+      unsigned int
+      node(const unsigned int i) const
+      {
+        return i < n_face_nodes ? nodes[i] : static_cast<unsigned int>(middle);
+      }
       /** Faces sharing at least one node with this one (itself excluded). */
       std::vector<unsigned int> neighbours;
       /**
@@ -101,6 +120,12 @@ namespace tribos
       return face_list;
     }
 
+    /** Whether the faces are quadratic (2D Q2: Face::middle is set). */
+    bool
+    quadratic() const
+    {
+      return is_quadratic;
+    }
     /** Body ids of the cells adjacent to this surface. */
     const std::set<types::material_id> &
     bodies() const
@@ -119,6 +144,8 @@ namespace tribos
       unsigned int                                            owner = 0;
       std::array<types::global_dof_index, n_face_nodes * dim> dofs;
       std::array<double, n_face_nodes * dim>                  x;
+      /** 2D Q2: the dofs of the face's middle support point. */
+      std::array<types::global_dof_index, dim> middle_dofs{};
 
       template <class Archive>
       void
@@ -131,6 +158,8 @@ namespace tribos
           archive &d;
         for (auto &v : x)
           archive &v;
+        for (auto &d : middle_dofs)
+          archive &d;
       }
     };
 
@@ -138,6 +167,7 @@ namespace tribos
     std::vector<Node>            node_list;
     std::vector<Face>            face_list;
     std::set<types::material_id> body_ids;
+    bool                         is_quadratic = false;
   };
 } // namespace tribos
 

@@ -18,21 +18,29 @@ namespace tribos
   /**
    * What the 2D mortar element of one slave node j needs: the slave nodes
    * of its segments (j first, then its neighbours), now and at the last
-   * converged step, the segments as pairs of those local numbers (ordered
-   * so that the MasterFace normal points out of the slave body), and the
-   * master nodes and segments that the search found facing them.
+   * converged step, the segments as lists of those local numbers (ends
+   * ordered so that the MasterFace normal points out of the slave body,
+   * then the middle node of a quadratic segment), and the master nodes and
+   * segments that the search found facing them.
    */
   struct MortarInput
   {
+    /** A vertex of Q2: its two segments' ends and middles. */
+    static constexpr unsigned int max_slave_nodes = 5;
+
     unsigned int n_slave_nodes = 0;
-    Vec3<double> xs[3], xs_old[3];
+    Vec3<double> xs[max_slave_nodes], xs_old[max_slave_nodes];
     unsigned int n_slave_segments = 0;
-    unsigned int slave_segment[2][2];
+    unsigned int slave_segment[2][3];
 
     unsigned int n_master_nodes = 0;
     Vec3<double> xm[max_mortar_master_nodes], xm_old[max_mortar_master_nodes];
     unsigned int n_master_segments = 0;
-    std::array<unsigned int, 2> master_segment[max_mortar_master_nodes];
+    std::array<unsigned int, 3> master_segment[max_mortar_master_nodes];
+
+    /** Nodes per segment, slave and master: 2 (straight, Q1) or 3
+     * (quadratic, Q2: the ends, then the middle). */
+    unsigned int n_segment_nodes = 2;
 
     /** Mortar basis = dual (else standard). */
     bool dual = true;
@@ -111,6 +119,38 @@ namespace tribos
              double               *K,
              bool                 &paired,
              Vec3<double>         &weighted_point);
+
+    /**
+     * The same on quadratic segments (Q2, input.n_segment_nodes = 3),
+     * called by evaluate(). Slave and master are the curves x(xi) =
+     * sum N_a(xi) x_a of the segments' three nodes. A master segment's
+     * overlap with a slave segment runs between the closest-point
+     * projections of its ends onto the slave curve; at each Gauss point
+     * xi of the overlap the master point is where the slave's normal line
+     * at xi meets the master curve (so the overlap's ends map to the
+     * master's ends). Both projections are Newton iterations in double,
+     * then one Newton step in AD numbers, which gives their exact first
+     * derivatives (implicit function theorem). 5-point Gauss per overlap:
+     * exact on straight segments (the integrands are then polynomials of
+     * degree 4), and the mass matrix of the dual functions likewise.
+     *
+     * Dual basis: Phi = A N with A = D_e M_e^-1 of the segment's quadratic
+     * shape functions, biorthogonal to them (on a straight segment the
+     * weights int Phi_j = int N_j are h/6, 2h/3, h/6: positive, so the
+     * quadratic dual basis is usable in 2D as it is, without the
+     * basis transformation 3D quadratic faces would need). Blended towards
+     * the standard functions on partly covered segments as on Q1. The
+     * dual functions still sum to one, so a uniform traction is
+     * transmitted exactly: the patch test holds for Q2.
+     */
+    static ContactPointResult
+    evaluate_quadratic(const SlaveInput     &slave,
+                       const MortarInput    &input,
+                       const Enforcement<2> &enforcement,
+                       double               *R,
+                       double               *K,
+                       bool                 &paired,
+                       Vec3<double>         &weighted_point);
   };
 
   /**
