@@ -79,7 +79,7 @@ namespace tribos
           {
             // The line's own dofs (index 2 of the quadratic face element,
             // after its two vertices): the middle support point.
-            cell->face(f)->get_dof_indices(face_dofs);
+            face->get_dof_indices(face_dofs);
             for (unsigned int i = 0; i < face_dofs.size(); ++i)
             {
               const auto [component, index] =

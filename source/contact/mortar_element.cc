@@ -125,6 +125,139 @@ namespace tribos
 
 
 
+  namespace
+  {
+    /**
+     * The integrals of Mortar2D::evaluate() on straight segments (Q1):
+     * D, M and the unnormalized normal_j from the seeded positions xs, xm
+     * (as internal::integrate_quadratic() on Q2).
+     */
+    void
+    integrate_linear(const MortarInput     &input,
+                     const Vec3<ContactAD> *xs,
+                     const Vec3<ContactAD> *xm,
+                     ContactAD             *D,
+                     ContactAD             *M,
+                     Vec3<ContactAD>       &normal_j)
+    {
+      using AD = ContactAD;
+      const Vec3<double> ez{{0., 0., 1.}};
+      const Vec3<AD>     ez_ad = to<AD>(ez);
+      const AD           zero(0.);
+
+      struct Overlap
+      {
+        unsigned int c, d;
+        AD           s_c, s_d, lo, hi;
+      };
+      // The nodal normal: the segments' unit normals (out of the slave body)
+      // weighted by their share of w_j, so that a segment that leaves the
+      // master (at a corner of the slave) fades out of it continuously.
+      const double gauss = 1. / std::sqrt(3.);
+      for (unsigned int s = 0; s < input.n_slave_segments; ++s)
+      {
+        const unsigned int a              = input.slave_segment[s][0],
+                           b              = input.slave_segment[s][1];
+        const Vec3<AD>     e              = xs[b] - xs[a];
+        const AD           length_squared = dot(e, e);
+        const AD           length         = sqrt(length_squared);
+        const Vec3<double> n_s    = cross(ez, input.xs[b] - input.xs[a]);
+        const bool         j_is_a = (a == 0);
+
+        // The master segments facing this one, projected onto its line.
+        Overlap      overlaps[max_mortar_master_nodes];
+        unsigned int n_overlaps = 0;
+        AD           covered    = zero;
+        for (unsigned int m = 0; m < input.n_master_segments; ++m)
+        {
+          const unsigned int c   = input.master_segment[m][0],
+                             d   = input.master_segment[m][1];
+          const Vec3<double> n_m = cross(ez, input.xm[d] - input.xm[c]);
+          if (dot(n_m, n_s) >= 0)
+            continue;
+          Overlap o;
+          o.c   = c;
+          o.d   = d;
+          o.s_c = dot(xm[c] - xs[a], e) / length_squared;
+          o.s_d = dot(xm[d] - xs[a], e) / length_squared;
+          if (std::abs(o.s_c.val() - o.s_d.val()) < 1e-12)
+            continue;
+          const AD &low  = o.s_c.val() < o.s_d.val() ? o.s_c : o.s_d;
+          const AD &high = o.s_c.val() < o.s_d.val() ? o.s_d : o.s_c;
+          o.lo           = low.val() > 0 ? low : zero;
+          o.hi           = high.val() < 1 ? high : AD(1.);
+          if (o.hi.val() <= o.lo.val())
+            continue;
+          covered += o.hi - o.lo;
+          overlaps[n_overlaps++] = o;
+        }
+        // Dual where the master covers the segment, standard where it covers
+        // half of it or less, blended in between (theta): the switch at the
+        // master's end is continuous, so a segment whose end lines up with
+        // the master's (a symmetry plane) is not flipped between the two
+        // bases by round-off, and the weights stay positive.
+        const AD   theta     = !input.dual || covered.val() <= 0.5 ? zero :
+                               covered.val() >= 1.                 ? AD(1.) :
+                                                     2. * covered - 1.;
+        const bool dual_here = theta.val() > 0;
+        // The dual functions of the segment, Phi = A N with A = D_e M_e^-1
+        // (M_e the segment's mass matrix, D_e its row sums) in the measure
+        // of the integrals: 2 N_j - N_o on a plane; with the weight 2 pi r of
+        // axisymmetry they differ, and the plane ones would give the node on
+        // the axis a zero weight. c_j, c_o: the row of A of node j.
+        AD c_j = 1., c_o = 0.;
+        if (dual_here)
+        {
+          AD mass[2][2] = {{zero, zero}, {zero, zero}};
+          for (const double g : {-gauss, gauss})
+          {
+            const AD t = 0.5 + 0.5 * g;
+            AD       r = 1.;
+            if (input.axisymmetric)
+              r = xs[a][0] + t * (xs[b][0] - xs[a][0]);
+            const AD N[2] = {j_is_a ? 1. - t : t, j_is_a ? t : 1. - t};
+            for (unsigned int i = 0; i < 2; ++i)
+              for (unsigned int k = 0; k < 2; ++k)
+                mass[i][k] += 0.5 * r * N[i] * N[k];
+          }
+          // Row j of D_e M_e^-1 (index 0: node j, 1: the other node).
+          const AD det = mass[0][0] * mass[1][1] - mass[0][1] * mass[1][0];
+          const AD d_j = mass[0][0] + mass[0][1];
+          c_j          = theta * d_j * mass[1][1] / det + (1. - theta);
+          c_o          = -theta * d_j * mass[0][1] / det;
+        }
+        AD segment_weight = zero;
+
+        for (unsigned int i = 0; i < n_overlaps; ++i)
+        {
+          const Overlap &o = overlaps[i];
+          for (const double g : {-gauss, gauss})
+          {
+            const AD t      = 0.5 * (o.lo + o.hi) + 0.5 * (o.hi - o.lo) * g;
+            AD       weight = 0.5 * (o.hi - o.lo) * length;
+            if (input.axisymmetric)
+              weight *= 2. * M_PI * (xs[a][0] + t * (xs[b][0] - xs[a][0]));
+            const AD N_a   = 1. - t;
+            const AD N_b   = t;
+            const AD N_j   = j_is_a ? N_a : N_b;
+            const AD N_o   = j_is_a ? N_b : N_a;
+            const AD phi   = c_j * N_j + c_o * N_o;
+            const AD eta   = (t - o.s_c) / (o.s_d - o.s_c);
+            const AD w_phi = weight * phi;
+            D[a] += w_phi * N_a;
+            D[b] += w_phi * N_b;
+            M[o.c] += w_phi * (1. - eta);
+            M[o.d] += w_phi * eta;
+            segment_weight += w_phi;
+          }
+        }
+        normal_j = normal_j + scale(segment_weight / length, cross(ez_ad, e));
+      }
+    }
+  } // namespace
+
+
+
   ContactPointResult
   Mortar2D::evaluate(const SlaveInput     &slave,
                      const MortarInput    &input,
@@ -134,14 +267,6 @@ namespace tribos
                      bool                 &paired,
                      Vec3<double>         &weighted_point)
   {
-    if (input.n_segment_nodes == 3)
-      return evaluate_quadratic(slave,
-                                input,
-                                enforcement,
-                                R,
-                                K,
-                                paired,
-                                weighted_point);
     using AD                           = ContactAD;
     const unsigned int n_s             = input.n_slave_nodes;
     const unsigned int n_m             = input.n_master_nodes;
@@ -154,124 +279,18 @@ namespace tribos
     for (unsigned int l = 0; l < n_m; ++l)
       xm[l] = internal::seed<2>(input.xm[l], 2 * (n_s + l), n_out);
 
-    const Vec3<double> ez{{0., 0., 1.}};
-    const Vec3<AD>     ez_ad = to<AD>(ez);
-    const AD           zero(0.);
-
-    AD D[3] = {zero, zero, zero};
-    AD M[max_mortar_master_nodes];
+    const AD zero(0.);
+    AD       D[MortarInput::max_slave_nodes], M[max_mortar_master_nodes];
+    for (unsigned int i = 0; i < n_s; ++i)
+      D[i] = zero;
     for (unsigned int l = 0; l < n_m; ++l)
       M[l] = zero;
+    Vec3<AD> normal_j = {{zero, zero, zero}};
+    if (input.n_segment_nodes == 3)
+      internal::integrate_quadratic(input, xs, xm, D, M, normal_j);
+    else
+      integrate_linear(input, xs, xm, D, M, normal_j);
 
-    struct Overlap
-    {
-      unsigned int c, d;
-      AD           s_c, s_d, lo, hi;
-    };
-    // The nodal normal: the segments' unit normals (out of the slave body)
-    // weighted by their share of w_j, so that a segment that leaves the
-    // master (at a corner of the slave) fades out of it continuously.
-    Vec3<AD>     normal_j = {{zero, zero, zero}};
-    const double gauss    = 1. / std::sqrt(3.);
-    for (unsigned int s = 0; s < input.n_slave_segments; ++s)
-    {
-      const unsigned int a              = input.slave_segment[s][0],
-                         b              = input.slave_segment[s][1];
-      const Vec3<AD>     e              = xs[b] - xs[a];
-      const AD           length_squared = dot(e, e);
-      const AD           length         = sqrt(length_squared);
-      const Vec3<double> n_s            = cross(ez, input.xs[b] - input.xs[a]);
-      const bool         j_is_a         = (a == 0);
-
-      // The master segments facing this one, projected onto its line.
-      Overlap      overlaps[max_mortar_master_nodes];
-      unsigned int n_overlaps = 0;
-      AD           covered    = zero;
-      for (unsigned int m = 0; m < input.n_master_segments; ++m)
-      {
-        const unsigned int c   = input.master_segment[m][0],
-                           d   = input.master_segment[m][1];
-        const Vec3<double> n_m = cross(ez, input.xm[d] - input.xm[c]);
-        if (dot(n_m, n_s) >= 0)
-          continue;
-        Overlap o;
-        o.c   = c;
-        o.d   = d;
-        o.s_c = dot(xm[c] - xs[a], e) / length_squared;
-        o.s_d = dot(xm[d] - xs[a], e) / length_squared;
-        if (std::abs(o.s_c.val() - o.s_d.val()) < 1e-12)
-          continue;
-        const AD &low  = o.s_c.val() < o.s_d.val() ? o.s_c : o.s_d;
-        const AD &high = o.s_c.val() < o.s_d.val() ? o.s_d : o.s_c;
-        o.lo           = low.val() > 0 ? low : zero;
-        o.hi           = high.val() < 1 ? high : AD(1.);
-        if (o.hi.val() <= o.lo.val())
-          continue;
-        covered += o.hi - o.lo;
-        overlaps[n_overlaps++] = o;
-      }
-      // Dual where the master covers the segment, standard where it covers
-      // half of it or less, blended in between (theta): the switch at the
-      // master's end is continuous, so a segment whose end lines up with
-      // the master's (a symmetry plane) is not flipped between the two
-      // bases by round-off, and the weights stay positive.
-      const AD   theta     = !input.dual || covered.val() <= 0.5 ? zero :
-                             covered.val() >= 1.                 ? AD(1.) :
-                                                   2. * covered - 1.;
-      const bool dual_here = theta.val() > 0;
-      // The dual functions of the segment, Phi = A N with A = D_e M_e^-1
-      // (M_e the segment's mass matrix, D_e its row sums) in the measure
-      // of the integrals: 2 N_j - N_o on a plane; with the weight 2 pi r of
-      // axisymmetry they differ, and the plane ones would give the node on
-      // the axis a zero weight. c_j, c_o: the row of A of node j.
-      AD c_j = 1., c_o = 0.;
-      if (dual_here)
-      {
-        AD mass[2][2] = {{zero, zero}, {zero, zero}};
-        for (const double g : {-gauss, gauss})
-        {
-          const AD t = 0.5 + 0.5 * g;
-          AD       r = 1.;
-          if (input.axisymmetric)
-            r = xs[a][0] + t * (xs[b][0] - xs[a][0]);
-          const AD N[2] = {j_is_a ? 1. - t : t, j_is_a ? t : 1. - t};
-          for (unsigned int i = 0; i < 2; ++i)
-            for (unsigned int k = 0; k < 2; ++k)
-              mass[i][k] += 0.5 * r * N[i] * N[k];
-        }
-        // Row j of D_e M_e^-1 (index 0: node j, 1: the other node).
-        const AD det = mass[0][0] * mass[1][1] - mass[0][1] * mass[1][0];
-        const AD d_j = mass[0][0] + mass[0][1];
-        c_j          = theta * d_j * mass[1][1] / det + (1. - theta);
-        c_o          = -theta * d_j * mass[0][1] / det;
-      }
-      AD segment_weight = zero;
-
-      for (unsigned int i = 0; i < n_overlaps; ++i)
-      {
-        const Overlap &o = overlaps[i];
-        for (const double g : {-gauss, gauss})
-        {
-          const AD t      = 0.5 * (o.lo + o.hi) + 0.5 * (o.hi - o.lo) * g;
-          AD       weight = 0.5 * (o.hi - o.lo) * length;
-          if (input.axisymmetric)
-            weight *= 2. * M_PI * (xs[a][0] + t * (xs[b][0] - xs[a][0]));
-          const AD N_a   = 1. - t;
-          const AD N_b   = t;
-          const AD N_j   = j_is_a ? N_a : N_b;
-          const AD N_o   = j_is_a ? N_b : N_a;
-          const AD phi   = c_j * N_j + c_o * N_o;
-          const AD eta   = (t - o.s_c) / (o.s_d - o.s_c);
-          const AD w_phi = weight * phi;
-          D[a] += w_phi * N_a;
-          D[b] += w_phi * N_b;
-          M[o.c] += w_phi * (1. - eta);
-          M[o.d] += w_phi * eta;
-          segment_weight += w_phi;
-        }
-      }
-      normal_j = normal_j + scale(segment_weight / length, cross(ez_ad, e));
-    }
     return internal::finish_mortar<2>(slave,
                                       enforcement,
                                       D,
@@ -365,7 +384,7 @@ namespace tribos
     const auto local = internal::local_number;
     pair.slave_stencil(k, stencil);
     // 2 nodes per segment on Q1, 3 (the ends, then the middle) on Q2.
-    mortar.n_segment_nodes = pair.slave->faces()[0].n_nodes();
+    mortar.n_segment_nodes = pair.slave->quadratic() ? 3 : 2;
     for (const unsigned int f : pair.slave->nodes()[k].faces)
     {
       auto &segment = mortar.slave_segment[mortar.n_slave_segments++];

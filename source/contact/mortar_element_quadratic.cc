@@ -72,23 +72,24 @@ namespace tribos
      * before its start, +1 beyond its end (as seen along the tangent at
      * that end), 0 inside, with @p xi the root of r(xi) = (y - x(xi)) .
      * x'(xi) in (-1, 1), by Newton kept inside the bracket where r changes
-     * sign (bisection if a step leaves it). Outside, where the point lies
-     * does not matter: the overlap is clipped to the segment.
+     * sign (bisection if a step leaves it), and @p slope = r'(xi) there.
+     * Outside, where the point lies does not matter: the overlap is
+     * clipped to the segment.
      */
     int
     closest_point(const Vec3<double> *const *x,
                   const Vec3<double>        &y,
-                  double                    &xi)
+                  double                    &xi,
+                  double                    &slope)
     {
       const Vec3<double> c        = curvature(x);
-      const auto         residual = [&](const double at, double &slope)
+      const auto         residual = [&](const double at, double &derivative)
       {
         Vec3<double> p, t;
         curve(x, at, p, t);
-        slope = -dot(t, t) + dot(y - p, c);
+        derivative = -dot(t, t) + dot(y - p, c);
         return dot(y - p, t);
       };
-      double       slope;
       const double r_start = residual(-1., slope);
       if (r_start <= 0)
         return -1;
@@ -112,26 +113,28 @@ namespace tribos
         if (step < 1e-14 || high - low < 1e-14)
           break;
       }
+      residual(xi, slope);
       return 0;
     }
 
     /**
      * Where the line through @p p along the normal of the tangent @p t
      * meets the curve through @p x: eta with (x(eta) - p) . t = 0, by
-     * Newton from @p eta. Returns false if it does not converge within
-     * +-3.
+     * Newton from @p eta, and @p slope = x'(eta) . t there. Returns false
+     * if it does not converge within +-3.
      */
     bool
     along_normal(const Vec3<double> *const *x,
                  const Vec3<double>        &p,
                  const Vec3<double>        &t,
-                 double                    &eta)
+                 double                    &eta,
+                 double                    &slope)
     {
+      Vec3<double> y, a;
       for (unsigned int i = 0; i < newton_iterations; ++i)
       {
-        Vec3<double> y, a;
         curve(x, eta, y, a);
-        const double slope = dot(a, t);
+        slope = dot(a, t);
         if (slope == 0)
           return false;
         const double step = dot(y - p, t) / slope;
@@ -139,7 +142,11 @@ namespace tribos
         if (std::abs(eta) > projection_limit)
           return false;
         if (std::abs(step) < 1e-14)
+        {
+          curve(x, eta, y, a);
+          slope = dot(a, t);
           return true;
+        }
       }
       return false;
     }
@@ -166,209 +173,174 @@ namespace tribos
 
 
 
-  ContactPointResult
-  Mortar2D::evaluate_quadratic(const SlaveInput     &slave,
-                               const MortarInput    &input,
-                               const Enforcement<2> &enforcement,
-                               double               *R,
-                               double               *K,
-                               bool                 &paired,
-                               Vec3<double>         &weighted_point)
+  namespace internal
   {
-    const unsigned int n_s             = input.n_slave_nodes;
-    const unsigned int n_m             = input.n_master_nodes;
-    const unsigned int n_displacements = 2 * (n_s + n_m);
-    const unsigned int n_out = n_displacements + enforcement.n_node_unknowns();
-
-    Vec3<AD> xs[MortarInput::max_slave_nodes], xm[max_mortar_master_nodes];
-    for (unsigned int i = 0; i < n_s; ++i)
-      xs[i] = internal::seed<2>(input.xs[i], 2 * i, n_out);
-    for (unsigned int l = 0; l < n_m; ++l)
-      xm[l] = internal::seed<2>(input.xm[l], 2 * (n_s + l), n_out);
-
-    const Vec3<double> ez{{0., 0., 1.}};
-    const Vec3<AD>     ez_ad = to<AD>(ez);
-    const AD           zero(0.);
-
-    AD D[MortarInput::max_slave_nodes];
-    for (unsigned int i = 0; i < n_s; ++i)
-      D[i] = zero;
-    AD M[max_mortar_master_nodes];
-    for (unsigned int l = 0; l < n_m; ++l)
-      M[l] = zero;
-
-    struct Overlap
+    void
+    integrate_quadratic(const MortarInput     &input,
+                        const Vec3<ContactAD> *xs,
+                        const Vec3<ContactAD> *xm,
+                        ContactAD             *D,
+                        ContactAD             *M,
+                        Vec3<ContactAD>       &normal_j)
     {
-      unsigned int m;
-      /** Slave coordinates of the master's ends (its xi = -1, +1). */
-      AD xi_c, xi_d;
-      AD lo, hi;
-    };
-    Vec3<AD> normal_j = {{zero, zero, zero}};
-    for (unsigned int s = 0; s < input.n_slave_segments; ++s)
-    {
-      const unsigned int *segment = input.slave_segment[s];
-      const Vec3<double> *x[3]    = {&input.xs[segment[0]],
-                                     &input.xs[segment[1]],
-                                     &input.xs[segment[2]]};
-      const Vec3<AD>     *x_ad[3] = {&xs[segment[0]],
-                                     &xs[segment[1]],
-                                     &xs[segment[2]]};
-      // Node j's place in the segment: 0, 1 (ends) or 2 (middle).
-      const unsigned int j_local =
-        segment[0] == 0 ? 0 : (segment[1] == 0 ? 1 : 2);
-      const Vec3<double> chord = *x[1] - *x[0];
-      const Vec3<double> n_s   = cross(ez, chord);
+      const Vec3<double> ez{{0., 0., 1.}};
+      const Vec3<AD>     ez_ad = to<AD>(ez);
+      const AD           zero(0.);
 
-      Overlap      overlaps[max_mortar_master_nodes];
-      unsigned int n_overlaps = 0;
-      AD           covered    = zero;
-      for (unsigned int m = 0; m < input.n_master_segments; ++m)
+      struct Overlap
       {
-        const auto         &ms   = input.master_segment[m];
-        const Vec3<double> *y[3] = {&input.xm[ms[0]],
-                                    &input.xm[ms[1]],
-                                    &input.xm[ms[2]]};
-        if (dot(cross(ez, *y[1] - *y[0]), n_s) >= 0)
-          continue;
-        Overlap o;
-        o.m = m;
-        // The master's ends on the slave curve: in double, then one
-        // Newton step in AD numbers for the derivatives.
-        double          ends[2];
-        AD              ends_ad[2];
-        const Vec3<AD> *y_ad[2] = {&xm[ms[0]], &xm[ms[1]]};
-        for (unsigned int e = 0; e < 2; ++e)
+        unsigned int m;
+        /** The overlap in the slave segment's coordinate. */
+        AD lo, hi;
+      };
+      for (unsigned int s = 0; s < input.n_slave_segments; ++s)
+      {
+        const unsigned int *segment = input.slave_segment[s];
+        const Vec3<double> *x[3]    = {&input.xs[segment[0]],
+                                       &input.xs[segment[1]],
+                                       &input.xs[segment[2]]};
+        const Vec3<AD>     *x_ad[3] = {&xs[segment[0]],
+                                       &xs[segment[1]],
+                                       &xs[segment[2]]};
+        // Node j's place in the segment: 0, 1 (ends) or 2 (middle).
+        const unsigned int j_local =
+          segment[0] == 0 ? 0 : (segment[1] == 0 ? 1 : 2);
+        const Vec3<double> chord = *x[1] - *x[0];
+        const Vec3<double> n_s   = cross(ez, chord);
+
+        Overlap      overlaps[max_mortar_master_nodes];
+        unsigned int n_overlaps = 0;
+        AD           covered    = zero;
+        for (unsigned int m = 0; m < input.n_master_segments; ++m)
         {
-          ends[e] = 2. * dot(*y[e] - *x[0], chord) / dot(chord, chord) - 1.;
-          const int where = closest_point(x, *y[e], ends[e]);
-          if (where != 0)
-          {
-            // Before or beyond the segment: clipped, no derivative.
-            ends[e]    = 2. * where;
-            ends_ad[e] = ends[e];
+          const auto         &ms   = input.master_segment[m];
+          const Vec3<double> *y[3] = {&input.xm[ms[0]],
+                                      &input.xm[ms[1]],
+                                      &input.xm[ms[2]]};
+          if (dot(cross(ez, *y[1] - *y[0]), n_s) >= 0)
             continue;
+          Overlap o;
+          o.m = m;
+          // The master's ends on the slave curve: in double, then one
+          // Newton step in AD numbers for the derivatives.
+          double          ends[2];
+          AD              ends_ad[2];
+          const Vec3<AD> *y_ad[2] = {&xm[ms[0]], &xm[ms[1]]};
+          for (unsigned int e = 0; e < 2; ++e)
+          {
+            ends[e] = 2. * dot(*y[e] - *x[0], chord) / dot(chord, chord) - 1.;
+            double    slope;
+            const int where = closest_point(x, *y[e], ends[e], slope);
+            if (where != 0)
+            {
+              // Before or beyond the segment: clipped, no derivative.
+              ends[e]    = 2. * where;
+              ends_ad[e] = ends[e];
+              continue;
+            }
+            Vec3<AD> p_ad, t_ad;
+            curve(x_ad, AD(ends[e]), p_ad, t_ad);
+            ends_ad[e] = ends[e] - dot(*y_ad[e] - p_ad, t_ad) / slope;
           }
-          Vec3<double> p, t;
-          curve(x, ends[e], p, t);
-          const double slope = -dot(t, t) + dot(*y[e] - p, curvature(x));
-          Vec3<AD>     p_ad, t_ad;
-          curve(x_ad, AD(ends[e]), p_ad, t_ad);
-          ends_ad[e] = ends[e] - dot(*y_ad[e] - p_ad, t_ad) / slope;
+          if (std::abs(ends[0] - ends[1]) < 1e-12)
+            continue;
+          const bool c_low = ends[0] < ends[1];
+          const AD  &low   = c_low ? ends_ad[0] : ends_ad[1];
+          const AD  &high  = c_low ? ends_ad[1] : ends_ad[0];
+          o.lo             = low.val() > -1. ? low : AD(-1.);
+          o.hi             = high.val() < 1. ? high : AD(1.);
+          if (o.hi.val() <= o.lo.val())
+            continue;
+          covered += 0.5 * (o.hi - o.lo);
+          overlaps[n_overlaps++] = o;
         }
-        if (std::abs(ends[0] - ends[1]) < 1e-12)
-          continue;
-        o.xi_c           = ends_ad[0];
-        o.xi_d           = ends_ad[1];
-        const bool c_low = ends[0] < ends[1];
-        const AD  &low   = c_low ? o.xi_c : o.xi_d;
-        const AD  &high  = c_low ? o.xi_d : o.xi_c;
-        o.lo             = low.val() > -1. ? low : AD(-1.);
-        o.hi             = high.val() < 1. ? high : AD(1.);
-        if (o.hi.val() <= o.lo.val())
-          continue;
-        covered += 0.5 * (o.hi - o.lo);
-        overlaps[n_overlaps++] = o;
-      }
 
-      // The dual functions of the segment as on Q1 (blended towards the
-      // standard ones where the master covers it in part): Phi_j = sum_k
-      // c_k N_k.
-      const AD theta = !input.dual || covered.val() <= 0.5 ? zero :
-                       covered.val() >= 1.                 ? AD(1.) :
-                                                             2. * covered - 1.;
-      AD       c[3]  = {zero, zero, zero};
-      c[j_local]     = 1.;
-      if (theta.val() > 0)
-      {
-        AD mass[3][3];
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int k = 0; k < 3; ++k)
-            mass[i][k] = zero;
-        for (unsigned int q = 0; q < n_gauss; ++q)
+        // The dual functions of the segment as on Q1 (blended towards the
+        // standard ones where the master covers it in part): Phi_j = sum_k
+        // c_k N_k.
+        const AD theta = !input.dual || covered.val() <= 0.5 ? zero :
+                         covered.val() >= 1.                 ? AD(1.) :
+                                                               2. * covered - 1.;
+        AD       c[3]  = {zero, zero, zero};
+        c[j_local]     = 1.;
+        if (theta.val() > 0)
         {
-          const double xi = gauss_x[q];
-          double       N[3], dN[3];
-          shape(xi, N, dN);
-          Vec3<AD> p, t;
-          curve(x_ad, AD(xi), p, t);
-          AD weight = gauss_w[q] * norm(t);
-          if (input.axisymmetric)
-            weight *= p[0];
+          AD mass[3][3];
           for (unsigned int i = 0; i < 3; ++i)
             for (unsigned int k = 0; k < 3; ++k)
-              mass[i][k] += weight * N[i] * N[k];
-        }
-        AD inverse[3];
-        inverse_row(mass, j_local, inverse);
-        const AD d_j = mass[j_local][0] + mass[j_local][1] + mass[j_local][2];
-        for (unsigned int k = 0; k < 3; ++k)
-          c[k] = theta * d_j * inverse[k] + (1. - theta) * c[k];
-      }
-
-      for (unsigned int i = 0; i < n_overlaps; ++i)
-      {
-        const Overlap      &o       = overlaps[i];
-        const auto         &ms      = input.master_segment[o.m];
-        const Vec3<double> *y[3]    = {&input.xm[ms[0]],
-                                       &input.xm[ms[1]],
-                                       &input.xm[ms[2]]};
-        const Vec3<AD>     *y_ad[3] = {&xm[ms[0]], &xm[ms[1]], &xm[ms[2]]};
-        for (unsigned int q = 0; q < n_gauss; ++q)
-        {
-          const AD xi = 0.5 * (o.lo + o.hi) + 0.5 * (o.hi - o.lo) * gauss_x[q];
-          Vec3<AD> p, t;
-          curve(x_ad, xi, p, t);
-          // The master point on the slave's normal line at xi, from the
-          // projection onto the master's chord.
-          Vec3<double> p_value, t_value;
-          curve(x, xi.val(), p_value, t_value);
-          const Vec3<double> master_chord = *y[1] - *y[0];
-          double             eta = 2. * dot(p_value - *y[0], master_chord) /
-                         dot(master_chord, master_chord) -
-                       1.;
-          if (!along_normal(y, p_value, t_value, eta))
-            continue;
-          Vec3<double> y_value, a_value;
-          curve(y, eta, y_value, a_value);
-          Vec3<AD> y_point, a;
-          curve(y_ad, AD(eta), y_point, a);
-          const AD eta_ad = eta - dot(y_point - p, t) / dot(a_value, t_value);
-
-          const AD length = norm(t);
-          AD       weight = 0.5 * (o.hi - o.lo) * gauss_w[q] * length;
-          if (input.axisymmetric)
-            weight *= 2. * M_PI * p[0];
-          AD N[3], dN[3], N_m[3], dN_m[3];
-          shape(xi, N, dN);
-          shape(eta_ad, N_m, dN_m);
-          const AD phi   = c[0] * N[0] + c[1] * N[1] + c[2] * N[2];
-          const AD w_phi = weight * phi;
-          for (unsigned int a_node = 0; a_node < 3; ++a_node)
+              mass[i][k] = zero;
+          for (unsigned int q = 0; q < n_gauss; ++q)
           {
-            D[segment[a_node]] += w_phi * N[a_node];
-            M[ms[a_node]] += w_phi * N_m[a_node];
+            const double xi = gauss_x[q];
+            double       N[3], dN[3];
+            shape(xi, N, dN);
+            Vec3<AD> p, t;
+            curve(x_ad, AD(xi), p, t);
+            AD weight = gauss_w[q] * norm(t);
+            if (input.axisymmetric)
+              weight *= p[0];
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int k = 0; k < 3; ++k)
+                mass[i][k] += weight * N[i] * N[k];
           }
-          normal_j = normal_j + scale(w_phi / length, cross(ez_ad, t));
+          AD inverse[3];
+          inverse_row(mass, j_local, inverse);
+          const AD d_j = mass[j_local][0] + mass[j_local][1] + mass[j_local][2];
+          for (unsigned int k = 0; k < 3; ++k)
+            c[k] = theta * d_j * inverse[k] + (1. - theta) * c[k];
+        }
+
+        for (unsigned int i = 0; i < n_overlaps; ++i)
+        {
+          const Overlap      &o       = overlaps[i];
+          const auto         &ms      = input.master_segment[o.m];
+          const Vec3<double> *y[3]    = {&input.xm[ms[0]],
+                                         &input.xm[ms[1]],
+                                         &input.xm[ms[2]]};
+          const Vec3<AD>     *y_ad[3] = {&xm[ms[0]], &xm[ms[1]], &xm[ms[2]]};
+          for (unsigned int q = 0; q < n_gauss; ++q)
+          {
+            const AD xi =
+              0.5 * (o.lo + o.hi) + 0.5 * (o.hi - o.lo) * gauss_x[q];
+            Vec3<AD> p, t;
+            curve(x_ad, xi, p, t);
+            // The master point on the slave's normal line at xi, from the
+            // projection onto the master's chord.
+            Vec3<double> p_value, t_value;
+            for (unsigned int d = 0; d < 3; ++d)
+            {
+              p_value[d] = p[d].val();
+              t_value[d] = t[d].val();
+            }
+            const Vec3<double> master_chord = *y[1] - *y[0];
+            double             eta = 2. * dot(p_value - *y[0], master_chord) /
+                           dot(master_chord, master_chord) -
+                         1.;
+            double slope;
+            if (!along_normal(y, p_value, t_value, eta, slope))
+              continue;
+            Vec3<AD> y_point, a;
+            curve(y_ad, AD(eta), y_point, a);
+            const AD eta_ad = eta - dot(y_point - p, t) / slope;
+
+            const AD length = norm(t);
+            AD       weight = 0.5 * (o.hi - o.lo) * gauss_w[q] * length;
+            if (input.axisymmetric)
+              weight *= 2. * M_PI * p[0];
+            AD N[3], dN[3], N_m[3], dN_m[3];
+            shape(xi, N, dN);
+            shape(eta_ad, N_m, dN_m);
+            const AD phi   = c[0] * N[0] + c[1] * N[1] + c[2] * N[2];
+            const AD w_phi = weight * phi;
+            for (unsigned int a_node = 0; a_node < 3; ++a_node)
+            {
+              D[segment[a_node]] += w_phi * N[a_node];
+              M[ms[a_node]] += w_phi * N_m[a_node];
+            }
+            normal_j = normal_j + scale(w_phi / length, cross(ez_ad, t));
+          }
         }
       }
     }
-    return internal::finish_mortar<2>(slave,
-                                      enforcement,
-                                      D,
-                                      xs,
-                                      input.xs_old,
-                                      n_s,
-                                      M,
-                                      xm,
-                                      input.xm_old,
-                                      n_m,
-                                      normal_j,
-                                      input.min_weight,
-                                      n_displacements,
-                                      R,
-                                      K,
-                                      paired,
-                                      weighted_point);
-  }
+  } // namespace internal
 } // namespace tribos

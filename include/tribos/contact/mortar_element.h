@@ -119,38 +119,6 @@ namespace tribos
              double               *K,
              bool                 &paired,
              Vec3<double>         &weighted_point);
-
-    /**
-     * The same on quadratic segments (Q2, input.n_segment_nodes = 3),
-     * called by evaluate(). Slave and master are the curves x(xi) =
-     * sum N_a(xi) x_a of the segments' three nodes. A master segment's
-     * overlap with a slave segment runs between the closest-point
-     * projections of its ends onto the slave curve; at each Gauss point
-     * xi of the overlap the master point is where the slave's normal line
-     * at xi meets the master curve (so the overlap's ends map to the
-     * master's ends). Both projections are Newton iterations in double,
-     * then one Newton step in AD numbers, which gives their exact first
-     * derivatives (implicit function theorem). 5-point Gauss per overlap:
-     * exact on straight segments (the integrands are then polynomials of
-     * degree 4), and the mass matrix of the dual functions likewise.
-     *
-     * Dual basis: Phi = A N with A = D_e M_e^-1 of the segment's quadratic
-     * shape functions, biorthogonal to them (on a straight segment the
-     * weights int Phi_j = int N_j are h/6, 2h/3, h/6: positive, so the
-     * quadratic dual basis is usable in 2D as it is, without the
-     * basis transformation 3D quadratic faces would need). Blended towards
-     * the standard functions on partly covered segments as on Q1. The
-     * dual functions still sum to one, so a uniform traction is
-     * transmitted exactly: the patch test holds for Q2.
-     */
-    static ContactPointResult
-    evaluate_quadratic(const SlaveInput     &slave,
-                       const MortarInput    &input,
-                       const Enforcement<2> &enforcement,
-                       double               *R,
-                       double               *K,
-                       bool                 &paired,
-                       Vec3<double>         &weighted_point);
   };
 
   /**
@@ -174,6 +142,40 @@ namespace tribos
 
   namespace internal
   {
+    /**
+     * The integrals of Mortar2D::evaluate() on quadratic segments (Q2,
+     * input.n_segment_nodes = 3): the node's weights @p D on the slave
+     * nodes and @p M on the master nodes and its unnormalized normal
+     * @p normal_j, from the positions @p xs, @p xm (seeded AD numbers;
+     * D, M and normal_j start at zero). Slave and master are the curves x(xi) =
+     * sum N_a(xi) x_a of the segments' three nodes. A master segment's
+     * overlap with a slave segment runs between the closest-point
+     * projections of its ends onto the slave curve; at each Gauss point
+     * xi of the overlap the master point is where the slave's normal line
+     * at xi meets the master curve (so the overlap's ends map to the
+     * master's ends). Both projections are Newton iterations in double,
+     * then one Newton step in AD numbers, which gives their exact first
+     * derivatives (implicit function theorem). 5-point Gauss per overlap:
+     * exact on straight segments (the integrands are then polynomials of
+     * degree 4), and the mass matrix of the dual functions likewise.
+     *
+     * Dual basis: Phi = A N with A = D_e M_e^-1 of the segment's quadratic
+     * shape functions, biorthogonal to them (on a straight segment the
+     * weights int Phi_j = int N_j are h/6, 2h/3, h/6: positive, so the
+     * quadratic dual basis is usable in 2D as it is, without the
+     * basis transformation 3D quadratic faces would need). Blended towards
+     * the standard functions on partly covered segments as on Q1. The
+     * dual functions still sum to one, so a uniform traction is
+     * transmitted exactly: the patch test holds for Q2.
+     */
+    void
+    integrate_quadratic(const MortarInput     &input,
+                        const Vec3<ContactAD> *xs,
+                        const Vec3<ContactAD> *xm,
+                        ContactAD             *D,
+                        ContactAD             *M,
+                        Vec3<ContactAD>       &normal_j);
+
     /** The position of @p node in @p list, appended if it is not there:
      * an element's local number of a node. */
     inline unsigned int
