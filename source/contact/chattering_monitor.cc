@@ -18,11 +18,18 @@ namespace tribos
     status.resize(pairs.size());
     changes.resize(pairs.size());
     held.resize(pairs.size());
+    slip_direction.resize(pairs.size());
+    reversals.resize(pairs.size());
+    held_stick.resize(pairs.size());
     for (unsigned int p = 0; p < pairs.size(); ++p)
     {
-      status[p].assign(pairs[p].n_nodes(), -1);
-      changes[p].assign(pairs[p].n_nodes(), 0);
-      held[p].assign(pairs[p].n_nodes(), false);
+      const unsigned int n = pairs[p].n_nodes();
+      status[p].assign(n, -1);
+      changes[p].assign(n, 0);
+      held[p].assign(n, false);
+      slip_direction[p].assign(n, Vec3<double>{{0., 0., 0.}});
+      reversals[p].assign(n, 0);
+      held_stick[p].assign(n, false);
     }
   }
 
@@ -41,11 +48,20 @@ namespace tribos
       for (unsigned int k = 0; k < pairs[p].n_nodes(); ++k)
         if (pairs[p].owned[k])
         {
-          const int now = pairs[p].current[k].closed() ? 1 : 0;
+          const auto &result = pairs[p].current[k].result;
+          const int   now    = pairs[p].current[k].closed() ? 1 : 0;
           if (count && status[p][k] >= 0 && now != status[p][k])
             ++changes[p][k];
           status[p][k] = now;
-          if (changes[p][k] > limit)
+
+          Vec3<double> direction{{0., 0., 0.}};
+          const double magnitude = norm(result.traction);
+          if (result.status == ContactStatus::slip && magnitude > 0)
+            direction = scale(1. / magnitude, result.traction);
+          if (count && dot(direction, slip_direction[p][k]) < 0)
+            ++reversals[p][k];
+          slip_direction[p][k] = direction;
+          if (changes[p][k] > limit || reversals[p][k] > limit)
             ++n_chattering;
         }
     return Utilities::MPI::sum(n_chattering, mpi_communicator);
@@ -61,10 +77,14 @@ namespace tribos
     unsigned int n = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int k = 0; k < pairs[p].n_nodes(); ++k)
-        if (pairs[p].owned[k] && changes[p][k] > limit)
+        if (pairs[p].owned[k])
         {
-          held[p][k] = true;
-          ++n;
+          if (changes[p][k] > limit)
+            held[p][k] = true;
+          if (reversals[p][k] > limit)
+            held_stick[p][k] = true;
+          if (held[p][k] || held_stick[p][k])
+            ++n;
         }
     return Utilities::MPI::sum(n, mpi_communicator);
   }
@@ -94,8 +114,10 @@ namespace tribos
       for (unsigned int k = 0; k < pairs[p].n_nodes(); ++k)
         if (held_in_tension(pairs, p, k))
         {
-          held[p][k]    = false;
-          changes[p][k] = 0;
+          held[p][k]       = false;
+          changes[p][k]    = 0;
+          held_stick[p][k] = false;
+          reversals[p][k]  = 0;
           ++n;
         }
     return Utilities::MPI::sum(n, mpi_communicator);

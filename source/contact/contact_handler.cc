@@ -222,6 +222,7 @@ namespace tribos
           slave.committed = &committed;
           slave.law       = enforcement.law(pair, k, state, homogeneous);
           slave.law.frozen_closed = monitor.frozen(p, k);
+          slave.law.frozen_stick  = monitor.frozen_stick(p, k);
           slave.area              = pair.area[k];
           slave.unknowns          = n_unknowns > 0 ? &state.lambda : nullptr;
           slave.consistent        = consistent;

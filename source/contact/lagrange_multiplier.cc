@@ -171,7 +171,8 @@ namespace tribos
                        positive_part(AD(pressure - law.normal_penalty * gap));
       Vec3<AD> returned;
       AD       magnitude;
-      if (coulomb_return(trial, limit, returned, magnitude))
+      if (!law.frozen_stick &&
+          coulomb_return(trial, limit, returned, magnitude))
       {
         tangential            = tau_free - returned;
         result.status         = ContactStatus::slip;

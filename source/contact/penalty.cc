@@ -65,7 +65,8 @@ namespace tribos
     Vec3<AD> traction;
     AD       magnitude;
     result.status = ContactStatus::stick;
-    if (coulomb_return(trial, limit, traction, magnitude))
+    traction      = trial;
+    if (!law.frozen_stick && coulomb_return(trial, limit, traction, magnitude))
     {
       result.status = ContactStatus::slip;
       result.slip_increment =

@@ -128,7 +128,8 @@ namespace tribos
     n_chattering  = std::max(n_chattering, n);
     const std::string what =
       "chattering: " + std::to_string(n) +
-      " slave node(s) changed contact status more than " +
+      " slave node(s) changed contact status or reversed their slip more "
+      "than " +
       std::to_string(cp.chattering_flips) +
       " times in this increment (Contact/Chattering flips)";
     if (n > 0 && cp.chattering_remedy == Parameters::ChatteringRemedy::cutback)
@@ -139,8 +140,8 @@ namespace tribos
     {
       n_frozen = contact->freeze_chattering(cp.chattering_flips);
       message("  " + what +
-              ": held closed for the rest of the increment (Contact/"
-              "Chattering remedy = freeze)");
+              ": held closed (reversing slip: in stick) for the rest of "
+              "the increment (Contact/Chattering remedy = freeze)");
     }
   }
 

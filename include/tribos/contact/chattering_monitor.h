@@ -16,7 +16,14 @@ namespace tribos
    * freeze holds such nodes closed for the rest of the increment (the
    * result is accepted only if none of them ends in tension; those that do
    * are released once and Newton goes on). Stick/slip
-   * changes are the return map's business and converge: not counted.
+   * changes are the return map's business and converge: not counted. A
+   * slipping node whose slip reverses between iterations (the tangential
+   * traction turning by more than 90 degrees) more than the limit is
+   * chattering in friction: Newton cycles between the two slip directions
+   * across the stick region between them (the 2D ironing with mortar, an
+   * edge node of the contact zone with a small pressure). The remedy holds
+   * it in stick; the result is accepted only if its traction is within the
+   * Coulomb cone (else it is released once, as above).
    */
   template <int dim>
   class ChatteringMonitor
@@ -45,6 +52,14 @@ namespace tribos
     freeze(const std::vector<ContactPair<dim>> &pairs,
            const unsigned int                   limit);
 
+    /** Whether node @p k of pair @p p is held in stick. */
+    bool
+    frozen_stick(const unsigned int p, const unsigned int k) const
+    {
+      return p < held_stick.size() && k < held_stick[p].size() &&
+             held_stick[p][k];
+    }
+
     /** Whether node @p k of pair @p p is held closed. */
     bool
     frozen(const unsigned int p, const unsigned int k) const
@@ -53,7 +68,8 @@ namespace tribos
     }
 
     /** Held nodes whose pressure is tensile or that lost their master
-     * point (all processes). */
+     * point, and nodes held in stick whose traction is beyond the Coulomb
+     * cone (all processes). */
     unsigned int
     n_frozen_in_tension(const std::vector<ContactPair<dim>> &pairs) const;
 
@@ -71,16 +87,28 @@ namespace tribos
                     const unsigned int                   k) const
     {
       const auto &state = pairs[p].current[k];
-      return frozen(p, k) && pairs[p].owned[k] &&
-             (state.result.pressure < 0 || !state.paired);
+      if (!pairs[p].owned[k])
+        return false;
+      if (frozen(p, k) && (state.result.pressure < 0 || !state.paired))
+        return true;
+      const double limit = pairs[p].description.friction_coefficient *
+                           std::max(state.result.pressure, 0.);
+      return frozen_stick(p, k) &&
+             (!state.closed() ||
+              norm(state.result.traction) > limit * (1. + 1e-6));
     }
 
     MPI_Comm mpi_communicator;
     /** Per pair and node: status at the last evaluation (-1: none yet),
-     * changes in the increment, held closed. */
+     * changes in the increment, held closed; the direction of the
+     * tangential traction at the last evaluation if the node slipped
+     * (else zero), reversals of the slip in the increment, held in stick. */
     std::vector<std::vector<int>>          status;
     std::vector<std::vector<unsigned int>> changes;
     std::vector<std::vector<bool>>         held;
+    std::vector<std::vector<Vec3<double>>> slip_direction;
+    std::vector<std::vector<unsigned int>> reversals;
+    std::vector<std::vector<bool>>         held_stick;
   };
 } // namespace tribos
 

@@ -51,6 +51,13 @@ namespace tribos
      * accepted only if its pressure is not tensile).
      */
     bool frozen_closed = false;
+    /**
+     * Chattering remedy for friction: the node is held in stick for the
+     * rest of the increment (its slip direction kept reversing while
+     * Newton stalled); the converged state is accepted only if its
+     * traction is within the Coulomb cone.
+     */
+    bool frozen_stick = false;
   };
 
 
