@@ -58,8 +58,13 @@ namespace tribos
           const double magnitude = norm(result.traction);
           if (result.status == ContactStatus::slip && magnitude > 0)
             direction = scale(1. / magnitude, result.traction);
+          // Reversals in a row: an iteration without one ends the count
+          // (sporadic reversals while a wide slip zone settles, as in the
+          // 3D upsetting, are not a cycle).
           if (count && dot(direction, slip_direction[p][k]) < 0)
             ++reversals[p][k];
+          else
+            reversals[p][k] = 0;
           slip_direction[p][k] = direction;
           if (changes[p][k] > limit || reversals[p][k] > limit)
             ++n_chattering;

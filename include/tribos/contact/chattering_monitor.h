@@ -18,7 +18,8 @@ namespace tribos
    * are released once and Newton goes on). Stick/slip
    * changes are the return map's business and converge: not counted. A
    * slipping node whose slip reverses between iterations (the tangential
-   * traction turning by more than 90 degrees) more than the limit is
+   * traction turning by more than 90 degrees) in more than the limit of
+   * successive stalled iterations is
    * chattering in friction: Newton cycles between the two slip directions
    * across the stick region between them (the 2D ironing with mortar, an
    * edge node of the contact zone with a small pressure). The remedy holds
@@ -102,7 +103,7 @@ namespace tribos
     /** Per pair and node: status at the last evaluation (-1: none yet),
      * changes in the increment, held closed; the direction of the
      * tangential traction at the last evaluation if the node slipped
-     * (else zero), reversals of the slip in the increment, held in stick. */
+     * (else zero), successive reversals of the slip, held in stick. */
     std::vector<std::vector<int>>          status;
     std::vector<std::vector<unsigned int>> changes;
     std::vector<std::vector<bool>>         held;
