@@ -166,16 +166,16 @@ namespace tribos
         released = true;
         n_frozen -= contact->release_frozen_in_tension();
         message("  chattering: " + std::to_string(n_tension) +
-                " held node(s) ended in tension or off the master: released, "
-                "Newton goes on");
+                " held node(s) ended in tension, off the master or (held in "
+                "stick) beyond the Coulomb cone: released, Newton goes on");
         return Verdict::iterate;
       }
       if (n_tension > 0)
         throw NonConvergence(
           std::to_string(n_tension) +
-          " chattering node(s) held closed ended in tension or off the "
-          "master (Contact/Chattering remedy = freeze): cutting the "
-          "increment");
+          " chattering node(s) held ended in tension, off the master or "
+          "beyond the Coulomb cone (Contact/Chattering remedy = freeze): "
+          "cutting the increment");
     }
     report.n_chattering  = n_chattering;
     report.n_relaxations = n_relaxations;

@@ -17,10 +17,10 @@ namespace tribos
    * result is accepted only if none of them ends in tension; those that do
    * are released once and Newton goes on). Stick/slip
    * changes are the return map's business and converge: not counted. A
-   * slipping node whose slip reverses between iterations (the tangential
-   * traction turning by more than 90 degrees) in more than the limit of
-   * successive stalled iterations is
-   * chattering in friction: Newton cycles between the two slip directions
+   * slipping node whose slip reverses (the tangential traction turning by
+   * more than 90 degrees) in more than the limit of successive stalled
+   * iterations is chattering in friction: Newton cycles between the two
+   * slip directions
    * across the stick region between them (the 2D ironing with mortar, an
    * edge node of the contact zone with a small pressure). The remedy holds
    * it in stick; the result is accepted only if its traction is within the
@@ -80,8 +80,9 @@ namespace tribos
     release_in_tension(const std::vector<ContactPair<dim>> &pairs);
 
   private:
-    /** Node @p k of pair @p p is held, owned here, and tensile or without
-     * a master point. */
+    /** Node @p k of pair @p p is owned here and either held closed and
+     * tensile or without a master point, or held in stick and open or
+     * beyond the Coulomb cone. */
     bool
     held_in_tension(const std::vector<ContactPair<dim>> &pairs,
                     const unsigned int                   p,
