@@ -192,13 +192,8 @@ namespace tribos
           overlaps[n_overlaps++] = o;
         }
         // Dual where the master covers the segment, standard where it covers
-        // half of it or less, blended in between (theta): the switch at the
-        // master's end is continuous, so a segment whose end lines up with
-        // the master's (a symmetry plane) is not flipped between the two
-        // bases by round-off, and the weights stay positive.
-        const AD   theta     = !input.dual || covered.val() <= 0.5 ? zero :
-                               covered.val() >= 1.                 ? AD(1.) :
-                                                     2. * covered - 1.;
+        // half of it or less, blended in between.
+        const AD   theta     = internal::dual_weight(input.dual, covered);
         const bool dual_here = theta.val() > 0;
         // The dual functions of the segment, Phi = A N with A = D_e M_e^-1
         // (M_e the segment's mass matrix, D_e its row sums) in the measure

@@ -462,12 +462,9 @@ namespace tribos
 
       // The row of node j in Phi = A N (A = D_e M_e^-1, blended with the
       // identity by theta as in 2D).
-      const AD fraction = covered / plane.area;
-      const AD theta    = !input.dual || fraction.val() <= 0.5 ? zero :
-                          fraction.val() >= 1.                 ? AD(1.) :
-                                                 2. * fraction - 1.;
-      AD       a[4]     = {zero, zero, zero, zero};
-      a[j_local]        = 1.;
+      const AD theta = internal::dual_weight(input.dual, covered / plane.area);
+      AD       a[4]  = {zero, zero, zero, zero};
+      a[j_local]     = 1.;
       if (theta.val() > 0)
       {
         AD           mass[4][4];

@@ -258,9 +258,7 @@ namespace tribos
         // The dual functions of the segment as on Q1 (blended towards the
         // standard ones where the master covers it in part): Phi_j = sum_k
         // c_k N_k.
-        const AD theta = !input.dual || covered.val() <= 0.5 ? zero :
-                         covered.val() >= 1.                 ? AD(1.) :
-                                                               2. * covered - 1.;
+        const AD theta = dual_weight(input.dual, covered);
         AD       c[3]  = {zero, zero, zero};
         c[j_local]     = 1.;
         if (theta.val() > 0)

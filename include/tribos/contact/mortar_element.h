@@ -143,6 +143,25 @@ namespace tribos
   namespace internal
   {
     /**
+     * The weight theta of the dual functions in a slave segment's (or
+     * face's) basis, blended with the standard ones: 1 where the master
+     * covers the @p covered fraction 1 of it, 0 at half or less (or if
+     * not @p dual), 2 covered - 1 in between. The switch at the master's
+     * end is continuous, so a segment whose end lines up with the master's
+     * (a symmetry plane) is not flipped between the two bases by round-off,
+     * and the weights stay positive.
+     */
+    inline ContactAD
+    dual_weight(const bool dual, const ContactAD &covered)
+    {
+      if (!dual || covered.val() <= 0.5)
+        return ContactAD(0.);
+      if (covered.val() >= 1.)
+        return ContactAD(1.);
+      return 2. * covered - 1.;
+    }
+
+    /**
      * The integrals of Mortar2D::evaluate() on quadratic segments (Q2,
      * input.n_segment_nodes = 3): the node's weights @p D on the slave
      * nodes and @p M on the master nodes and its unnormalized normal
