@@ -98,26 +98,26 @@ namespace tribos
 
   template <int dim>
   unsigned int
-  ChatteringMonitor<dim>::n_frozen_in_tension(
+  ChatteringMonitor<dim>::n_frozen_inadmissible(
     const std::vector<ContactPair<dim>> &pairs) const
   {
     unsigned int n = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int k = 0; k < pairs[p].n_nodes(); ++k)
-        if (held_in_tension(pairs, p, k))
+        if (held_inadmissible(pairs, p, k))
           ++n;
     return Utilities::MPI::sum(n, mpi_communicator);
   }
 
   template <int dim>
   unsigned int
-  ChatteringMonitor<dim>::release_in_tension(
+  ChatteringMonitor<dim>::release_inadmissible(
     const std::vector<ContactPair<dim>> &pairs)
   {
     unsigned int n = 0;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       for (unsigned int k = 0; k < pairs[p].n_nodes(); ++k)
-        if (held_in_tension(pairs, p, k))
+        if (held_inadmissible(pairs, p, k))
         {
           held[p][k]       = false;
           changes[p][k]    = 0;

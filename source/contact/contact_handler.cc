@@ -506,18 +506,18 @@ namespace tribos
 
   template <int dim>
   unsigned int
-  ContactHandler<dim>::n_frozen_in_tension() const
+  ContactHandler<dim>::n_frozen_inadmissible() const
   {
-    return monitor.n_frozen_in_tension(contact_pairs);
+    return monitor.n_frozen_inadmissible(contact_pairs);
   }
 
 
 
   template <int dim>
   unsigned int
-  ContactHandler<dim>::release_frozen_in_tension()
+  ContactHandler<dim>::release_frozen_inadmissible()
   {
-    return monitor.release_in_tension(contact_pairs);
+    return monitor.release_inadmissible(contact_pairs);
   }
 
 

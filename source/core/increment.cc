@@ -154,25 +154,25 @@ namespace tribos
     const auto &p = parameters.nonlinear_solver;
     if (n_frozen > 0)
     {
-      const unsigned int n_tension = contact->n_frozen_in_tension();
-      // Once per increment the nodes in tension are let go and Newton goes
-      // on from this iterate: the freeze only had to get Newton out of its
-      // cycle (load-controlled 3D Hertz: a converged iterate with 4 held
-      // nodes in tension; cutting back cost 20.5 s and 43 iterations,
-      // releasing them 12.1 s and 25). A second time the increment is
-      // cut.
-      if (n_tension > 0 && !released)
+      const unsigned int n_inadmissible = contact->n_frozen_inadmissible();
+      // Once per increment the held nodes in tension (held in stick: beyond
+      // the Coulomb cone) are let go and Newton goes on from this iterate: the
+      // freeze only had to get Newton out of its cycle (load-controlled 3D
+      // Hertz: a converged iterate with 4 held nodes in tension; cutting back
+      // cost 20.5 s and 43 iterations, releasing them 12.1 s and 25). A second
+      // time the increment is cut.
+      if (n_inadmissible > 0 && !released)
       {
         released = true;
-        n_frozen -= contact->release_frozen_in_tension();
-        message("  chattering: " + std::to_string(n_tension) +
+        n_frozen -= contact->release_frozen_inadmissible();
+        message("  chattering: " + std::to_string(n_inadmissible) +
                 " held node(s) ended in tension, off the master or (held in "
                 "stick) beyond the Coulomb cone: released, Newton goes on");
         return Verdict::iterate;
       }
-      if (n_tension > 0)
+      if (n_inadmissible > 0)
         throw NonConvergence(
-          std::to_string(n_tension) +
+          std::to_string(n_inadmissible) +
           " chattering node(s) held ended in tension, off the master or "
           "beyond the Coulomb cone (Contact/Chattering remedy = freeze): "
           "cutting the increment");

@@ -72,21 +72,21 @@ namespace tribos
      * point, and nodes held in stick whose traction is beyond the Coulomb
      * cone (all processes). */
     unsigned int
-    n_frozen_in_tension(const std::vector<ContactPair<dim>> &pairs) const;
+    n_frozen_inadmissible(const std::vector<ContactPair<dim>> &pairs) const;
 
-    /** Let the held nodes in tension (see n_frozen_in_tension()) go, with
-     * their change counts reset; returns how many (all processes). */
+    /** Let the nodes of n_frozen_inadmissible() go, with their counts
+     * reset; returns how many (all processes). */
     unsigned int
-    release_in_tension(const std::vector<ContactPair<dim>> &pairs);
+    release_inadmissible(const std::vector<ContactPair<dim>> &pairs);
 
   private:
     /** Node @p k of pair @p p is owned here and either held closed and
      * tensile or without a master point, or held in stick and open or
      * beyond the Coulomb cone. */
     bool
-    held_in_tension(const std::vector<ContactPair<dim>> &pairs,
-                    const unsigned int                   p,
-                    const unsigned int                   k) const
+    held_inadmissible(const std::vector<ContactPair<dim>> &pairs,
+                      const unsigned int                   p,
+                      const unsigned int                   k) const
     {
       const auto &state = pairs[p].current[k];
       if (!pairs[p].owned[k])

@@ -159,13 +159,14 @@ namespace tribos
     unsigned int
     freeze_chattering(const unsigned int limit);
 
-    /** Held nodes whose pressure is tensile (all processes). */
+    /** Held nodes whose state the remedy may not keep: tensile or off the
+     * master, held in stick beyond the Coulomb cone (all processes). */
     unsigned int
-    n_frozen_in_tension() const;
+    n_frozen_inadmissible() const;
 
-    /** Release the held nodes in tension; returns how many. */
+    /** Release those nodes; returns how many. */
     unsigned int
-    release_frozen_in_tension();
+    release_frozen_inadmissible();
 
     /** The last evaluated state becomes the converged history. */
     void
