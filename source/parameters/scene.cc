@@ -2,6 +2,8 @@
 #include <tribos/parameters/scene.h>
 #include <tribos/scene/scene.h>
 
+#include <deal.II/base/utilities.h>
+
 namespace tribos
 {
   namespace Parameters
@@ -124,6 +126,18 @@ namespace tribos
                         "lowest in the middle (the ironing punch); the "
                         "block keeps its height at the corners and the gap "
                         "is measured at the lowest point.");
+      prm.declare_entry("Refinement box",
+                        "",
+                        Patterns::Anything(),
+                        "Empty: none. Otherwise 'x0, y0(, z0) : x1, y1(, z1)', "
+                        "the lower and upper corner of a box: the cells of "
+                        "both blocks whose centre lies inside are refined "
+                        "<Box refinements> times (hanging nodes where the "
+                        "box ends).");
+      prm.declare_entry("Box refinements",
+                        "1",
+                        Patterns::Integer(0, 6),
+                        "Refinements of the cells in <Refinement box>.");
       prm.leave_subsection();
     }
 
@@ -146,6 +160,29 @@ namespace tribos
                     "Parameter <Scene/Two blocks/Upper bottom radius> = " +
                     std::to_string(upper_bottom_radius) +
                     " must be 0 or larger than half the upper block width."));
+      box_refinements = prm.get_integer("Box refinements");
+      const auto corners =
+        dealii::Utilities::split_string_list(prm.get("Refinement box"), ':');
+      AssertThrow(corners.empty() || corners.size() == 2,
+                  dealii::ExcMessage(
+                    "Parameter <Scene/Two blocks/Refinement box> = <" +
+                    prm.get("Refinement box") +
+                    ">: expected 'lower corner : upper corner', e.g. "
+                    "'0, 0, 0 : 0.5, 1, 1'."));
+      box_lower.clear();
+      box_upper.clear();
+      if (corners.size() == 2)
+      {
+        box_lower =
+          Text::parse_doubles(corners[0], "Scene/Two blocks/Refinement box");
+        box_upper =
+          Text::parse_doubles(corners[1], "Scene/Two blocks/Refinement box");
+        AssertThrow(box_lower.size() == box_upper.size(),
+                    dealii::ExcMessage(
+                      "Parameter <Scene/Two blocks/Refinement box> = <" +
+                      prm.get("Refinement box") +
+                      ">: both corners need the same number of coordinates."));
+      }
       prm.leave_subsection();
     }
 

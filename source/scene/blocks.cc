@@ -82,6 +82,27 @@ namespace tribos
           upper);
       }
       merge_bodies<dim>({&lower, &upper}, tria);
+
+      if (!s.box_lower.empty())
+      {
+        const auto lower_corner =
+          to_point<dim>(s.box_lower, "Scene/Two blocks/Refinement box");
+        const auto upper_corner =
+          to_point<dim>(s.box_upper, "Scene/Two blocks/Refinement box");
+        for (unsigned int cycle = 0; cycle < s.box_refinements; ++cycle)
+        {
+          for (const auto &cell : tria.active_cell_iterators())
+          {
+            bool inside = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              inside = inside && cell->center()[d] >= lower_corner[d] &&
+                       cell->center()[d] <= upper_corner[d];
+            if (inside)
+              cell->set_refine_flag();
+          }
+          tria.execute_coarsening_and_refinement();
+        }
+      }
     }
 
 
@@ -93,9 +114,8 @@ namespace tribos
      */
   } // namespace
 
-  const SceneRegistration block_scene("block",
-                                      &create_block<2>,
-                                      &create_block<3>);
+  const SceneRegistration
+    block_scene("block", &create_block<2>, &create_block<3>);
   const SceneRegistration two_blocks_scene("two blocks",
                                            &create_two_blocks<2>,
                                            &create_two_blocks<3>);

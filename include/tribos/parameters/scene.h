@@ -37,6 +37,10 @@ namespace tribos
       double                    upper_offset;
       /** Radius of the upper block's arc-shaped bottom; 0: flat. */
       double upper_bottom_radius;
+      /** Lower and upper corner of the box whose cells are refined
+       * box_refinements times after the merge (empty: none). */
+      std::vector<double> box_lower, box_upper;
+      unsigned int        box_refinements;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
