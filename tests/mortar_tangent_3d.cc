@@ -35,7 +35,8 @@ main()
 
   bool         ok          = true;
   double       worst_error = 0, worst_balance = 0;
-  unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0}, n_partial = 0;
+  unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0}, n_partial = 0,
+               n_carrying = 0;
   for (unsigned int sample = 0; sample < 80; ++sample)
   {
     const bool            with_multipliers = sample % 2 == 1;
@@ -64,6 +65,22 @@ main()
       for (unsigned int j = 0; j < 2; ++j)
         input.slave_face[2 * i + j] = {
           {local[i][j], local[i][j + 1], local[i + 1][j], local[i + 1][j + 1]}};
+    // Node j's multiplier function; in some samples plus half of a
+    // neighbour's, as when j carries a hanging node (Phi_j + 0.5 Phi_h).
+    const bool         carries = sample % 7 == 3;
+    const unsigned int hanging = local[1][2];
+    n_carrying += carries;
+    for (unsigned int f = 0; f < input.n_slave_faces; ++f)
+    {
+      input.n_carriers[f] = 0;
+      for (unsigned int v = 0; v < 4; ++v)
+      {
+        if (input.slave_face[f][v] == 0)
+          input.carriers[f][input.n_carriers[f]++] = {v, 1.};
+        if (carries && input.slave_face[f][v] == hanging)
+          input.carriers[f][input.n_carriers[f]++] = {v, 0.5};
+      }
+    }
 
     // Master: n x n faces below, lexicographic (normal up), finer or
     // coarser than the slave, sometimes shorter than the slave patch.
@@ -229,16 +246,19 @@ main()
                 << " (status " << static_cast<int>(result.status)
                 << (with_multipliers ? ", multipliers" : ", penalty")
                 << (input.dual ? ", dual" : ", standard")
-                << (short_master ? ", partial" : "") << ")\n";
+                << (short_master ? ", partial" : "")
+                << (carries ? ", carrying" : "") << ")\n";
     }
   }
   std::cout << "checked " << n_checked << " 3D mortar elements (open "
             << n_status[0] << ", stick " << n_status[1] << ", slip "
             << n_status[2] << ", frictionless " << n_status[3]
             << "; partially covered " << n_partial
+            << ", carrying a hanging node " << n_carrying
             << "); worst relative tangent error " << worst_error
             << ", worst force balance " << worst_balance << "\n";
-  if (n_checked < 40 || n_status[1] < 8 || n_status[2] < 8 || n_status[3] < 3)
+  if (n_checked < 40 || n_status[1] < 8 || n_status[2] < 8 || n_status[3] < 3 ||
+      n_carrying < 5)
   {
     std::cout << "FAILED: too few elements of some kind were checked\n";
     ok = false;

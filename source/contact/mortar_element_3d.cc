@@ -375,10 +375,7 @@ namespace tribos
     static thread_local std::vector<Overlap> overlaps;
     for (unsigned int f = 0; f < input.n_slave_faces; ++f)
     {
-      const auto  &q       = input.slave_face[f];
-      unsigned int j_local = 0;
-      while (q[j_local] != 0)
-        ++j_local;
+      const auto &q = input.slave_face[f];
 
       Vec3<AD>     X[4];
       Vec3<double> X_value[4];
@@ -460,11 +457,11 @@ namespace tribos
       if (overlaps.empty())
         continue;
 
-      // The row of node j in Phi = A N (A = D_e M_e^-1, blended with the
-      // identity by theta as in 2D).
+      // The rows of the carried nodes in Phi = A N (A = D_e M_e^-1, blended
+      // with the identity by theta as in 2D), summed with their weights:
+      // node j's row, and those of the hanging nodes it carries.
       const AD theta = internal::dual_weight(input.dual, covered / plane.area);
       AD       a[4]  = {zero, zero, zero, zero};
-      a[j_local]     = 1.;
       if (theta.val() > 0)
       {
         AD           mass[4][4];
@@ -488,29 +485,45 @@ namespace tribos
               for (unsigned int k = 0; k < 4; ++k)
                 mass[i][k] += (N[i] * N[k]) * det;
           }
-        AD d_j = zero;
-        for (unsigned int k = 0; k < 4; ++k)
-          d_j += mass[j_local][k];
-        // y = M_e^-1 e_j (M_e symmetric positive definite: no pivoting).
-        AD y[4]    = {zero, zero, zero, zero};
-        y[j_local] = 1.;
+        AD row_sum[4];
+        for (unsigned int i = 0; i < 4; ++i)
+        {
+          row_sum[i] = zero;
+          for (unsigned int k = 0; k < 4; ++k)
+            row_sum[i] += mass[i][k];
+        }
+        // M_e = L U (symmetric positive definite: no pivoting).
+        AD lower[4][4];
         for (unsigned int p = 0; p < 4; ++p)
           for (unsigned int i = p + 1; i < 4; ++i)
           {
-            const AD factor = mass[i][p] / mass[p][p];
+            lower[i][p] = mass[i][p] / mass[p][p];
             for (unsigned int k = p; k < 4; ++k)
-              mass[i][k] -= factor * mass[p][k];
-            y[i] -= factor * y[p];
+              mass[i][k] -= lower[i][p] * mass[p][k];
           }
-        for (unsigned int p = 4; p-- > 0;)
+        for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
         {
-          for (unsigned int k = p + 1; k < 4; ++k)
-            y[p] -= mass[p][k] * y[k];
-          y[p] /= mass[p][p];
+          const auto [j_local, weight] = input.carriers[f][c];
+          // y = M_e^-1 e_j.
+          AD y[4]    = {zero, zero, zero, zero};
+          y[j_local] = 1.;
+          for (unsigned int p = 0; p < 4; ++p)
+            for (unsigned int i = p + 1; i < 4; ++i)
+              y[i] -= lower[i][p] * y[p];
+          for (unsigned int p = 4; p-- > 0;)
+          {
+            for (unsigned int k = p + 1; k < 4; ++k)
+              y[p] -= mass[p][k] * y[k];
+            y[p] /= mass[p][p];
+          }
+          for (unsigned int k = 0; k < 4; ++k)
+            a[k] += weight * (theta * row_sum[j_local] * y[k] +
+                              (k == j_local ? 1. - theta : zero));
         }
-        for (unsigned int k = 0; k < 4; ++k)
-          a[k] = theta * d_j * y[k] + (k == j_local ? 1. - theta : zero);
       }
+      else
+        for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
+          a[input.carriers[f][c].first] += input.carriers[f][c].second;
 
       AD face_weight = zero;
       for (const Overlap &o : overlaps)
@@ -576,24 +589,48 @@ namespace tribos
                     "the slave: make the finer side the slave)";
       return false;
     };
-    pair.slave_stencil(k, stencil);
+    // The faces of node k and of the hanging nodes it carries, each with
+    // the nodes whose functions the element integrates on it.
+    pair.mortar_stencil(k, stencil);
+    std::vector<unsigned int> faces = pair.slave->nodes()[k].faces;
+    for (const auto &[h, weight] : pair.carried[k])
+      for (const unsigned int f : pair.slave->nodes()[h].faces)
+        if (std::find(faces.begin(), faces.end(), f) == faces.end())
+          faces.push_back(f);
     if (stencil.size() > MortarInput3D::max_slave_nodes ||
-        pair.slave->nodes()[k].faces.size() > MortarInput3D::max_slave_faces)
+        faces.size() > MortarInput3D::max_slave_faces)
       return refuse("has more than " +
                     std::to_string(MortarInput3D::max_slave_faces) +
                     " slave faces");
-    for (const unsigned int f : pair.slave->nodes()[k].faces)
+    for (const unsigned int f : faces)
     {
-      mortar.slave_face_id[mortar.n_slave_faces] = f;
-      auto &face = mortar.slave_face[mortar.n_slave_faces++];
+      const unsigned int i    = mortar.n_slave_faces++;
+      mortar.slave_face_id[i] = f;
+      mortar.n_carriers[i]    = 0;
       for (unsigned int v = 0; v < 4; ++v)
-        face[v] = local(stencil, pair.slave->faces()[f].nodes[v]);
+      {
+        const unsigned int node = pair.slave->faces()[f].nodes[v];
+        mortar.slave_face[i][v] = local(stencil, node);
+        if (node == k)
+          mortar.carriers[i][mortar.n_carriers[i]++] = {v, 1.};
+        for (const auto &[h, weight] : pair.carried[k])
+          if (node == h)
+            mortar.carriers[i][mortar.n_carriers[i]++] = {v, weight};
+      }
     }
-    if (pair.mortar_faces[k].size() > max_mortar_master_nodes_3d)
+
+    // The master faces of node k and of its hanging nodes.
+    std::vector<unsigned int> master_faces = pair.mortar_faces[k];
+    for (const auto &[h, weight] : pair.carried[k])
+      for (const unsigned int f : pair.mortar_faces[h])
+        if (std::find(master_faces.begin(), master_faces.end(), f) ==
+            master_faces.end())
+          master_faces.push_back(f);
+    if (master_faces.size() > max_mortar_master_nodes_3d)
       return refuse("overlaps more than " +
                     std::to_string(max_mortar_master_nodes_3d) +
                     " master faces");
-    for (const unsigned int f : pair.mortar_faces[k])
+    for (const unsigned int f : master_faces)
     {
       std::array<unsigned int, 4> face;
       for (unsigned int v = 0; v < 4; ++v)
@@ -605,6 +642,15 @@ namespace tribos
       mortar.master_face_id[mortar.n_master_faces] = f;
       mortar.master_face[mortar.n_master_faces++]  = face;
     }
+    // The AD number holds the coordinates of every node and the unknowns.
+    const unsigned int n_derivatives =
+      3 * (stencil.size() + master_nodes.size()) +
+      pair.enforcement->n_node_unknowns();
+    if (n_derivatives > max_contact_derivatives)
+      return refuse("couples " + std::to_string(n_derivatives) +
+                    " unknowns, more than the " +
+                    std::to_string(max_contact_derivatives) +
+                    " its derivatives hold");
 
     internal::mortar_positions(pair, k, stencil, master_nodes, mortar, dofs);
     return true;

@@ -89,12 +89,34 @@ namespace tribos
       if (pair.mortar)
       {
         pair_mortar(pair, k);
-        for (const unsigned int face : pair.mortar_faces[k])
-          if (pair.couplings.count({k, face}) == 0)
+        // The faces of the hanging nodes whose functions this node carries
+        // are its element's too. A hanging node has no element of its own
+        // (it stays unpaired); its owner may be another process.
+        for (const auto &[h, weight] : pair.carried[k])
+        {
+          pair_mortar(pair, h);
+          pair.current[h].paired = false;
+          pair.current[h].face   = -1;
+          auto &state            = pair.current[k];
+          if (!state.paired && !pair.mortar_faces[h].empty())
           {
-            new_coupling = true;
-            pair.insert_couplings(k, face, pair.couplings);
+            state.paired   = true;
+            state.face     = pair.mortar_faces[h][0];
+            state.distance = pair.current[h].distance;
           }
+        }
+        const auto couple = [&](const std::vector<unsigned int> &faces)
+        {
+          for (const unsigned int face : faces)
+            if (pair.couplings.count({k, face}) == 0)
+            {
+              new_coupling = true;
+              pair.insert_couplings(k, face, pair.couplings);
+            }
+        };
+        couple(pair.mortar_faces[k]);
+        for (const auto &[h, weight] : pair.carried[k])
+          couple(pair.mortar_faces[h]);
         continue;
       }
       if (pair.smoothed)

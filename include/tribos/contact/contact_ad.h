@@ -19,6 +19,10 @@ namespace tribos
    */
   using ContactAD = Sacado::Fad::SLFad<double, 150>;
 
+  /** The capacity of ContactAD: an element with more unknowns is refused
+   * (a 3D mortar element whose node carries hanging nodes can reach it). */
+  constexpr unsigned int max_contact_derivatives = 150;
+
   /** The most master nodes a 2D mortar element couples to one slave node
    * (Q2: a master up to about 3 times finer than the slave). */
   constexpr unsigned int max_mortar_master_nodes = 24;

@@ -218,8 +218,11 @@ namespace tribos
     }
 
   private:
-    const Parameters::Contact    &parameters;
-    MPI_Comm                      mpi_communicator;
+    const Parameters::Contact &parameters;
+    MPI_Comm                   mpi_communicator;
+    /** The mesh is distributed (each process holds its own cells) over
+     * more than one process. */
+    bool                          distributed = false;
     std::vector<ContactPair<dim>> contact_pairs;
     Pairing<dim>                  pairing;
     ChatteringMonitor<dim>        monitor;

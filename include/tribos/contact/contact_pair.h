@@ -66,6 +66,19 @@ namespace tribos
      * the areas of excluded nodes handed to the nodes that carry them. */
     std::vector<bool>   owned, excluded;
     std::vector<double> area;
+    /**
+     * Mortar with unknowns: per slave node, the hanging slave nodes whose
+     * multiplier functions it carries, with its weight in their
+     * constraints. A hanging node (3D, the middle of a coarse face's edge
+     * on a refinement border) carries no multiplier of its own; the dual
+     * basis is modified instead, Phi_p + c Phi_h for each parent p with
+     * weight c (Wohlmuth's treatment of removed nodes, as at
+     * crosspoints): the functions still sum to one, so uniform tractions
+     * are still transmitted exactly.
+     */
+    std::vector<std::vector<std::pair<unsigned int, double>>> carried;
+    /** The number of hanging nodes on the slave surface. */
+    unsigned int n_hanging_slaves = 0;
 
     /** Per slave node: the state at the last evaluation and at the last
      * converged increment. */
@@ -97,6 +110,14 @@ namespace tribos
      */
     void
     slave_stencil(const unsigned int k, std::vector<unsigned int> &nodes) const;
+
+    /**
+     * Mortar: the slave nodes of slave node @p k's element, slave_stencil()
+     * and those of the hanging nodes it carries (ContactPair::carried).
+     */
+    void
+    mortar_stencil(const unsigned int         k,
+                   std::vector<unsigned int> &nodes) const;
 
     /**
      * The dofs of the element of slave node @p k against master @p face
@@ -132,7 +153,9 @@ namespace tribos
    * depend on other rows carries none of its own (it is excluded, with a
    * Lambda = 0 row): a hanging node on a refinement border (its position
    * follows its parents), whose tributary area goes to its parents with
-   * the constraint's weights, and a node that an earlier pair already
+   * the constraint's weights (with mortar, its multiplier function goes
+   * to its parents too: ContactPair::carried), and a node that an earlier
+   * pair already
    * constrains against the same master (an edge shared by two slave
    * surfaces), whose area goes to that pair's node.
    */

@@ -51,13 +51,23 @@ namespace tribos
   struct MortarInput3D
   {
     /** Faces around a node: 4 on a structured surface, 3 to 6 where the
-     * mesh is irregular (a sphere's). */
-    static constexpr unsigned int max_slave_faces = 6;
+     * mesh is irregular (a sphere's), and one more per hanging node the
+     * node carries (ContactPair::carried, at most 4). */
+    static constexpr unsigned int max_slave_faces = 10;
     static constexpr unsigned int max_slave_nodes = 1 + 2 * max_slave_faces;
     unsigned int                  n_slave_nodes   = 0;
     Vec3<double>                  xs[max_slave_nodes], xs_old[max_slave_nodes];
     unsigned int                  n_slave_faces = 0;
     std::array<unsigned int, 4>   slave_face[max_slave_faces];
+    /**
+     * Per slave face, the nodes whose multiplier functions the element
+     * integrates on it (their positions 0-3 in the face) with their
+     * weights: node j (local number 0) with 1, and the hanging nodes it
+     * carries with its weight in their constraints. The element's function
+     * is Phi_j + sum_h c_h Phi_h.
+     */
+    unsigned int                                   n_carriers[max_slave_faces];
+    std::array<std::pair<unsigned int, double>, 4> carriers[max_slave_faces];
 
     unsigned int n_master_nodes = 0;
     Vec3<double> xm[max_mortar_master_nodes_3d],
