@@ -27,14 +27,13 @@ mortar, Mortar3D: auxiliary planes, polygon clipping, dual basis).
    their functions go to their parents (ContactPair::carried). Multipliers
    (dual and standard basis): every other node's pressure equal to 1e-10,
    resultant p A to 1e-8, at most 4 Newton iterations, and the same with
-   `mpirun -np 2` and 3 on the shared mesh (the distributed mesh does not
-   reproduce the serial run with hanging slave nodes yet, for node to
-   segment either; tribos warns). Penalty: the resultant to 1e-8 and the pressure
+   `mpirun -np 2` and 3 on the distributed mesh (and -np 2 on the shared
+   one). Penalty: the resultant to 1e-8 and the pressure
    within 1e-3 (the penalty E/h doubles on the refined side, so the
    penetration, not the pressure, jumps there). The frictional sliding of
    3. with its slave's first column of cells refined, multipliers: no
-   cutbacks, F_T / F_N = mu to 1e-6, and `-np 2` (shared mesh) gives the
-   serial history to 1e-8.
+   cutbacks, F_T / F_N = mu to 1e-6, and `-np 2` (distributed mesh) gives
+   the serial history to 1e-8.
 """
 
 import sys
@@ -153,25 +152,27 @@ for method in ("penalty", "lagrange multiplier"):
 # 4. Hanging slave nodes.
 for pair, box in (("14 : 5", "0, 0, 0.5 : 0.45, 1, 1"),
                   ("5 : 14", "0, 0, 0 : 0.45, 1, 0.5")):
-    for method, basis, ranks in [("lagrange multiplier", "dual", 0),
-                                 ("lagrange multiplier", "standard", 0),
-                                 ("penalty", "dual", 0),
-                                 ("augmented lagrangian", "dual", 0),
-                                 ("lagrange multiplier", "dual", 2),
-                                 ("lagrange multiplier", "dual", 3)]:
+    for method, basis, ranks, mesh in [
+            ("lagrange multiplier", "dual", 0, "distributed"),
+            ("lagrange multiplier", "standard", 0, "distributed"),
+            ("penalty", "dual", 0, "distributed"),
+            ("augmented lagrangian", "dual", 0, "distributed"),
+            ("lagrange multiplier", "dual", 2, "distributed"),
+            ("lagrange multiplier", "dual", 3, "distributed"),
+            ("lagrange multiplier", "dual", 2, "shared")]:
         if ranks and not mpi_available():
             continue
-        name = "hanging3d_%s_%s_%s_np%d" % (
+        name = "hanging3d_%s_%s_%s_np%d_%s" % (
             "upper" if pair.startswith("14") else "lower",
-            method.replace(" ", "_"), basis, max(ranks, 1))
+            method.replace(" ", "_"), basis, max(ranks, 1), mesh)
         folder = out + "/" + name
         run(tribos, prm, folder, [
             "Scene/Two blocks/Refinement box=" + box,
             "Scene/Two blocks/Lower subdivisions=5, 5, 2",
             "Scene/Two blocks/Upper subdivisions=3, 3, 2",
             "Contact/Pairs=" + pair, "Contact/Method=" + method,
-            "Contact/Mortar basis=" + basis] +
-            (["Parallel/Mesh=shared"] if ranks else []), mpi_ranks=ranks)
+            "Contact/Mortar basis=" + basis, "Parallel/Mesh=" + mesh],
+            mpi_ranks=ranks)
         rows = read_csv(folder + "/contact-00001.csv")
         # The hanging nodes report no traction of their own.
         closed = [r["CPRESS"] for r in rows if r["CSTATUS"] != 0]
@@ -204,8 +205,7 @@ if mpi_available():
     noisy = ("wall_time", "residual", "newton_iterations",
              "newton_iterations_all", "chattering_nodes")
     parallel = out + "/hanging_sliding3d_np2"
-    run(tribos, sliding, parallel, sets + ["Parallel/Mesh=shared"],
-        mpi_ranks=2)
+    run(tribos, sliding, parallel, sets, mpi_ranks=2)
     strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
     strip_columns(parallel + "/history.csv", parallel + "/h.csv", drop=noisy)
     numdiff(parallel + "/h.csv", serial + "/h.csv", relative=1e-8,

@@ -5,7 +5,6 @@
 #include <tribos/contact/mortar_element_3d.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
@@ -36,10 +35,6 @@ namespace tribos
                                        axisymmetric,
                                        n_enforcement_unknowns,
                                        all_contact_dofs);
-    distributed =
-      Utilities::MPI::n_mpi_processes(mpi_communicator) > 1 &&
-      dynamic_cast<const parallel::fullydistributed::Triangulation<dim> *>(
-        &dof_handler.get_triangulation()) != nullptr;
   }
 
 
@@ -651,22 +646,7 @@ namespace tribos
   std::vector<std::string>
   ContactHandler<dim>::setup_warnings() const
   {
-    auto warnings = penalty_warnings(contact_pairs);
-    // Found with the 3D patch test refined on part of the slave: the
-    // serial run and the shared mesh agree, the distributed mesh on two
-    // processes gave nodal pressures 1e-4 (node to segment) to 2e-2
-    // (mortar) off. Not yet understood; until it is, say so.
-    if (distributed)
-      for (const auto &pair : contact_pairs)
-        if (pair.n_hanging_slaves > 0)
-          warnings.push_back(
-            "contact pair <" + pair.description.text +
-            ">: " + std::to_string(pair.n_hanging_slaves) +
-            " hanging slave nodes (a refinement border on the slave surface) "
-            "with Parallel/Mesh = distributed on several processes: such "
-            "runs have given nodal pressures up to 2e-2 off the serial run's; "
-            "Parallel/Mesh = shared reproduces the serial run");
-    return warnings;
+    return penalty_warnings(contact_pairs);
   }
 
 

@@ -332,8 +332,6 @@ namespace tribos
       pair.area.resize(n_slaves);
       pair.excluded.assign(n_slaves, false);
       pair.carried.assign(n_slaves, {});
-      for (unsigned int k = 0; k < n_slaves; ++k)
-        pair.n_hanging_slaves += hanging.is_constrained(nodes[k].dofs[0]);
       pair.current.resize(n_slaves);
       for (unsigned int k = 0; k < n_slaves; ++k)
       {

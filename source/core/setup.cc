@@ -526,6 +526,26 @@ namespace tribos
                                                       ids,
                                                       symmetry);
       symmetry.close();
+      // Merging substitutes the symmetry lines into the hanging-node lines
+      // that refer to them. On a distributed mesh the outer faces of the
+      // ghost layer are boundary faces with id 0 of the local mesh, so a
+      // dof there that this process does not own may have a symmetry line
+      // it should not have; substituted, it would take a parent's weight
+      // out of the line of a hanging node this process owns. Only the own
+      // lines are merged: the others come from their owners below, and
+      // close() resolves the chains.
+      if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
+      {
+        AffineConstraints<double> own(system_relevant);
+        for (const auto &line : symmetry.get_lines())
+          if (locally_owned_dofs.is_element(line.index))
+          {
+            own.add_line(line.index);
+            own.add_entries(line.index, line.entries);
+            own.set_inhomogeneity(line.index, line.inhomogeneity);
+          }
+        symmetry.copy_from(own);
+      }
       constraints.merge(
         symmetry,
         AffineConstraints<double>::MergeConflictBehavior::left_object_wins);

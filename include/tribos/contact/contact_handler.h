@@ -218,11 +218,8 @@ namespace tribos
     }
 
   private:
-    const Parameters::Contact &parameters;
-    MPI_Comm                   mpi_communicator;
-    /** The mesh is distributed (each process holds its own cells) over
-     * more than one process. */
-    bool                          distributed = false;
+    const Parameters::Contact    &parameters;
+    MPI_Comm                      mpi_communicator;
     std::vector<ContactPair<dim>> contact_pairs;
     Pairing<dim>                  pairing;
     ChatteringMonitor<dim>        monitor;

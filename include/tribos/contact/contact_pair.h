@@ -77,8 +77,6 @@ namespace tribos
      * are still transmitted exactly.
      */
     std::vector<std::vector<std::pair<unsigned int, double>>> carried;
-    /** The number of hanging nodes on the slave surface. */
-    unsigned int n_hanging_slaves = 0;
 
     /** Per slave node: the state at the last evaluation and at the last
      * converged increment. */
