@@ -1,9 +1,12 @@
 /**
  * Unit test: the tangent A = dP/dF of every material against central finite
  * differences of P, in 2D and 3D, near the identity and at large strain.
- * Asserts a relative error below 1e-6.
+ * Asserts a relative error below 1e-6. Also: an inverted or not-a-number
+ * F is refused with a message that says which (it printed "det F = -nan
+ * <= 0" for the latter).
  */
 
+#include <tribos/base/exceptions.h>
 #include <tribos/material/material.h>
 
 #include <cmath>
@@ -187,6 +190,52 @@ check_converged_state_is_elastic(std::mt19937 &random)
 
 
 
+/** The message of @p material refusing @p F, or "" if it takes F. */
+template <int dim>
+std::string
+refusal(const tribos::Material<dim> &material, const Tensor<2, dim> &F)
+{
+  std::vector<double> old_history(material.n_history_variables(), 0.);
+  std::vector<double> new_history(old_history);
+  Tensor<2, dim>      P;
+  try
+  {
+    material.evaluate(F, old_history.data(), new_history.data(), P, nullptr);
+  }
+  catch (const tribos::InvertedElement &e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+
+
+template <int dim>
+bool
+check_refusals()
+{
+  bool ok = true;
+  for (const auto &material :
+       {tribos::create_material<dim>("neo-Hookean", 210., 0.3), steel<dim>()})
+  {
+    Tensor<2, dim> inverted = unit_symmetric_tensor<dim>();
+    inverted[0][0]          = -0.5;
+    Tensor<2, dim> nan      = unit_symmetric_tensor<dim>();
+    nan[0][1]               = std::nan("");
+    const std::string a     = refusal(*material, inverted);
+    const std::string b     = refusal(*material, nan);
+    const bool good = a.find("det F = -5.000e-01 <= 0") != std::string::npos &&
+                      b.find("det F is not finite") != std::string::npos;
+    std::cout << dim << "D refusals: '" << a << "', '" << b << "'"
+              << (good ? "  ok" : "  FAILED") << std::endl;
+    ok = ok && good;
+  }
+  return ok;
+}
+
+
+
 int
 main()
 {
@@ -201,5 +250,7 @@ main()
   ok = check_plastic<3>(random) && ok;
   ok = check_converged_state_is_elastic<2>(random) && ok;
   ok = check_converged_state_is_elastic<3>(random) && ok;
+  ok = check_refusals<2>() && ok;
+  ok = check_refusals<3>() && ok;
   return ok ? 0 : 1;
 }

@@ -401,9 +401,7 @@ namespace tribos
                               Tensor<4, dim>       *tangent) const
   {
     if (!(determinant(F_in) > 0))
-      throw InvertedElement(
-        "J2 plasticity: det F = " + to_scientific(determinant(F_in)) +
-        " <= 0 at a quadrature point");
+      throw InvertedElement("J2 plasticity", determinant(F_in));
     // P = tau F^-T of the return map, in the number type of F.
     const auto first_piola = [&](const auto &F)
     {

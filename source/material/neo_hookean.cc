@@ -25,8 +25,7 @@ namespace tribos
   {
     const double J = determinant(F);
     if (!(J > 0))
-      throw InvertedElement("neo-Hookean: det F = " + to_scientific(J) +
-                            " <= 0 at a quadrature point");
+      throw InvertedElement("neo-Hookean", J);
 
     const double         log_J  = std::log(J);
     const Tensor<2, dim> F_inv  = invert(F);

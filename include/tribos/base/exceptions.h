@@ -1,6 +1,7 @@
 #ifndef tribos_base_exceptions_h
 #define tribos_base_exceptions_h
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -37,6 +38,18 @@ namespace tribos
   public:
     explicit InvertedElement(const std::string &what)
       : NonConvergence(what)
+    {
+    }
+
+    /** The message of @p material meeting det F = @p J: "det F = -nan <=
+     * 0" said nothing true about a not-a-number. */
+    InvertedElement(const std::string &material, const double J)
+      : NonConvergence(material + ": " +
+                       (std::isfinite(J) ?
+                          "det F = " + to_scientific(J) + " <= 0" :
+                          std::string("det F is not finite (the iterate "
+                                      "diverged)")) +
+                       " at a quadrature point")
     {
     }
   };
