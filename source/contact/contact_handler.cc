@@ -558,6 +558,7 @@ namespace tribos
       pair.old_master_positions = pair.master_positions;
       if (pair.rigid)
         continue;
+      std::vector<unsigned int> faces;
       for (unsigned int k = 0; k < pair.n_nodes(); ++k)
       {
         const int face = pair.current[k].face;
@@ -565,11 +566,9 @@ namespace tribos
         {
           if (pair.mortar)
           {
-            for (const unsigned int f : pair.mortar_faces[k])
+            pair.mortar_master_faces(k, faces);
+            for (const unsigned int f : faces)
               pair.insert_couplings(k, f, used[p]);
-            for (const auto &[h, weight] : pair.carried[k])
-              for (const unsigned int f : pair.mortar_faces[h])
-                pair.insert_couplings(k, f, used[p]);
           }
           else
             pair.insert_couplings(k, face, used[p]);

@@ -146,6 +146,20 @@ namespace tribos
 
   template <int dim>
   void
+  ContactPair<dim>::mortar_master_faces(const unsigned int         k,
+                                        std::vector<unsigned int> &faces) const
+  {
+    faces = mortar_faces[k];
+    for (const auto &[h, weight] : carried[k])
+      for (const unsigned int f : mortar_faces[h])
+        if (std::find(faces.begin(), faces.end(), f) == faces.end())
+          faces.push_back(f);
+  }
+
+
+
+  template <int dim>
+  void
   ContactPair<dim>::element_dofs(
     const unsigned int                    k,
     const int                             face,

@@ -620,12 +620,8 @@ namespace tribos
     }
 
     // The master faces of node k and of its hanging nodes.
-    std::vector<unsigned int> master_faces = pair.mortar_faces[k];
-    for (const auto &[h, weight] : pair.carried[k])
-      for (const unsigned int f : pair.mortar_faces[h])
-        if (std::find(master_faces.begin(), master_faces.end(), f) ==
-            master_faces.end())
-          master_faces.push_back(f);
+    std::vector<unsigned int> master_faces;
+    pair.mortar_master_faces(k, master_faces);
     if (master_faces.size() > max_mortar_master_nodes_3d)
       return refuse("overlaps more than " +
                     std::to_string(max_mortar_master_nodes_3d) +

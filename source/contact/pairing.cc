@@ -81,7 +81,8 @@ namespace tribos
     positions(*pair.master, pair.master_positions);
     pair.search.build(*pair.master, pair.master_positions);
 
-    bool new_coupling = false;
+    bool                      new_coupling = false;
+    std::vector<unsigned int> faces;
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
     {
       if (!pair.owned[k] || pair.excluded[k])
@@ -105,18 +106,13 @@ namespace tribos
             state.distance = pair.current[h].distance;
           }
         }
-        const auto couple = [&](const std::vector<unsigned int> &faces)
-        {
-          for (const unsigned int face : faces)
-            if (pair.couplings.count({k, face}) == 0)
-            {
-              new_coupling = true;
-              pair.insert_couplings(k, face, pair.couplings);
-            }
-        };
-        couple(pair.mortar_faces[k]);
-        for (const auto &[h, weight] : pair.carried[k])
-          couple(pair.mortar_faces[h]);
+        pair.mortar_master_faces(k, faces);
+        for (const unsigned int face : faces)
+          if (pair.couplings.count({k, face}) == 0)
+          {
+            new_coupling = true;
+            pair.insert_couplings(k, face, pair.couplings);
+          }
         continue;
       }
       if (pair.smoothed)

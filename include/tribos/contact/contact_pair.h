@@ -118,6 +118,14 @@ namespace tribos
                    std::vector<unsigned int> &nodes) const;
 
     /**
+     * Mortar: the master faces of slave node @p k's element, its own
+     * (mortar_faces) and those of the hanging nodes it carries, each once.
+     */
+    void
+    mortar_master_faces(const unsigned int         k,
+                        std::vector<unsigned int> &faces) const;
+
+    /**
      * The dofs of the element of slave node @p k against master @p face
      * (-1: none): the slave's (mortar: of slave_stencil()), then the
      * face's nodes' (with a smoothed master also the segment's neighbour
