@@ -24,8 +24,11 @@ mortar, Mortar3D: auxiliary planes, polygon clipping, dual basis).
    block's cells with centres at x < 0.45 refined once, so the slave
    surface has hanging nodes where the refinement ends), each side as
    slave: the hanging nodes carry no multiplier,
-   their functions go to their parents (ContactPair::carried). Multipliers
-   (dual and standard basis): every other node's pressure equal to 1e-10,
+   their functions go to their parents (ContactPair::carried), and the
+   output reports at them their parents' values interpolated with the
+   constraint's weights (the coefficient of their functions in the
+   multiplier field). Every node closed; multipliers
+   (dual and standard basis): every node's pressure equal to 1e-10,
    resultant p A to 1e-8, at most 4 Newton iterations, and the same with
    `mpirun -np 2` and 3 on the distributed mesh (and -np 2 on the shared
    one). Penalty: the resultant to 1e-8 and the pressure
@@ -36,10 +39,16 @@ mortar, Mortar3D: auxiliary planes, polygon clipping, dual basis).
    the serial history to 1e-8.
 """
 
+import os
+import re
 import sys
 
 from tribos_test import (setup, run, read_csv, check, finish, mpi_available,
                          strip_columns, numdiff)
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "tools"))
+from vtu import nodal_values  # noqa: E402
 
 tribos, tests, out = setup(sys.argv)
 p = 0.01
@@ -166,27 +175,48 @@ for pair, box in (("14 : 5", "0, 0, 0.5 : 0.45, 1, 1"),
             "upper" if pair.startswith("14") else "lower",
             method.replace(" ", "_"), basis, max(ranks, 1), mesh)
         folder = out + "/" + name
-        run(tribos, prm, folder, [
+        log = run(tribos, prm, folder, [
             "Scene/Two blocks/Refinement box=" + box,
             "Scene/Two blocks/Lower subdivisions=5, 5, 2",
             "Scene/Two blocks/Upper subdivisions=3, 3, 2",
             "Contact/Pairs=" + pair, "Contact/Method=" + method,
-            "Contact/Mortar basis=" + basis, "Parallel/Mesh=" + mesh],
-            mpi_ranks=ranks)
+            "Contact/Mortar basis=" + basis, "Parallel/Mesh=" + mesh,
+            "Output/Write VTU=" + str(ranks == 0).lower()],
+            mpi_ranks=ranks).stdout
         rows = read_csv(folder + "/contact-00001.csv")
-        # The hanging nodes report no traction of their own.
+        # The hanging nodes carry no multiplier of their own and report
+        # their parents' (the coefficient of their basis functions in the
+        # multiplier field): the uniform pressure too, and closed.
+        n_hanging = int(re.search(r"\((\d+) hanging on others\)",
+                                  log).group(1))
         closed = [r["CPRESS"] for r in rows if r["CSTATUS"] != 0]
-        n_hanging = len(rows) - len(closed)
-        spread = (max(closed) - min(closed)) / (sum(closed) / len(closed))
+        pressures = [r["CPRESS"] for r in rows]
+        spread = ((max(pressures) - min(pressures)) /
+                  (sum(pressures) / len(pressures)))
         history = read_csv(folder + "/history.csv")[-1]
         total = abs(abs(history["pair0_Fz"]) - p) / p
         its = history["newton_iterations"]
         bound = 1e-10 if method == "lagrange multiplier" else 1e-3
-        check(n_hanging >= 2 and spread < bound and total < 1e-8 and
-              its <= 4,
-              "%s: %d hanging slave nodes, pressure spread %.1e of the "
-              "others, resultant error %.1e, %d Newton iterations"
-              % (name, n_hanging, spread, total, its))
+        if ranks == 0:
+            # The VTU's nodal CPRESS on the slave body's contact face (the
+            # slave is the upper block with pair 14 : 5).
+            upper = pair.startswith("14")
+            on_face = [v[0] for x, v, tag in nodal_values(
+                folder + "/solution-00001.vtu", "CPRESS",
+                lambda arrays, cell, corners:
+                    max(c[2] for c in corners) > 0.5 + 1e-9)
+                if abs(x[2] - 0.5) < 1e-6 and tag == upper]
+            vtu_spread = ((max(on_face) - min(on_face)) /
+                          (sum(on_face) / len(on_face)))
+            check(len(on_face) == len(rows) and vtu_spread < max(bound, 1e-6),
+                  "%s: VTU CPRESS at the %d slave nodes spread %.1e"
+                  % (name, len(on_face), vtu_spread))
+        check(n_hanging >= 2 and len(closed) == len(rows) and
+              spread < bound and total < 1e-8 and its <= 4,
+              "%s: %d hanging slave nodes, %d of %d nodes closed, pressure "
+              "spread %.1e, resultant error %.1e, %d Newton iterations"
+              % (name, n_hanging, len(closed), len(rows), spread, total,
+                 its))
 
 sliding = tests + "/sliding_blocks_3d.prm"
 sets = ["Scene/Two blocks/Refinement box=0, 0, 0.3 : 0.45, 1.2, 1",

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 
 namespace tribos
 {
@@ -468,14 +469,21 @@ namespace tribos
         h_min = std::min(h_min, node.size);
         h_max = std::max(h_max, node.size);
       }
-      const auto  &penalty = pair.description.normal_penalty;
-      const double E       = pair.contact_modulus;
+      std::set<unsigned int> hanging;
+      for (const auto &carried : pair.carried)
+        for (const auto &entry : carried)
+          hanging.insert(entry.first);
+      const auto   n_hanging = hanging.size();
+      const auto  &penalty   = pair.description.normal_penalty;
+      const double E         = pair.contact_modulus;
       lines.push_back("contact pair <" + pair.description.text +
                       ">: " + Parameters::to_string(pair.description.method) +
-                      ", " + std::to_string(pair.n_nodes()) +
-                      " slave nodes, contact modulus E = " + to_scientific(E) +
-                      ", h = " + to_scientific(h_min) + " to " +
-                      to_scientific(h_max) +
+                      ", " + std::to_string(pair.n_nodes()) + " slave nodes" +
+                      (n_hanging > 0 ? " (" + std::to_string(n_hanging) +
+                                         " hanging on others)" :
+                                       std::string()) +
+                      ", contact modulus E = " + to_scientific(E) + ", h = " +
+                      to_scientific(h_min) + " to " + to_scientific(h_max) +
                       ", eps_N = " + to_scientific(penalty.resolve(E, h_max)) +
                       " to " + to_scientific(penalty.resolve(E, h_min)));
     }

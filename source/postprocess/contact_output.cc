@@ -99,6 +99,88 @@ namespace tribos
 
 
   template <int dim>
+  std::vector<std::vector<NodeState>>
+  ContactOutput<dim>::reported_states() const
+  {
+    std::vector<std::vector<NodeState>> states;
+    // Each process sends, for the parents it owns, one row per hanging
+    // node they carry: pair, hanging node, weight, pressure, traction (3),
+    // gap, slip, status. ContactPair::carried is the same on all
+    // processes, so all take part or none.
+    constexpr unsigned int n_columns = 10;
+    std::vector<double>    rows;
+    bool                   any_hanging = false;
+    for (unsigned int p = 0; p < contact.pairs().size(); ++p)
+    {
+      const auto &pair = contact.pairs()[p];
+      states.push_back(pair.current);
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        for (const auto &[h, weight] : pair.carried[k])
+        {
+          any_hanging = true;
+          if (!pair.owned[k])
+            continue;
+          const auto  &s                 = pair.current[k];
+          const auto  &r                 = s.result;
+          const double values[n_columns] = {double(p),
+                                            double(h),
+                                            weight,
+                                            r.pressure,
+                                            r.traction[0],
+                                            r.traction[1],
+                                            r.traction[2],
+                                            r.gap,
+                                            s.slip,
+                                            double(int(r.status))};
+          rows.insert(rows.end(), values, values + n_columns);
+        }
+    }
+    if (!any_hanging)
+      return states;
+
+    // The hanging nodes' values are sums over their parents.
+    std::vector<std::vector<double>> largest_force(states.size());
+    for (unsigned int p = 0; p < states.size(); ++p)
+    {
+      largest_force[p].assign(states[p].size(), -1);
+      for (const auto &carried : contact.pairs()[p].carried)
+        for (const auto &entry : carried)
+        {
+          auto &s  = states[p][entry.first];
+          s.result = ContactPointResult();
+          s.slip   = 0;
+        }
+    }
+    for (const auto &part :
+         Utilities::MPI::all_gather(contact.communicator(), rows))
+      for (unsigned int i = 0; i < part.size(); i += n_columns)
+      {
+        const double      *row  = &part[i];
+        const unsigned int p    = row[0];
+        const unsigned int h    = row[1];
+        const double       w    = row[2];
+        const auto        &pair = contact.pairs()[p];
+        if (!pair.owned[h])
+          continue;
+        auto &r = states[p][h].result;
+        r.pressure += w * row[3];
+        for (unsigned int d = 0; d < 3; ++d)
+          r.traction[d] += w * row[4 + d];
+        r.gap += w * row[7];
+        states[p][h].slip += w * row[8];
+        const auto status = ContactStatus(int(row[9]));
+        if (status != ContactStatus::open && w * row[3] > largest_force[p][h])
+        {
+          largest_force[p][h] = w * row[3];
+          r.status            = status;
+        }
+      }
+    return states;
+  }
+
+
+
+  template <int dim>
   void
   ContactOutput<dim>::write_csv(const std::string &filename) const
   {
@@ -107,6 +189,7 @@ namespace tribos
     // such as Hertz's are written in it), and the node's number (sorting).
     constexpr unsigned int n_columns = 16;
     std::vector<double>    rows;
+    const auto             states = reported_states();
     for (unsigned int p = 0; p < contact.pairs().size(); ++p)
     {
       const auto &pair = contact.pairs()[p];
@@ -114,7 +197,7 @@ namespace tribos
       {
         if (!pair.owned[k])
           continue;
-        const auto  &r    = pair.current[k].result;
+        const auto  &r    = states[p][k].result;
         const auto  &x    = pair.slave_positions[k];
         const auto  &node = pair.slave->nodes()[k];
         const auto   body = pair.slave->faces()[node.faces[0]].body;
@@ -128,7 +211,7 @@ namespace tribos
                                           -r.traction[1],
                                           -r.traction[2],
                                           r.gap,
-                                          pair.current[k].slip,
+                                          states[p][k].slip,
                                           double(int(r.status)),
                                           node.reference[0],
                                           node.reference[1],
@@ -206,19 +289,21 @@ namespace tribos
       const std::array<types::global_dof_index, dim> *dofs = nullptr;
     };
     std::map<types::global_dof_index, NodeValues> per_node;
-    for (const auto &pair : contact.pairs())
-      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+    const auto                                    states = reported_states();
+    for (unsigned int p = 0; p < contact.pairs().size(); ++p)
+      for (unsigned int k = 0; k < contact.pairs()[p].n_nodes(); ++k)
       {
+        const auto &pair = contact.pairs()[p];
         if (!pair.owned[k])
           continue;
         const auto &node = pair.slave->nodes()[k];
-        const auto &r    = pair.current[k].result;
+        const auto &r    = states[p][k].result;
         NodeValues &v    = per_node[node.dofs[0]];
         v.dofs           = &node.dofs;
         // Excluded nodes (area 0) still report their slip with weight 1.
         const double area = pair.area[k] > 0 ? pair.area[k] : 1e-300;
         v.area += area;
-        v.slip += area * pair.current[k].slip;
+        v.slip += area * states[p][k].slip;
         if (std::isfinite(r.gap) && (!v.has_gap || r.gap < v.gap))
         {
           v.gap     = r.gap;

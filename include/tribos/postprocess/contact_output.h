@@ -72,6 +72,21 @@ namespace tribos
 
   private:
     const ContactHandler<dim> &contact;
+
+    /**
+     * The state each slave node this process owns reports: its own, except
+     * for a hanging node that carries no constraint of its own
+     * (ContactPair::carried; with multipliers or mortar). Such a node
+     * reports its parents' values interpolated with the constraint's
+     * weights: with dual mortar exactly the coefficient of its basis
+     * function in the multiplier field, which its parents carry; and the
+     * status of the parent with the largest weighted pressure. Its own
+     * result says open, which would show a hole in the contact zone.
+     * Per pair, a copy of ContactPair::current. Collective: the parents
+     * may belong to other processes.
+     */
+    std::vector<std::vector<NodeState>>
+    reported_states() const;
   };
 } // namespace tribos
 
