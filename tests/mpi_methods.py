@@ -52,10 +52,19 @@ for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d",
             run(tribos, prm, parallel, sets, mpi_ranks=ranks)
             strip_columns(parallel + "/history.csv", parallel + "/h.csv",
                           drop=noisy)
-            numdiff(parallel + "/h.csv", serial + "/h.csv", relative=1e-8,
+            # The augmented Lagrangian in the 3D slide: see below; with
+            # direct solves too, the last increment ends in one of two
+            # converged states (residual 1e-16 each, forces 7e-5 apart,
+            # 9 or 10 Newton iterations) as round-off decides the first
+            # iterate of the nearly free sliding mode (measured: the serial
+            # run with Nonlinear solver/Tangent shift = 1e-14 and -np 4
+            # with 1e-12 take the other one).
+            bound = 1e-4 if (method == "augmented lagrangian" and
+                             scene.startswith("sliding_blocks_3d")) else 1e-8
+            numdiff(parallel + "/h.csv", serial + "/h.csv", relative=bound,
                     absolute=1e-8)
-            print("ok      %s, %s: np %d history equals the serial one"
-                  % (scene, method, ranks))
+            print("ok      %s, %s: np %d history equals the serial one "
+                  "to %g" % (scene, method, ranks, bound))
             summary = open(parallel + "/summary.txt").read()
             found = re.search(r"contact across processes (\d+) slave nodes "
                               r"at the end, (\d+) master face changes",

@@ -251,9 +251,12 @@ check(abs(final["penalty"] - final["lagrange"]) < 0.02 * final["lagrange"],
       "upsetting mu = 0.5, axisymmetric: penalty vs Lagrange %.2f %%"
       % (100 * abs(final["penalty"] - final["lagrange"]) / final["lagrange"]))
 # The split-corner section (192 cells) completes too, on the same 100
-# steps, and its final force is within 3 % of the 8 x 8 grid's (mesh
+# steps, and its final force is within 4 % of the 8 x 8 grid's (mesh
 # convergence: 16 x 16 is 2 % above 8 x 8; the path of increments moves it
-# by 1-2 %; measured 1629.9 against 1584.3, 2.9 %).
+# by 1-2 %, and so does round-off: the fold at the end of the stroke ends
+# in one of a few states, Nonlinear solver/Tangent shift = 0, 1e-14,
+# 1e-13, 1e-12, 1e-11 and 1e-10 gave 1629.9, 1629.9, 1629.9, 1640.9,
+# 1577.0 and 1629.9 against 1584.3, i.e. 2.9, 3.6 and 0.5 %).
 folder = out + "/upsetting_axisymmetric_split"
 run(tribos, prm("cylinder_compression_axisymmetric"), folder,
     axisymmetric + split + ["Scene/Cylinder compression/Radial refinements=3",
@@ -261,7 +264,7 @@ run(tribos, prm("cylinder_compression_axisymmetric"), folder,
 h = read_csv(folder + "/history.csv")
 force = h[-1]["pair0_normal_force"]
 check(h[-1]["time"] > 24.999 and
-      abs(force - final["penalty"]) < 0.03 * final["penalty"],
+      abs(force - final["penalty"]) < 0.04 * final["penalty"],
       "upsetting mu = 0.5, axisymmetric split-corner mesh, penalty: the "
       "whole stroke in %d increments, plate force %.1f vs %.1f on 8 x 8 "
       "(%.2f %%)" % (len(h), force, final["penalty"],

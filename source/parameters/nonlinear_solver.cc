@@ -48,6 +48,19 @@ namespace tribos
                         "others) and print the relative error. Slow; for "
                         "verification and debugging (serial runs).");
       prm.declare_entry(
+        "Tangent shift",
+        "1e-12",
+        dealii::Patterns::Double(0, 1e-3),
+        "Before every linear solve each diagonal entry of the tangent is "
+        "multiplied by 1 + this (0: off). The residual is left alone, so "
+        "the solution is the same, and a regular tangent changes by this "
+        "relative amount only; a singular one gets a defined solve: a body "
+        "that the first iterate rests on one frictionless node can turn "
+        "about a point of a side held only normal to the load, and "
+        "without the shift the solver's round-off chose that turn (the "
+        "dof numbering decided between 10 and 44 Newton iterations of the "
+        "load-controlled Hertz 2D).");
+      prm.declare_entry(
         "Stabilization factor",
         "0",
         dealii::Patterns::Double(0),
@@ -94,6 +107,7 @@ namespace tribos
       line_search           = prm.get_bool("Line search");
       max_line_search_steps = prm.get_integer("Maximum line search steps");
       check_tangent         = prm.get_bool("Check tangent");
+      tangent_shift         = prm.get_double("Tangent shift");
       stabilization         = prm.get_double("Stabilization factor");
       stabilization_limit   = prm.get_double("Stabilization limit");
       max_stabilization_relaxations =

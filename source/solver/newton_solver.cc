@@ -178,6 +178,16 @@ namespace tribos
         previous_eta = eta;
       }
 
+      // Nonlinear solver/Tangent shift: a singular tangent (a body whose
+      // first iterate rests on one frictionless node turns freely) gets a
+      // defined solve, a regular one changes by the shift only.
+      if (p.tangent_shift > 0)
+      {
+        auto &matrix = problem.system_matrix();
+        for (const auto i : matrix.locally_owned_range_indices())
+          matrix.add(i, i, p.tangent_shift * matrix.diag_element(i));
+        matrix.compress(VectorOperation::add);
+      }
       update = 0;
       ++linear_solves;
       ++n_solves;

@@ -20,6 +20,8 @@ namespace tribos
       bool         line_search;
       unsigned int max_line_search_steps;
       bool         check_tangent;
+      /** Relative shift of the tangent's diagonal before every solve. */
+      double tangent_shift;
       /** Stabilization spring factor (0: off). */
       double stabilization;
       /** Largest accepted ratio of the stabilization forces to the load. */
