@@ -16,6 +16,18 @@ namespace tribos
 {
   namespace
   {
+    /** Append to @p into the entries of @p from that it does not hold. */
+    void
+    append_missing(std::vector<unsigned int>       &into,
+                   const std::vector<unsigned int> &from)
+    {
+      for (const unsigned int i : from)
+        if (std::find(into.begin(), into.end(), i) == into.end())
+          into.push_back(i);
+    }
+
+
+
     /**
      * Exclude the slave nodes of @p pair whose rows would depend on other
      * rows, and hand their areas over (see make_contact_pairs()): hanging
@@ -137,10 +149,20 @@ namespace tribos
     for (const auto &[h, weight] : carried[k])
     {
       slave_stencil(h, other);
-      for (const unsigned int m : other)
-        if (std::find(nodes.begin(), nodes.end(), m) == nodes.end())
-          nodes.push_back(m);
+      append_missing(nodes, other);
     }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactPair<dim>::mortar_slave_faces(const unsigned int         k,
+                                       std::vector<unsigned int> &faces) const
+  {
+    faces = slave->nodes()[k].faces;
+    for (const auto &[h, weight] : carried[k])
+      append_missing(faces, slave->nodes()[h].faces);
   }
 
 
@@ -152,9 +174,7 @@ namespace tribos
   {
     faces = mortar_faces[k];
     for (const auto &[h, weight] : carried[k])
-      for (const unsigned int f : mortar_faces[h])
-        if (std::find(faces.begin(), faces.end(), f) == faces.end())
-          faces.push_back(f);
+      append_missing(faces, mortar_faces[h]);
   }
 
 
@@ -377,10 +397,12 @@ namespace tribos
             is_carried[h] = !pair.excluded[k];
         for (unsigned int k = 0; k < n_slaves; ++k)
         {
+          if (!pair.excluded[k] || (dim == 3 && is_carried[k]))
+            continue;
           std::string at;
           for (unsigned int d = 0; d < dim; ++d)
             at += (d > 0 ? ", " : "") + std::to_string(nodes[k].reference[d]);
-          AssertThrow(!pair.excluded[k] || (dim == 3 && is_carried[k]),
+          AssertThrow(false,
                       ExcMessage(
                         "Contact pair <" + description.text +
                         ">: mortar with multipliers needs every slave node "

@@ -592,11 +592,8 @@ namespace tribos
     // The faces of node k and of the hanging nodes it carries, each with
     // the nodes whose functions the element integrates on it.
     pair.mortar_stencil(k, stencil);
-    std::vector<unsigned int> faces = pair.slave->nodes()[k].faces;
-    for (const auto &[h, weight] : pair.carried[k])
-      for (const unsigned int f : pair.slave->nodes()[h].faces)
-        if (std::find(faces.begin(), faces.end(), f) == faces.end())
-          faces.push_back(f);
+    std::vector<unsigned int> faces;
+    pair.mortar_slave_faces(k, faces);
     if (stencil.size() > MortarInput3D::max_slave_nodes ||
         faces.size() > MortarInput3D::max_slave_faces)
       return refuse("has more than " +

@@ -5,6 +5,7 @@
 #include <tribos/scene/mesh_tools.h>
 #include <tribos/scene/scene.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
@@ -85,21 +86,14 @@ namespace tribos
 
       if (!s.box_lower.empty())
       {
-        const auto lower_corner =
-          to_point<dim>(s.box_lower, "Scene/Two blocks/Refinement box");
-        const auto upper_corner =
-          to_point<dim>(s.box_upper, "Scene/Two blocks/Refinement box");
+        const BoundingBox<dim> box(
+          {to_point<dim>(s.box_lower, "Scene/Two blocks/Refinement box"),
+           to_point<dim>(s.box_upper, "Scene/Two blocks/Refinement box")});
         for (unsigned int cycle = 0; cycle < s.box_refinements; ++cycle)
         {
           for (const auto &cell : tria.active_cell_iterators())
-          {
-            bool inside = true;
-            for (unsigned int d = 0; d < dim; ++d)
-              inside = inside && cell->center()[d] >= lower_corner[d] &&
-                       cell->center()[d] <= upper_corner[d];
-            if (inside)
+            if (box.point_inside(cell->center()))
               cell->set_refine_flag();
-          }
           tria.execute_coarsening_and_refinement();
         }
       }

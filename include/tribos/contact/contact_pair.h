@@ -118,6 +118,14 @@ namespace tribos
                    std::vector<unsigned int> &nodes) const;
 
     /**
+     * Mortar: the slave faces of slave node @p k's element, its own and
+     * those of the hanging nodes it carries, each once.
+     */
+    void
+    mortar_slave_faces(const unsigned int         k,
+                       std::vector<unsigned int> &faces) const;
+
+    /**
      * Mortar: the master faces of slave node @p k's element, its own
      * (mortar_faces) and those of the hanging nodes it carries, each once.
      */
