@@ -11,7 +11,15 @@ a row, and the run stopped. Asserts: the run completes; every node that
 sticks or slips at the outputs is within the Coulomb cone (a held node
 ends inside it or is released); the punch force at t = 1 and its vertical
 part at t = 1.2 are within 1 % of smoothed node to segment's (the same
-scene, the other discretization), and in the slide Fx / |Fy| >= mu."""
+scene, the other discretization), and in the slide Fx / |Fy| >= mu.
+
+The same with the block as the slave (coarse slave, fine curved master):
+it stopped at t = 0.77, where a closed node's element took or dropped a
+master face by its distance from one iterate to the next and Newton
+cycled even in increments of 1e-12 (the reach now decides whether a node
+pairs, not which of its overlapping faces count). Asserts: it completes,
+and its punch force at t = 1 is within 1 % of smoothed node to
+segment's."""
 
 import math
 import sys
@@ -42,9 +50,18 @@ check(worst <= 1 + 1e-6,
       "every closed node within the Coulomb cone: max |t_T| / (mu p) = %.9f"
       % worst)
 
+block_slave = run(tribos, prm, out + "/block_slave",
+                  common + ["Contact/Discretization=mortar",
+                            "Contact/Master smoothing=none",
+                            "Contact/Pairs=3 : 10, 11, 12"],
+                  expect_success=False)
+check(block_slave.returncode == 0,
+      "mortar with the block as slave completes (exit %d)"
+      % block_slave.returncode)
+
 run(tribos, prm, out + "/nts", common)
 forces = {}
-for name in ("mortar", "nts"):
+for name in ("mortar", "nts", "block_slave"):
     forces[name] = {round(r["time"], 6): (r["RF13_x"], r["RF13_y"])
                     for r in read_csv(out + "/" + name + "/history.csv")}
 for t in (1.0, 1.2):
@@ -61,4 +78,9 @@ for t in (1.0, 1.2):
                   % (m[0] / abs(m[1])))
         else:
             check(difference < 0.01, line)
+for i, axis in enumerate("xy"):
+    b, n = forces["block_slave"][1.0][i], forces["nts"][1.0][i]
+    check(abs(b / n - 1) < 0.01,
+          "t = 1: F%s mortar with the block as slave %.3f, smoothed node to "
+          "segment %.3f (%.2f %%)" % (axis, b, n, 100 * abs(b / n - 1)))
 finish()

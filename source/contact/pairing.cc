@@ -314,11 +314,21 @@ namespace tribos
     state.distance      = std::numeric_limits<double>::quiet_NaN();
     const auto &faces   = pair.master->faces();
     double      closest = std::numeric_limits<double>::max();
+    // Whether one of the faces found lies within reach along the normal.
+    // The reach decides whether the node pairs, not which faces its
+    // element integrates: a face dropped or taken by its distance while
+    // it overlaps would change the weighted gap by its whole share, and
+    // Newton cycles where that happens (issue 18).
+    bool reached = false;
     // From the master faces closest to the slave points @p starts through
     // their neighbours, as long as they overlap the slave face or segment
-    // (@p overlaps); false if the search found no face at all.
+    // in its projection; @p classify(m) is 0 for a face that does not
+    // overlap, 1 for one that overlaps but is not taken (it faces away, or
+    // lies too deep behind), 2 for one taken. The walk goes on through
+    // faces not taken, so that faces beyond them are found however the
+    // closest faces lie. False if the search found no face at all.
     const auto walk = [&](const std::initializer_list<Vec3<double>> starts,
-                          const auto                               &overlaps)
+                          const auto                               &classify)
     {
       std::vector<unsigned int> queue;
       for (const Vec3<double> &point : starts)
@@ -335,10 +345,11 @@ namespace tribos
       for (unsigned int i = 0; i < queue.size(); ++i)
       {
         const unsigned int m       = queue[i];
-        const bool         overlap = overlaps(m);
-        if (overlap && std::find(found.begin(), found.end(), m) == found.end())
+        const int          class_m = classify(m);
+        if (class_m == 2 &&
+            std::find(found.begin(), found.end(), m) == found.end())
           found.push_back(m);
-        if (overlap || i < n_start)
+        if (class_m > 0 || i < n_start)
           for (const unsigned int g : faces[m].neighbours)
             if (std::find(queue.begin(), queue.end(), g) == queue.end())
               queue.push_back(g);
@@ -365,22 +376,17 @@ namespace tribos
         const Vec3<double>  n_s =
           scale(1. / std::sqrt(length_squared), cross(ez, e));
 
-        // Whether master face m faces this slave segment, overlaps it in
-        // the projection onto its line and lies within the search
-        // distance along its normal.
-        const auto overlaps = [&](const unsigned int m)
+        // Whether master face m overlaps this slave segment in the
+        // projection onto its line, faces it and is not too deep behind
+        // it (walk's classes).
+        const auto classify = [&](const unsigned int m)
         {
           const Vec3<double> &y_c = pair.master_positions[faces[m].nodes[0]];
           const Vec3<double> &y_d = pair.master_positions[faces[m].nodes[1]];
-          // Faces steeper than 75 degrees to the slave segment cannot
-          // carry its contact (the sides of a body above the slave).
-          const Vec3<double> n_m = cross(ez, y_d - y_c);
-          if (dot(n_m, n_s) >= -0.25 * norm(n_m))
-            return false;
-          const double s_c = dot(y_c - x_a, e) / length_squared;
-          const double s_d = dot(y_d - x_a, e) / length_squared;
+          const double        s_c = dot(y_c - x_a, e) / length_squared;
+          const double        s_d = dot(y_d - x_a, e) / length_squared;
           if (std::abs(s_c - s_d) < 1e-12)
-            return false;
+            return 0;
           // Quadratic segments are curves, the chords only approximate
           // where they overlap: a face found late (or lost) would change
           // the element's weights by a jump. Faces a quarter of the
@@ -390,12 +396,17 @@ namespace tribos
           const double lo     = std::max(-margin, std::min(s_c, s_d));
           const double hi     = std::min(1. + margin, std::max(s_c, s_d));
           if (hi <= lo)
-            return false;
+            return 0;
+          // Faces steeper than 75 degrees to the slave segment cannot
+          // carry its contact (the sides of a body above the slave).
+          const Vec3<double> n_m = cross(ez, y_d - y_c);
+          if (dot(n_m, n_s) >= -0.25 * norm(n_m))
+            return 1;
           // Within reach: closer than the search distance and the
-          // segment's length (a farther face cannot close within an
-          // increment; the node is paired again when it comes near), and
-          // not wholly more than that behind the slave (the far side of a
-          // thin master).
+          // segment's length (a node whose faces are all farther cannot
+          // close within an increment; it is paired again when it comes
+          // near). Not wholly more than that behind the slave (the far
+          // side of a thin master).
           double gap_min = std::numeric_limits<double>::max(),
                  gap_max = -gap_min;
           for (const double t : {lo, hi})
@@ -407,13 +418,15 @@ namespace tribos
             gap_max          = std::max(gap_max, gap);
           }
           const double length = std::sqrt(length_squared);
-          return gap_min <= std::min(parameters.search_distance, length) &&
-                 (gap_max >= -length || was_closed);
+          if (gap_max < -length && !was_closed)
+            return 1;
+          reached |= gap_min <= std::min(parameters.search_distance, length);
+          return 2;
         };
 
         // From the faces closest to the segment's ends and middle through
         // their neighbours, as long as they overlap.
-        if (!walk({x_a, x_b, scale(0.5, x_a + x_b)}, overlaps))
+        if (!walk({x_a, x_b, scale(0.5, x_a + x_b)}, classify))
           return;
       }
     }
@@ -438,9 +451,9 @@ namespace tribos
         }
         const double length = std::sqrt(std::abs(plane.area));
 
-        // Whether master face m faces this slave face, overlaps it in the
-        // plane and lies within reach along its normal (as in 2D).
-        const auto overlaps = [&](const unsigned int m)
+        // Whether master face m overlaps this slave face in the plane and
+        // is not too deep behind it (as in 2D).
+        const auto classify = [&](const unsigned int m)
         {
           Vec3<double> y[4];
           double       gap_min = std::numeric_limits<double>::max(),
@@ -452,16 +465,21 @@ namespace tribos
             gap_min            = std::min(gap_min, above - height_max);
             gap_max            = std::max(gap_max, above - height_min);
           }
-          return internal::overlaps_in_plane(plane, y) &&
-                 gap_min <= std::min(parameters.search_distance, length) &&
-                 (gap_max >= -length || was_closed);
+          if (!internal::overlaps_in_plane(plane, y))
+            return 0;
+          if (gap_max < -length && !was_closed)
+            return 1;
+          reached |= gap_min <= std::min(parameters.search_distance, length);
+          return 2;
         };
 
-        if (!walk({x[0], x[1], x[2], x[3], plane.x0}, overlaps))
+        if (!walk({x[0], x[1], x[2], x[3], plane.x0}, classify))
           return;
       }
     }
     state.distance = closest;
+    if (!reached)
+      found.clear();
     if (!found.empty())
     {
       state.paired = true;

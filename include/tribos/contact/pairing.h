@@ -71,15 +71,17 @@ namespace tribos
     pair_smoothed(ContactPair<dim> &pair, const unsigned int k) const;
 
     /**
-     * Mortar: the master faces that face one of slave @p k's
-     * segments or faces (normals more than 75 degrees apart), overlap it
-     * in the orthogonal projection onto its line (3D: clipped in the
-     * face's auxiliary plane) and lie within reach along its
-     * normal (a gap below Search distance and the segment's length; for
-     * a node open at the last converged step also not wholly deeper than
-     * that length behind it, a closed one keeps faces at any depth), found
-     * from the faces closest to the segment's ends and middle through their
-     * neighbours. Paired if there is one.
+     * Mortar: the master faces that overlap one of slave @p k's segments
+     * or faces in the orthogonal projection onto its line (3D: clipped in
+     * the face's auxiliary plane), face it (2D: normals more than 75
+     * degrees apart) and, for a node open at the last converged step, do
+     * not lie wholly more than the segment's length behind it (a closed
+     * one keeps faces at any depth); found from the faces closest to the
+     * segment's ends and middle through their overlapping neighbours.
+     * Paired if one of them lies within reach along the normal (a gap
+     * below Search distance and the segment's length); the element then
+     * integrates all of them, however far, since a face taken or dropped
+     * by its distance would change the weighted gap by a jump.
      */
     void
     pair_mortar(ContactPair<dim> &pair, const unsigned int k) const;
