@@ -7,8 +7,8 @@ hit both alike, and prints the median of each and their ratio.
         [--runs 5] [--vtu] [--out doc/data/paired_timing.csv] [scene.prm ...]
 
 Default scenes: parameters/hertz_2d.prm and parameters/ring_on_foundation.prm
-(VTU off unless --vtu). Writes one CSV row per scene: scene, runs, median_a, median_b,
-ratio (b / a)."""
+(VTU off unless --vtu). Writes one CSV row per scene: scene, runs,
+median_a, median_b, ratio (b / a)."""
 
 import argparse
 import os
