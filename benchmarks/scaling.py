@@ -23,6 +23,12 @@ Cases (Parallel/Mesh = distributed unless the variant says shared):
 * multipliers: the cylinder's first step at 42k and 314k dofs, np 2,
   penalty (GMRES + ML) against Lagrange multipliers (FGMRES, the
   multipliers eliminated across processes), and MUMPS at 42k;
+* balance: the 3D mortar sphere on a block (parameters/hertz_3d.prm with
+  the block, penalty 1000 E/h) at Contact refinements 2 and 3, np 2,
+  METIS' plain partition against Parallel/Contact cell weight = 21 (what
+  the plain run's summary.txt suggests), alternating, medians of --runs;
+  the contact time of the busiest and the idlest process and their slave
+  nodes;
 * large (only with --large, about 15 minutes): the cylinder at 1.2M dofs,
   its first two steps of 25 at np 2, for the whole stroke's projection;
   large_multipliers the same with Lagrange multipliers.
@@ -71,6 +77,19 @@ DIRECT = ["Linear solver/Type=direct"]
 LM = ["Contact/Method=lagrange multiplier"]
 
 
+def sphere_on_block(level, weight):
+    return ("parameters/hertz_3d.prm",
+            ["Scene/Cylinder over block/With block=true",
+             "Scene/Cylinder over block/Contact refinements=%d" % level,
+             "Contact/Pairs=10 : 5",
+             "Boundary conditions/Symmetry=12, 13, 0, 2",
+             "Boundary conditions/Dirichlet=11 : z : -0.02*t ; "
+             "4 : xyz : 0, 0, 0",
+             "Contact/Penalty factor=1000*E/h",
+             "Contact/Discretization=mortar",
+             "Parallel/Contact cell weight=%d" % weight])
+
+
 def variant(case, extra):
     return (case[0], case[1] + extra)
 
@@ -89,6 +108,9 @@ CASES = {
          2),
         ("penalty 314k", variant(cylinder(3, 2, 1), ITERATIVE), 2),
         ("multipliers 314k", variant(cylinder(3, 2, 1), LM + ITERATIVE), 2)],
+    "balance": [("level %d weight %d" % (level, weight),
+                 sphere_on_block(level, weight), 2)
+                for level in (2, 3) for weight in (1, 21)],
     "large": [("2 of 25 steps", cylinder(3, 3, 2), 2)],
     "large_multipliers": [("2 of 25 steps",
                            variant(cylinder(3, 3, 2), LM + ITERATIVE), 2)],
@@ -113,6 +135,15 @@ def extras(folder):
     m = re.search(r"contact across processes (\d+) slave nodes", text)
     if m:
         values["paired_across"] = int(m.group(1))
+    m = re.search(r"balance contact\s+min ([\d.e+-]+) s, max ([\d.e+-]+) s",
+                  text)
+    if m:
+        values["contact_time_min"] = float(m.group(1))
+        values["contact_time_max"] = float(m.group(2))
+    m = re.search(r"balance slave nodes min (\d+), max (\d+)", text)
+    if m:
+        values["slave_nodes_min"] = int(m.group(1))
+        values["slave_nodes_max"] = int(m.group(2))
     m = re.search(r"linear iterations (\d+)", text)
     if m:
         values["linear_iterations"] = int(m.group(1))
@@ -139,7 +170,7 @@ def main():
     with tempfile.TemporaryDirectory() as scratch:
         for name in names:
             variants = CASES[name]
-            runs = args.runs if name == "speedup" else 1
+            runs = args.runs if name in ("speedup", "balance") else 1
             walls = {v: [] for v, _, _ in variants}
             last = {}
             # Alternate the variants, so that the machine's noise hits all.
@@ -173,7 +204,8 @@ def main():
                "contact_search", "linear_solve", "linear_iterations",
                "outer_iterations",
                "peak_mb_process", "peak_mb_all", "ghost_values",
-               "contact_ghost_values", "paired_across"]
+               "contact_ghost_values", "paired_across", "contact_time_min",
+               "contact_time_max", "slave_nodes_min", "slave_nodes_max"]
     # The rows of the cases not run stay as they were.
     rows = with_earlier_rows(args.out, rows, names)
     os.makedirs(os.path.dirname(args.out), exist_ok=True)

@@ -1,4 +1,5 @@
 #include <tribos/base/exceptions.h>
+#include <tribos/base/timing.h>
 #include <tribos/contact/contact_element.h>
 #include <tribos/contact/contact_handler.h>
 #include <tribos/contact/mortar_element.h>
@@ -8,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <set>
 #include <type_traits>
@@ -44,10 +46,12 @@ namespace tribos
   ContactHandler<dim>::update(const TrilinosWrappers::MPI::Vector &solution,
                               const double                         t)
   {
+    const auto start  = std::chrono::steady_clock::now();
     time              = t;
     bool new_coupling = false;
     for (auto &pair : contact_pairs)
       new_coupling = pairing.update(pair, solution) || new_coupling;
+    own_seconds += seconds_since(start);
     if (Utilities::MPI::max(new_coupling ? 1 : 0, mpi_communicator) == 1)
       outdated = true;
   }
@@ -114,6 +118,7 @@ namespace tribos
                                 TrilinosWrappers::MPI::Vector   &full_residual,
                                 TrilinosWrappers::MPI::Vector   &contact_forces)
   {
+    const auto             start = std::chrono::steady_clock::now();
     constexpr unsigned int n_max =
       std::max(
         {NodeToSegment<dim>::n_dofs,
@@ -343,6 +348,7 @@ namespace tribos
         add_element(pair, k, state);
       }
     }
+    own_seconds += seconds_since(start);
     if (Utilities::MPI::max(too_large.empty() ? 0 : 1, mpi_communicator) > 0)
       throw NonConvergence(too_large.empty() ?
                              "a mortar element on another process is too "

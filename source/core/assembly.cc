@@ -1,4 +1,5 @@
 #include <tribos/base/exceptions.h>
+#include <tribos/base/timing.h>
 #include <tribos/core/f_bar.h>
 #include <tribos/core/problem.h>
 
@@ -13,16 +14,6 @@ namespace tribos
 {
   namespace
   {
-    double
-    seconds_since(const std::chrono::steady_clock::time_point start)
-    {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                           start)
-        .count();
-    }
-
-
-
     /** Per-thread workspace of the bulk assembly (WorkStream). */
     template <int dim>
     struct AssemblyScratch
@@ -124,9 +115,7 @@ namespace tribos
     if (contact)
     {
       TimerOutput::Scope search_timer(timer, "contact search");
-      const auto         start = std::chrono::steady_clock::now();
       contact->update(ghosted_solution, time);
-      own_contact_time += seconds_since(start);
       if (with_matrix && contact->sparsity_outdated())
         make_sparsity();
     }
@@ -568,8 +557,7 @@ namespace tribos
     if (contact)
     {
       TimerOutput::Scope contact_timer(timer, "contact assembly");
-      contact_forces   = 0;
-      const auto start = std::chrono::steady_clock::now();
+      contact_forces = 0;
       contact->assemble(with_matrix,
                         constraints,
                         homogeneous_constraints,
@@ -578,7 +566,6 @@ namespace tribos
                         free_residual,
                         full_residual,
                         contact_forces);
-      own_contact_time += seconds_since(start);
       contact_forces.compress(VectorOperation::add);
     }
 

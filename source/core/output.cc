@@ -8,6 +8,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -572,7 +573,15 @@ namespace tribos
         {"assembly",
          Utilities::MPI::min_max_avg(own_assembly_time, mpi_communicator)},
         {"contact",
-         Utilities::MPI::min_max_avg(own_contact_time, mpi_communicator)}};
+         Utilities::MPI::min_max_avg(contact ? contact->own_time() : 0.,
+                                     mpi_communicator)}};
+    // The slave nodes each process evaluates (the contact's share of the
+    // work, whatever their state).
+    const auto slave_nodes =
+      Utilities::MPI::min_max_avg(contact ?
+                                    double(contact->n_own_slave_nodes()) :
+                                    0.,
+                                  mpi_communicator);
     // Communication: the values each process receives per update of the
     // ghosted solution (all of them, and the contact's share), and the
     // contact across processes.
@@ -641,9 +650,18 @@ namespace tribos
         if (n_ranks > 1)
         {
           for (const auto &[section, t] : balance)
+          {
             out << "balance " << std::left << std::setw(10) << section
                 << std::right << "min " << t.min << " s, max " << t.max
-                << " s, max/min " << (t.min > 0 ? t.max / t.min : 0.) << '\n';
+                << " s, max/min ";
+            if (t.min > 0)
+              out << t.max / t.min << '\n';
+            else
+              out << (t.max > 0 ? "inf" : "-") << '\n';
+          }
+          if (contact)
+            out << "balance slave nodes min " << slave_nodes.min << ", max "
+                << slave_nodes.max << " per process\n";
           out << "ghost values      max " << ghosts.max << " per process ("
               << 8 * ghosts.max << " bytes per update), of which contact "
               << contact_ghosts.max << '\n';
@@ -651,6 +669,19 @@ namespace tribos
             out << "contact across processes " << crossings.first
                 << " slave nodes at the end, " << crossings.second
                 << " master face changes of process\n";
+        }
+        if (contact && slave_nodes.sum > 0 && balance[0].second.sum > 0)
+        {
+          // A cell with a slave face carries about one slave node: its
+          // weight is one cell's assembly and one node's contact work,
+          // in units of a cell's assembly (sums over the processes).
+          const double per_cell =
+            balance[0].second.sum / triangulation.n_global_active_cells();
+          const double per_node = balance[1].second.sum / slave_nodes.sum;
+          out << "contact cell weight " << std::lround(1 + per_node / per_cell)
+              << " would balance the measured work (Parallel/Contact cell "
+                 "weight = "
+              << parameters.parallel.contact_cell_weight << ")\n";
         }
         for (const auto &w : warnings)
           out << "warning           " << w << '\n';

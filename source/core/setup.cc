@@ -131,8 +131,26 @@ namespace tribos
             cell->set_all_manifold_ids(numbers::flat_manifold_id);
           tria.reset_all_manifolds();
         },
-        [n_ranks](Triangulation<dim> &tria, const MPI_Comm, const unsigned int)
-        { GridTools::partition_triangulation(n_ranks, tria); },
+        [this,
+         n_ranks](Triangulation<dim> &tria, const MPI_Comm, const unsigned int)
+        {
+          // A cell that carries slave faces weighs more: its slave nodes'
+          // contact elements are evaluated by its process. (No weights at
+          // all is METIS' plain partition.)
+          const unsigned int weight = parameters.parallel.contact_cell_weight;
+          const auto slave_ids      = parameters.contact.slave_boundary_ids();
+          std::vector<unsigned int> weights;
+          if (weight > 1)
+          {
+            weights.assign(tria.n_active_cells(), 1);
+            for (const auto &cell : tria.active_cell_iterators())
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary() &&
+                    slave_ids.count(face->boundary_id()) == 1)
+                  weights[cell->active_cell_index()] = weight;
+          }
+          GridTools::partition_triangulation(n_ranks, weights, tria);
+        },
         mpi_communicator,
         n_ranks);
     triangulation.create_triangulation(description);

@@ -575,5 +575,20 @@ namespace tribos
                         "3D."));
       }
     }
+
+
+
+    std::set<unsigned int>
+    Contact::slave_boundary_ids() const
+    {
+      std::set<unsigned int> ids;
+      for (const auto &pair : pairs)
+      {
+        ids.insert(pair.slave_boundary.begin(), pair.slave_boundary.end());
+        if (two_pass && pair.rigid_surface.empty())
+          ids.insert(pair.master_boundary.begin(), pair.master_boundary.end());
+      }
+      return ids;
+    }
   } // namespace Parameters
 } // namespace tribos

@@ -1,5 +1,7 @@
 #include <tribos/parameters/parallel.h>
 
+#include <string>
+
 namespace tribos
 {
   namespace Parameters
@@ -19,6 +21,17 @@ namespace tribos
         "first process, partitioned by METIS and handed out, and the "
         "contact surfaces (small against the mesh) are gathered on every "
         "process. The results are the same to round-off.");
+      prm.declare_entry(
+        "Contact cell weight",
+        "1",
+        dealii::Patterns::Integer(1, 1000000),
+        "Mesh = distributed: the weight, in METIS' partition, of a cell with "
+        "a face on a contact pair's slave surface; other cells weigh 1. The "
+        "process that owns a slave node evaluates its contact element, so "
+        "a contact zone on one process makes the others wait: summary.txt "
+        "gives the measured balance of the contact work and the weight that "
+        "would even it out (1 + a slave node's contact time over a cell's "
+        "assembly time). 1: every cell alike.");
       prm.leave_subsection();
     }
 
@@ -29,6 +42,14 @@ namespace tribos
     {
       prm.enter_subsection("Parallel");
       mesh = prm.get("Mesh") == "shared" ? Mesh::shared : Mesh::distributed;
+      contact_cell_weight = prm.get_integer("Contact cell weight");
+      AssertThrow(contact_cell_weight == 1 || mesh == Mesh::distributed,
+                  dealii::ExcMessage(
+                    "Parameter <Parallel/Contact cell weight> = " +
+                    std::to_string(contact_cell_weight) +
+                    " weights METIS' partition of a distributed mesh; with "
+                    "<Parallel/Mesh> = shared (deal.II partitions it "
+                    "itself) it must be 1."));
       prm.leave_subsection();
     }
   } // namespace Parameters

@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -181,6 +182,28 @@ namespace tribos
     std::pair<unsigned int, unsigned int>
     process_crossings() const;
 
+    /**
+     * Seconds this process has spent in update() and assemble() on its own
+     * slave nodes, without the collective steps where it waits for the
+     * others: the measure of the contact's load balance (a timer around
+     * the calls would show every process the slowest one's time).
+     */
+    double
+    own_time() const
+    {
+      return own_seconds;
+    }
+
+    /** The slave nodes this process evaluates, over all pairs. */
+    unsigned int
+    n_own_slave_nodes() const
+    {
+      unsigned int n = 0;
+      for (const auto &pair : contact_pairs)
+        n += std::count(pair.owned.begin(), pair.owned.end(), true);
+      return n;
+    }
+
     /** Back to the last committed state (pairing included). */
     void
     restore();
@@ -234,6 +257,8 @@ namespace tribos
     bool         outdated       = true;
     double       time           = 0;
     double       committed_time = 0;
+    /** See own_time(). */
+    double own_seconds = 0;
   };
 } // namespace tribos
 

@@ -511,10 +511,10 @@ namespace tribos
     /** The internal forces f_int at the last converged time. */
     Vector old_internal;
 
-    /** This process's own time in the bulk assembly and in the contact
-     * search and assembly, without waiting for the others (the load
-     * balance in summary.txt). */
-    double own_assembly_time = 0, own_contact_time = 0;
+    /** This process's own time in the bulk assembly, without waiting for
+     * the others (the load balance in summary.txt; the contact's is
+     * ContactHandler::own_time()). */
+    double own_assembly_time = 0;
 
     /** The solvers (built by run()). */
     std::unique_ptr<LinearSolver> linear_solver;

@@ -165,6 +165,10 @@ namespace tribos
       parse_parameters(dealii::ParameterHandler &prm);
       void
       check(const unsigned int dim) const;
+      /** The boundary ids of every slave surface: the pairs' slaves and,
+       * two-pass, their deformable masters too. */
+      std::set<unsigned int>
+      slave_boundary_ids() const;
     };
   } // namespace Parameters
 } // namespace tribos

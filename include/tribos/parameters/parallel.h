@@ -21,6 +21,14 @@ namespace tribos
         distributed
       };
       Mesh mesh;
+      /**
+       * METIS' weight of a cell with a face on a slave surface (a bulk
+       * cell weighs 1): the slave nodes' contact work falls to the
+       * processes that own them, and where the contact zone lies on one
+       * process the others wait for it. summary.txt reports the measured
+       * balance and the weight that would even it out.
+       */
+      unsigned int contact_cell_weight;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
