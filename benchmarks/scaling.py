@@ -26,9 +26,10 @@ Cases (Parallel/Mesh = distributed unless the variant says shared):
 * balance: the 3D mortar sphere on a block (parameters/hertz_3d.prm with
   the block, penalty 1000 E/h) at Contact refinements 2 and 3, np 2,
   METIS' plain partition against Parallel/Contact cell weight = 21 (what
-  the plain run's summary.txt suggests), alternating, medians of --runs;
-  the contact time of the busiest and the idlest process and their slave
-  nodes;
+  the plain run's summary.txt suggests) and Parallel/Rebalance threshold =
+  2 (repartitioned by the measured work after step 1 of 2), alternating,
+  medians of --runs; the contact time of the busiest and the idlest
+  process (the rebalanced run: in its second step) and their slave nodes;
 * large (only with --large, about 15 minutes): the cylinder at 1.2M dofs,
   its first two steps of 25 at np 2, for the whole stroke's projection;
   large_multipliers the same with Lagrange multipliers.
@@ -77,7 +78,7 @@ DIRECT = ["Linear solver/Type=direct"]
 LM = ["Contact/Method=lagrange multiplier"]
 
 
-def sphere_on_block(level, weight):
+def sphere_on_block(level, weight, rebalance=0):
     return ("parameters/hertz_3d.prm",
             ["Scene/Cylinder over block/With block=true",
              "Scene/Cylinder over block/Contact refinements=%d" % level,
@@ -87,7 +88,8 @@ def sphere_on_block(level, weight):
              "4 : xyz : 0, 0, 0",
              "Contact/Penalty factor=1000*E/h",
              "Contact/Discretization=mortar",
-             "Parallel/Contact cell weight=%d" % weight])
+             "Parallel/Contact cell weight=%d" % weight,
+             "Parallel/Rebalance threshold=%g" % rebalance])
 
 
 def variant(case, extra):
@@ -108,9 +110,12 @@ CASES = {
          2),
         ("penalty 314k", variant(cylinder(3, 2, 1), ITERATIVE), 2),
         ("multipliers 314k", variant(cylinder(3, 2, 1), LM + ITERATIVE), 2)],
-    "balance": [("level %d weight %d" % (level, weight),
-                 sphere_on_block(level, weight), 2)
-                for level in (2, 3) for weight in (1, 21)],
+    "balance": [(name % level, sphere_on_block(level, weight, rebalance), 2)
+                for level in (2, 3)
+                for name, weight, rebalance in (
+                    ("level %d weight 1", 1, 0),
+                    ("level %d weight 21", 21, 0),
+                    ("level %d rebalance 2", 1, 2))],
     "large": [("2 of 25 steps", cylinder(3, 3, 2), 2)],
     "large_multipliers": [("2 of 25 steps",
                            variant(cylinder(3, 3, 2), LM + ITERATIVE), 2)],

@@ -55,22 +55,38 @@ namespace
     parameters.input_warnings =
       tribos::Parameters::input_file_warnings(filename);
     parameters.restart_directory = restart;
-    // Let the problem (and its TimerOutput) be destroyed before a failure
-    // propagates, so that its destructor runs outside of stack unwinding.
-    std::exception_ptr failure;
+    // A rebalance (Parallel/Rebalance threshold) ends a problem after a
+    // step and the next one goes on from its state, partitioned anew.
+    tribos::Rebalance rebalance;
+    for (;;)
     {
-      tribos::Problem<dim> problem(parameters, MPI_COMM_WORLD);
-      try
+      // Let the problem (and its TimerOutput) be destroyed before a failure
+      // propagates, so that its destructor runs outside of stack unwinding.
+      std::exception_ptr failure;
+      bool               again = false;
       {
-        problem.run();
+        tribos::Problem<dim> problem(parameters, MPI_COMM_WORLD);
+        problem.set_rebalance(rebalance);
+        try
+        {
+          problem.run();
+        }
+        catch (tribos::Rebalance &next)
+        {
+          rebalance = std::move(next);
+          again     = true;
+        }
+        catch (...)
+        {
+          failure = std::current_exception();
+        }
       }
-      catch (...)
-      {
-        failure = std::current_exception();
-      }
+      if (failure)
+        std::rethrow_exception(failure);
+      if (!again)
+        return;
+      parameters.restart_directory = rebalance.checkpoint;
     }
-    if (failure)
-      std::rethrow_exception(failure);
   }
 } // namespace
 

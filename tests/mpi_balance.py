@@ -11,8 +11,16 @@ run) while the other waits.
 * Parallel/Contact cell weight spreads the slave cells over both
   processes, and the history is the unweighted one's to 1e-8 (a partition
   changes round-off only).
-* The weight with a shared mesh is refused with a message naming it."""
+* Parallel/Rebalance threshold = 2: after step 1 the run partitions its
+  mesh again with the measured work of each slave node and goes on from
+  that step's state; the history and the last contact file are the plain
+  run's to 1e-8, and the contact time's max/min falls tenfold or more
+  (the weights come from measured times, so the partition varies from
+  run to run; 244 before, 1.3 to 2.5 after in development runs).
+* The weight with a shared mesh, and a threshold of 0.5, are refused with
+  a message naming the parameter."""
 
+import os
 import re
 import sys
 
@@ -74,10 +82,35 @@ for folder in (plain, weighted):
 numdiff(weighted + "/h.csv", plain + "/h.csv", relative=1e-8, absolute=1e-8)
 print("ok      the weighted partition's history equals the plain one's")
 
-bad = run(tribos, prm, out + "/bad",
-          ["Parallel/Mesh=shared", "Parallel/Contact cell weight=5"],
-          expect_success=False)
-check(bad.returncode == 1 and
-      "Parallel/Contact cell weight" in bad.stdout + bad.stderr,
-      "a weight with a shared mesh: exit 1 naming the parameter")
+rebalanced = out + "/rebalanced"
+result = run(tribos, prm, rebalanced,
+             sphere_on_block + ["Parallel/Rebalance threshold=2"],
+             mpi_ranks=2)
+r_min, r_max, s_min, s_max, _ = balance(rebalanced)
+print("rebalanced after step 1: contact time %.4f / %.4f s, slave nodes "
+      "%d / %d" % (r_min, r_max, s_min, s_max))
+summary = open(rebalanced + "/summary.txt").read()
+check("rebalance after step 1" in result.stdout and
+      "rebalanced        1 time(s), the last after step 1" in summary,
+      "threshold 2: the run rebalanced once, after step 1, and says so")
+check(r_min > 0 and r_max / r_min < 0.1 * t_max / t_min,
+      "rebalanced: the contact time's max/min (%.2f) is a tenth of the plain "
+      "run's (%.0f) or less" % (r_max / max(r_min, 1e-300), t_max / t_min))
+check(not os.path.exists(rebalanced + "/rebalance"),
+      "rebalanced: the state written for the rebalance is removed")
+strip_columns(rebalanced + "/history.csv", rebalanced + "/h.csv", drop=noisy)
+numdiff(rebalanced + "/h.csv", plain + "/h.csv", relative=1e-8,
+        absolute=1e-8)
+numdiff(rebalanced + "/contact-00002.csv", plain + "/contact-00002.csv",
+        relative=1e-8, absolute=1e-10)
+print("ok      the rebalanced run's history and contact file equal the "
+      "plain run's")
+
+for sets, entry in ((["Parallel/Mesh=shared", "Parallel/Contact cell weight=5"],
+                     "Parallel/Contact cell weight"),
+                    (["Parallel/Rebalance threshold=0.5"],
+                     "Parallel/Rebalance threshold")):
+    bad = run(tribos, prm, out + "/bad", sets, expect_success=False)
+    check(bad.returncode == 1 and entry in bad.stdout + bad.stderr,
+          "%s: exit 1 naming <%s>" % (", ".join(sets), entry))
 finish()

@@ -208,10 +208,21 @@ namespace tribos
         rigid.shift_old = pair.rigid->translation(committed_time);
       }
 
+      // Each node's share of the time (charged when the next one starts).
+      auto       lap    = std::chrono::steady_clock::now();
+      double    *worker = nullptr;
+      const auto charge = [&](double *next)
+      {
+        if (worker != nullptr)
+          *worker += seconds_since(lap);
+        lap    = std::chrono::steady_clock::now();
+        worker = next;
+      };
       for (unsigned int k = 0; k < pair.n_nodes(); ++k)
       {
         if (!pair.owned[k])
           continue;
+        charge(&pair.work[k]);
         NodeState          &state     = pair.current[k];
         const NodeState    &committed = pair.committed[k];
         const Vec3<double> &x         = pair.slave_positions[k];
@@ -347,6 +358,7 @@ namespace tribos
         pair.element_dofs(k, face, dofs);
         add_element(pair, k, state);
       }
+      charge(nullptr);
     }
     own_seconds += seconds_since(start);
     if (Utilities::MPI::max(too_large.empty() ? 0 : 1, mpi_communicator) > 0)
@@ -354,6 +366,25 @@ namespace tribos
                              "a mortar element on another process is too "
                              "large" :
                              too_large);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<CellId::binary_type, double>>
+  ContactHandler<dim>::take_work()
+  {
+    std::vector<std::pair<CellId::binary_type, double>> work;
+    for (auto &pair : contact_pairs)
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        if (pair.owned[k] && pair.work[k] > 0)
+        {
+          const auto &node = pair.slave->nodes()[k];
+          work.emplace_back(pair.slave->faces()[node.faces[0]].cell,
+                            pair.work[k]);
+          pair.work[k] = 0;
+        }
+    return work;
   }
 
 

@@ -364,6 +364,7 @@ namespace tribos
       const auto        &nodes    = pair.slave->nodes();
       const unsigned int n_slaves = nodes.size();
       pair.owned.resize(n_slaves);
+      pair.work.assign(n_slaves, 0.);
       pair.area.resize(n_slaves);
       pair.excluded.assign(n_slaves, false);
       pair.carried.assign(n_slaves, {});

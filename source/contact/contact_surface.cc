@@ -110,6 +110,7 @@ namespace tribos
       Face contact_face;
       contact_face.body  = record.body;
       contact_face.owner = record.owner;
+      contact_face.cell  = record.cell;
       body_ids.insert(record.body);
       for (unsigned int v = 0; v < n_face_nodes; ++v)
       {

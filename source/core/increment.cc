@@ -417,6 +417,7 @@ namespace tribos
     if (every > 0 &&
         (step % every == 0 || step == parameters.time_stepping.n_steps))
       write_checkpoint(step);
+    check_balance(step);
   }
 
 

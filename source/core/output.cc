@@ -683,6 +683,11 @@ namespace tribos
                  "weight = "
               << parameters.parallel.contact_cell_weight << ")\n";
         }
+        if (last_rebalance.count > 0)
+          out << "rebalanced        " << last_rebalance.count
+              << " time(s), the last after step " << last_rebalance.step
+              << " (contact time max/min " << last_rebalance.imbalance
+              << "); balance and sections since then\n";
         for (const auto &w : warnings)
           out << "warning           " << w << '\n';
         out << "\nsection               calls    wall [s]  share\n";

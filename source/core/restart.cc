@@ -121,7 +121,8 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::write_checkpoint(const unsigned int step)
+  Problem<dim>::write_checkpoint(const unsigned int step,
+                                 const std::string &directory)
   {
     TimerOutput::Scope t(timer, "output");
     Checkpoint         c;
@@ -183,8 +184,9 @@ namespace tribos
     c.pvd_records = pvd_records;
 
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      c.save(parameters.output.directory + "/checkpoint-" +
-             Utilities::int_to_string(step, 5));
+      c.save(!directory.empty() ? directory :
+                                  parameters.output.directory + "/checkpoint-" +
+                                    Utilities::int_to_string(step, 5));
     MPI_Barrier(mpi_communicator);
   }
 

@@ -149,6 +149,20 @@ namespace tribos
                     slave_ids.count(face->boundary_id()) == 1)
                   weights[cell->active_cell_index()] = weight;
           }
+          // After a rebalance: 1 + each cell's measured contact work, in
+          // cells' assembly.
+          if (last_rebalance.count > 0)
+          {
+            if (weights.empty())
+              weights.assign(tria.n_active_cells(), 1);
+            for (const auto &[id, w] : last_rebalance.weights)
+            {
+              auto &weight_of_cell =
+                weights[tria.create_cell_iterator(CellId(id))
+                          ->active_cell_index()];
+              weight_of_cell = std::max(weight_of_cell, 1 + w);
+            }
+          }
           GridTools::partition_triangulation(n_ranks, weights, tria);
         },
         mpi_communicator,

@@ -32,6 +32,19 @@ namespace tribos
         "gives the measured balance of the contact work and the weight that "
         "would even it out (1 + a slave node's contact time over a cell's "
         "assembly time). 1: every cell alike.");
+      prm.declare_entry(
+        "Rebalance threshold",
+        "0",
+        dealii::Patterns::Double(0),
+        "Mesh = distributed, several processes: at the end of a step in "
+        "which the busiest process spent more than this many times the "
+        "idlest one's time on contact (and the difference was more than 5 % "
+        "of the step), the run writes its state (<Output/Directory>/"
+        "rebalance), partitions the mesh again with every cell weighted by "
+        "the measured contact work of its slave nodes, and goes on from that "
+        "state; the results are the same to round-off. A rebalanced run that "
+        "is still above the threshold after its next step does not "
+        "rebalance again. 0: never (must be 0 or > 1).");
       prm.leave_subsection();
     }
 
@@ -43,6 +56,19 @@ namespace tribos
       prm.enter_subsection("Parallel");
       mesh = prm.get("Mesh") == "shared" ? Mesh::shared : Mesh::distributed;
       contact_cell_weight = prm.get_integer("Contact cell weight");
+      rebalance_threshold = prm.get_double("Rebalance threshold");
+      AssertThrow(rebalance_threshold == 0 || rebalance_threshold > 1,
+                  dealii::ExcMessage(
+                    "Parameter <Parallel/Rebalance threshold> = " +
+                    prm.get("Rebalance threshold") +
+                    ": a ratio of the busiest process's contact time to the "
+                    "idlest one's, so 0 (never) or above 1."));
+      AssertThrow(rebalance_threshold == 0 || mesh == Mesh::distributed,
+                  dealii::ExcMessage(
+                    "Parameter <Parallel/Rebalance threshold> = " +
+                    prm.get("Rebalance threshold") +
+                    " partitions a distributed mesh again; with "
+                    "<Parallel/Mesh> = shared it must be 0."));
       AssertThrow(contact_cell_weight == 1 || mesh == Mesh::distributed,
                   dealii::ExcMessage(
                     "Parameter <Parallel/Contact cell weight> = " +

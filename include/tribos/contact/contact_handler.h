@@ -194,6 +194,14 @@ namespace tribos
       return own_seconds;
     }
 
+    /**
+     * The work of this process's slave nodes since the last call, per
+     * node the seconds its element took and the cell of its first slave
+     * face; resets it (the weights of a rebalanced partition).
+     */
+    std::vector<std::pair<CellId::binary_type, double>>
+    take_work();
+
     /** The slave nodes this process evaluates, over all pairs. */
     unsigned int
     n_own_slave_nodes() const

@@ -66,6 +66,10 @@ namespace tribos
      * the areas of excluded nodes handed to the nodes that carry them. */
     std::vector<bool>   owned, excluded;
     std::vector<double> area;
+    /** Per owned slave node: the seconds this process spent on its
+     * element since the work was last taken (ContactHandler::take_work(),
+     * the weights of a rebalanced partition). */
+    std::vector<double> work;
     /**
      * Mortar with unknowns: per slave node, the hanging slave nodes whose
      * multiplier functions it carries, with its weight in their

@@ -91,6 +91,8 @@ namespace tribos
       types::material_id body;
       /** The MPI process that owns the face's cell. */
       unsigned int owner = 0;
+      /** The face's cell (a partition's weights are given per cell). */
+      CellId::binary_type cell;
     };
 
     /**

@@ -30,6 +30,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace tribos
@@ -55,6 +56,29 @@ namespace tribos
    * is split by responsibility over source/core/: setup, assembly, the
    * solver hooks (increment.cc), the run and the output.
    */
+  /**
+   * Thrown by Problem::end_step() when the contact work is out of balance
+   * (Parallel/Rebalance threshold): not a failure. The state of the step is
+   * in @p checkpoint; main() builds the problem again, partitioned with
+   * @p weights, and restarts from it.
+   */
+  struct Rebalance
+  {
+    std::string checkpoint;
+    /** Rank 0: METIS' weight of every cell with measured contact work
+     * (others weigh 1). */
+    std::vector<std::pair<CellId::binary_type, unsigned int>> weights;
+    /** The contact time's max/min over the processes in the step. */
+    double       imbalance = 0;
+    unsigned int step      = 0;
+    /** Rebalances so far, this one included. */
+    unsigned int count = 0;
+    /** The wall time of the run before it (for the log's total). */
+    double elapsed = 0;
+  };
+
+
+
   template <int dim>
   class Problem : public IncrementalProblem
   {
@@ -69,6 +93,14 @@ namespace tribos
      */
     void
     run();
+
+    /** This run goes on from a rebalance (main(), before run()): its mesh
+     * is partitioned with the rebalance's weights. */
+    void
+    set_rebalance(const Rebalance &rebalance)
+    {
+      last_rebalance = rebalance;
+    }
 
     /** Access for tests and drivers. */
     const DoFHandler<dim> &
@@ -272,10 +304,12 @@ namespace tribos
     energies() const;
 
     /* restart.cc */
-    /** Write the converged state after nominal @p step into
-     * <Output/Directory>/checkpoint (Output/Checkpoint every). */
+    /** Write the converged state after nominal @p step into @p directory,
+     * by default <Output/Directory>/checkpoint-NNNNN (Output/Checkpoint
+     * every). */
     void
-    write_checkpoint(const unsigned int step);
+    write_checkpoint(const unsigned int step,
+                     const std::string &directory = "");
     /** Whether the checkpoint fits this run (mesh, dofs, pairs, integrator,
      * steps): a clear error before any output is touched. */
     void
@@ -515,6 +549,17 @@ namespace tribos
      * the others (the load balance in summary.txt; the contact's is
      * ContactHandler::own_time()). */
     double own_assembly_time = 0;
+    /** Parallel/Rebalance threshold: the rebalance this run goes on from
+     * (count 0: none), whether it may rebalance, and the own times and the
+     * wall clock at the last step's end. */
+    Rebalance     last_rebalance;
+    bool          may_rebalance        = true;
+    double        contact_time_at_step = 0, assembly_time_at_step = 0;
+    dealii::Timer step_clock, run_clock;
+    /** At the end of a step: throws Rebalance if the contact work is out of
+     * balance (collective). */
+    void
+    check_balance(const unsigned int step);
 
     /** The solvers (built by run()). */
     std::unique_ptr<LinearSolver> linear_solver;

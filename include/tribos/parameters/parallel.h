@@ -29,6 +29,14 @@ namespace tribos
        * balance and the weight that would even it out.
        */
       unsigned int contact_cell_weight;
+      /**
+       * Mesh = distributed: at the end of a step whose contact work is
+       * this many times larger on the busiest process than on the idlest,
+       * the run partitions its mesh again, every cell weighted by the
+       * measured work of its slave nodes, and goes on from the step's
+       * state (a checkpoint and restart within the run). 0: never.
+       */
+      double rebalance_threshold;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
