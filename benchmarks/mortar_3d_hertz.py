@@ -23,7 +23,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from tribos_test import hertz_compare  # noqa: E402
+from tribos_test import hertz_compare, sphere_on_block  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--tribos", default=os.path.join(ROOT, "build/tribos"))
@@ -40,15 +40,8 @@ for level in [int(x) for x in args.levels.split(",")]:
         folder = "%s/L%d_%s" % (args.out, level,
                                 discretization.replace(" ", "_"))
         command = [args.tribos, os.path.join(ROOT, "parameters/hertz_3d.prm")]
-        for s in ["Output/Directory=" + folder, "Output/Write VTU=false",
-                  "Scene/Cylinder over block/With block=true",
-                  "Scene/Cylinder over block/Contact refinements=%d" % level,
-                  "Contact/Pairs=10 : 5",
-                  "Boundary conditions/Symmetry=12, 13, 0, 2",
-                  "Boundary conditions/Dirichlet=11 : z : -0.02*t ; "
-                  "4 : xyz : 0, 0, 0",
-                  "Contact/Penalty factor=1000*E/h",
-                  "Contact/Discretization=" + discretization]:
+        for s in (["Output/Directory=" + folder, "Output/Write VTU=false"]
+                  + sphere_on_block(level, discretization)):
             command += ["--set", s]
         start = time.time()
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL)

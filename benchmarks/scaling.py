@@ -49,7 +49,9 @@ import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
+sys.path.insert(0, os.path.join(ROOT, "tests"))
 from solver_speed import run_once, summary, with_earlier_rows  # noqa: E402
+from tribos_test import sphere_on_block  # noqa: E402
 
 BLOCKS = "tests/sliding_blocks_3d.prm"
 CYLINDER = "parameters/cylinder_compression.prm"
@@ -78,18 +80,11 @@ DIRECT = ["Linear solver/Type=direct"]
 LM = ["Contact/Method=lagrange multiplier"]
 
 
-def sphere_on_block(level, weight, rebalance=0):
+def mortar_sphere(level, weight, rebalance=0):
     return ("parameters/hertz_3d.prm",
-            ["Scene/Cylinder over block/With block=true",
-             "Scene/Cylinder over block/Contact refinements=%d" % level,
-             "Contact/Pairs=10 : 5",
-             "Boundary conditions/Symmetry=12, 13, 0, 2",
-             "Boundary conditions/Dirichlet=11 : z : -0.02*t ; "
-             "4 : xyz : 0, 0, 0",
-             "Contact/Penalty factor=1000*E/h",
-             "Contact/Discretization=mortar",
-             "Parallel/Contact cell weight=%d" % weight,
-             "Parallel/Rebalance threshold=%g" % rebalance])
+            sphere_on_block(level, "mortar")
+            + ["Parallel/Contact cell weight=%d" % weight,
+               "Parallel/Rebalance threshold=%g" % rebalance])
 
 
 def variant(case, extra):
@@ -110,7 +105,7 @@ CASES = {
          2),
         ("penalty 314k", variant(cylinder(3, 2, 1), ITERATIVE), 2),
         ("multipliers 314k", variant(cylinder(3, 2, 1), LM + ITERATIVE), 2)],
-    "balance": [(name % level, sphere_on_block(level, weight, rebalance), 2)
+    "balance": [(name % level, mortar_sphere(level, weight, rebalance), 2)
                 for level in (2, 3)
                 for name, weight, rebalance in (
                     ("level %d weight 1", 1, 0),
@@ -122,39 +117,33 @@ CASES = {
 }
 
 
+# summary.txt's lines: pattern, the columns of its groups, their type.
+SUMMARY_VALUES = [
+    (r"peak memory\s+([\d.e+]+) MB per process \(max\), ([\d.e+]+) MB in "
+     r"all", ("peak_mb_process", "peak_mb_all"), float),
+    (r"ghost values\s+max ([\d.e+]+) per process .* of which contact "
+     r"([\d.e+]+)", ("ghost_values", "contact_ghost_values"), float),
+    (r"contact across processes (\d+) slave nodes", ("paired_across",), int),
+    (r"balance contact\s+min ([\d.e+-]+) s, max ([\d.e+-]+) s",
+     ("contact_time_min", "contact_time_max"), float),
+    (r"balance slave nodes min (\d+), max (\d+)",
+     ("slave_nodes_min", "slave_nodes_max"), int),
+    (r"linear iterations (\d+)", ("linear_iterations",), int),
+    (r"refinement steps\s+(\d+)", ("outer_iterations",), int),
+]
+
+
 def extras(folder):
-    """Peak memory, ghost values and contact across processes."""
+    """Peak memory, ghost values, contact across processes, the contact's
+    balance and the linear iterations."""
     values = {}
     with open(folder + "/summary.txt") as f:
         text = f.read()
-    m = re.search(r"peak memory\s+([\d.e+]+) MB per process \(max\), "
-                  r"([\d.e+]+) MB in all", text)
-    if m:
-        values["peak_mb_process"] = float(m.group(1))
-        values["peak_mb_all"] = float(m.group(2))
-    m = re.search(r"ghost values\s+max ([\d.e+]+) per process .* of which "
-                  r"contact ([\d.e+]+)", text)
-    if m:
-        values["ghost_values"] = float(m.group(1))
-        values["contact_ghost_values"] = float(m.group(2))
-    m = re.search(r"contact across processes (\d+) slave nodes", text)
-    if m:
-        values["paired_across"] = int(m.group(1))
-    m = re.search(r"balance contact\s+min ([\d.e+-]+) s, max ([\d.e+-]+) s",
-                  text)
-    if m:
-        values["contact_time_min"] = float(m.group(1))
-        values["contact_time_max"] = float(m.group(2))
-    m = re.search(r"balance slave nodes min (\d+), max (\d+)", text)
-    if m:
-        values["slave_nodes_min"] = int(m.group(1))
-        values["slave_nodes_max"] = int(m.group(2))
-    m = re.search(r"linear iterations (\d+)", text)
-    if m:
-        values["linear_iterations"] = int(m.group(1))
-    m = re.search(r"refinement steps\s+(\d+)", text)
-    if m:
-        values["outer_iterations"] = int(m.group(1))
+    for pattern, columns, kind in SUMMARY_VALUES:
+        m = re.search(pattern, text)
+        if m:
+            for i, column in enumerate(columns):
+                values[column] = kind(m.group(i + 1))
     return values
 
 

@@ -24,19 +24,12 @@ import os
 import re
 import sys
 
-from tribos_test import setup, run, strip_columns, numdiff, check, finish
+from tribos_test import (setup, run, strip_columns, numdiff, check, finish,
+                         sphere_on_block)
 
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/../parameters/hertz_3d.prm"
-sphere_on_block = ["Output/Write VTU=false",
-                   "Scene/Cylinder over block/With block=true",
-                   "Scene/Cylinder over block/Contact refinements=2",
-                   "Contact/Pairs=10 : 5",
-                   "Boundary conditions/Symmetry=12, 13, 0, 2",
-                   "Boundary conditions/Dirichlet=11 : z : -0.02*t ; "
-                   "4 : xyz : 0, 0, 0",
-                   "Contact/Penalty factor=1000*E/h",
-                   "Contact/Discretization=mortar"]
+mortar_sphere = ["Output/Write VTU=false"] + sphere_on_block(2, "mortar")
 
 
 def balance(folder):
@@ -53,7 +46,7 @@ def balance(folder):
 
 
 plain, weighted = out + "/plain", out + "/weighted"
-run(tribos, prm, plain, sphere_on_block, mpi_ranks=2)
+run(tribos, prm, plain, mortar_sphere, mpi_ranks=2)
 t_min, t_max, n_min, n_max, suggested = balance(plain)
 print("plain partition: contact time %.4f / %.4f s, slave nodes %d / %d, "
       "suggested weight %d" % (t_min, t_max, n_min, n_max, suggested))
@@ -68,7 +61,7 @@ check(5 <= suggested <= 100,
       "work in cells' assembly" % suggested)
 
 run(tribos, prm, weighted,
-    sphere_on_block + ["Parallel/Contact cell weight=%d" % suggested],
+    mortar_sphere + ["Parallel/Contact cell weight=%d" % suggested],
     mpi_ranks=2)
 w_min, w_max, m_min, m_max, _ = balance(weighted)
 print("weighted partition: contact time %.4f / %.4f s, slave nodes %d / %d"
@@ -84,7 +77,7 @@ print("ok      the weighted partition's history equals the plain one's")
 
 rebalanced = out + "/rebalanced"
 result = run(tribos, prm, rebalanced,
-             sphere_on_block + ["Parallel/Rebalance threshold=2"],
+             mortar_sphere + ["Parallel/Rebalance threshold=2"],
              mpi_ranks=2)
 r_min, r_max, s_min, s_max, _ = balance(rebalanced)
 print("rebalanced after step 1: contact time %.4f / %.4f s, slave nodes "

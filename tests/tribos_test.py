@@ -88,6 +88,20 @@ def numdiff(result, reference, relative=1e-6, absolute=1e-10):
         raise SystemExit("numdiff: %s differs from %s" % (result, reference))
 
 
+def sphere_on_block(level, discretization):
+    """--set overrides of parameters/hertz_3d.prm for the quarter sphere
+    pressed 0.02 into an elastic block of its material (penalty 1000 E/h),
+    Contact refinements = level."""
+    return ["Scene/Cylinder over block/With block=true",
+            "Scene/Cylinder over block/Contact refinements=%d" % level,
+            "Contact/Pairs=10 : 5",
+            "Boundary conditions/Symmetry=12, 13, 0, 2",
+            "Boundary conditions/Dirichlet=11 : z : -0.02*t ; "
+            "4 : xyz : 0, 0, 0",
+            "Contact/Penalty factor=1000*E/h",
+            "Contact/Discretization=" + discretization]
+
+
 def hertz_compare(folder, dim, e_star, radius, force_scale, step=2,
                   reference=False):
     """Hertz values for the contact normal force of a run (times
