@@ -550,8 +550,16 @@ namespace tribos
       AssemblyScratch<dim>(*fe, quadrature, face_quadrature),
       AssemblyCopy(dofs_per_cell, stabilization > 0, track_external, dynamic));
     own_assembly_time += seconds_since(bulk_start);
-    if (!failure.empty())
-      throw InvertedElement(failure);
+    // Every process throws, or none: a process that left here alone
+    // would leave the others waiting in the next collective step (two
+    // processes, a cell inverted on one of them: the run hung).
+    if (Utilities::MPI::max(failure.empty() ? 0 : 1, mpi_communicator) > 0)
+    {
+      for (const auto &message :
+           Utilities::MPI::all_gather(mpi_communicator, failure))
+        if (!message.empty())
+          throw InvertedElement(message);
+    }
 
     t.stop();
     if (contact)

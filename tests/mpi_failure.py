@@ -1,0 +1,78 @@
+"""MPI: a run that cannot converge because a cell inverts on one process
+only ends as the serial run does (exit status 2, the same message, the
+converged steps' outputs kept), instead of hanging.
+
+A neo-Hookean strip 4 x 1 (16 x 4 cells) is crushed by a body force on
+x < 0.5 only, so the inverted cells lie in one corner of the strip, on one
+of the two processes. Before the fix the process whose cell inverted threw
+alone and the other one waited for it in the next collective step: the run
+hung (the Newton line search and the cutback alike)."""
+
+import os
+import re
+import signal
+import subprocess
+import sys
+
+from tribos_test import setup, check, finish, mpi_available
+
+tribos, tests, out = setup(sys.argv)
+prm = tests + "/neo_hookean_stretch.prm"
+crush = ["Scene/Block/Upper corner=4, 1, 1",
+         "Scene/Block/Subdivisions=16, 4, 1",
+         "Boundary conditions/Dirichlet=",
+         "Boundary conditions/Body force=0, -20*t*(x<0.5)",
+         "Time stepping/Maximum cutbacks=2"]
+
+
+def run_failing(folder, ranks):
+    command = [tribos, prm, "--set", "Output/Directory=" + folder]
+    for s in crush:
+        command += ["--set", s]
+    if ranks:
+        command = [os.environ.get("MPIEXEC", "mpirun"), "-np",
+                   str(ranks)] + command
+    # In a session of its own, so that a hung run's processes can all be
+    # killed (mpirun does not pass on SIGKILL).
+    process = subprocess.Popen(command, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True,
+                               start_new_session=True)
+    try:
+        process.communicate(timeout=120)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        raise SystemExit("FAILED  %d process(es): the run hangs (no end "
+                         "in 120 s)" % max(ranks, 1))
+    return process
+
+
+def status(folder):
+    """summary.txt's status without det F's value (which cell is reported
+    first depends on the partition)."""
+    with open(folder + "/summary.txt") as f:
+        line = f.readline().split(None, 1)[1].strip()
+    return re.sub(r"det F = \S+", "det F = ...", line)
+
+
+if not mpi_available():
+    print("mpirun not found: skipped")
+    sys.exit(0)
+
+serial = run_failing(out + "/serial", 0)
+check(serial.returncode == 2 and "det F" in status(out + "/serial"),
+      "serial: exit status %d, %s" % (serial.returncode,
+                                      status(out + "/serial")))
+for ranks in (2, 3):
+    folder = out + "/np%d" % ranks
+    result = run_failing(folder, ranks)
+    check(result.returncode == 2,
+          "np %d: ends with exit status %d (2 expected)"
+          % (ranks, result.returncode))
+    check(status(folder) == status(out + "/serial"),
+          "np %d: summary.txt says what the serial run says: %s"
+          % (ranks, status(folder)))
+    check(os.path.isfile(folder + "/history.csv") and
+          os.path.isfile(folder + "/convergence.csv"),
+          "np %d: history.csv and convergence.csv are kept" % ranks)
+finish()
