@@ -104,9 +104,13 @@ namespace tribos
     // This step's own times (without the waits) and wall clock.
     const double contact_time  = contact->own_time() - contact_time_at_step;
     const double assembly_time = own_assembly_time - assembly_time_at_step;
-    const double wall          = step_clock.wall_time();
-    contact_time_at_step       = contact->own_time();
-    assembly_time_at_step      = own_assembly_time;
+    // The slowest process's clock: each one started its own, and a
+    // process that decided alone would leave the rebalance's collective
+    // steps waiting for it.
+    const double wall =
+      Utilities::MPI::max(step_clock.wall_time(), mpi_communicator);
+    contact_time_at_step  = contact->own_time();
+    assembly_time_at_step = own_assembly_time;
     step_clock.restart();
     const auto work = contact->take_work();
     const auto t = Utilities::MPI::min_max_avg(contact_time, mpi_communicator);

@@ -261,7 +261,9 @@ namespace tribos
       amesos->name    = name;
       amesos->matrix  = &A;
       amesos->version = pattern_version;
-      if (amesos->solver->SymbolicFactorization() != 0)
+      if (Utilities::MPI::max(amesos->solver->SymbolicFactorization() != 0 ? 1 :
+                                                                             0,
+                              matrix.get_mpi_communicator()) > 0)
       {
         amesos.reset();
         throw NonConvergence("the direct solver " + name +
@@ -272,8 +274,16 @@ namespace tribos
       static_cast<Epetra_MultiVector *>(&x.trilinos_vector()));
     amesos->problem.SetRHS(const_cast<Epetra_MultiVector *>(
       static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
-    if (amesos->solver->NumericFactorization() != 0 ||
-        amesos->solver->Solve() != 0)
+    // Every process takes the same branch: Amesos_Lapack, for one,
+    // reports a failed factorization on its first process only, and a
+    // process that skipped Solve() would leave the others waiting in it.
+    const MPI_Comm communicator = matrix.get_mpi_communicator();
+    const auto     failed       = [&](const int code)
+    {
+      return Utilities::MPI::max(code != 0 ? 1 : 0, communicator) > 0;
+    };
+    if (failed(amesos->solver->NumericFactorization()) ||
+        failed(amesos->solver->Solve()))
       throw NonConvergence("the direct solver " + name +
                            " failed (singular system?)");
   }
