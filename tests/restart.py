@@ -17,7 +17,7 @@ import subprocess
 import sys
 
 from tribos_test import (setup, run, strip_columns, numdiff, check, finish,
-                         mpi_available)
+                         mpi_available, read_csv)
 
 tribos, tests, out = setup(sys.argv)
 parameters = os.path.join(tests, "..", "parameters")
@@ -37,6 +37,14 @@ def compare(reference, restarted, name):
         numdiff(restarted + "/" + f, reference + "/" + f, relative=1e-10,
                 absolute=1e-14)
     print("ok      %s: restarted history equals the uninterrupted one" % name)
+    # The restart goes on with the checkpoint's extrapolation (Time
+    # stepping/Extrapolation: the last increment's change is part of the
+    # state), so Newton takes the uninterrupted run's path.
+    iterations = [[row["newton_iterations"] for row in read_csv(
+        folder + "/history.csv")] for folder in (reference, restarted)]
+    check(iterations[0] == iterations[1],
+          "%s: the same Newton iterations per increment (%d in all)"
+          % (name, sum(iterations[0])))
 
 
 def restarted(tribos, prm, reference, step, sets, name, ranks=0,

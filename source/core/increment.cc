@@ -28,16 +28,25 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::begin_increment(const double end_time)
+  Problem<dim>::begin_increment(const double end_time, const Vector *predictor)
   {
     time            = end_time;
     increment_start = owned_solution;
     ghosted_anchors = ghosted_solution;
-    n_chattering    = 0;
-    best_residual   = std::numeric_limits<double>::infinity();
-    n_frozen        = 0;
-    released        = false;
-    n_relaxations   = 0;
+    // The start is the converged state (the update test measures the
+    // increment's change from it, the stabilization springs hold to it);
+    // the first iterate is the predicted one, and the increment's
+    // constraints below take it to the Dirichlet values.
+    if (predictor != nullptr)
+    {
+      owned_solution.add(1., *predictor);
+      solution_changed();
+    }
+    n_chattering  = 0;
+    best_residual = std::numeric_limits<double>::infinity();
+    n_frozen      = 0;
+    released      = false;
+    n_relaxations = 0;
     if (contact)
       contact->begin_increment();
     if (integrator)

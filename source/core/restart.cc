@@ -145,6 +145,24 @@ namespace tribos
     for (types::global_dof_index i = 0; i < n_multipliers; ++i)
       c.multipliers.push_back(ghosted_solution[dof_handler.n_dofs() + i]);
 
+    // The last increment's change, which the next one extrapolates: its
+    // displacement part per cell, its multipliers summed over their owners.
+    if (c.stepper.change_increment > 0)
+    {
+      const Vector &change = stepper->last_change();
+      for (const auto i : locally_owned_dofs)
+        owned[i] = change[i];
+      owned.compress(VectorOperation::insert);
+      c.cell_values["change"] = cell_values(owned);
+      c.multiplier_change.assign(n_multipliers, 0.);
+      for (const auto i : system_owned)
+        if (i >= dof_handler.n_dofs())
+          c.multiplier_change[i - dof_handler.n_dofs()] = change[i];
+      Utilities::MPI::sum(c.multiplier_change,
+                          mpi_communicator,
+                          c.multiplier_change);
+    }
+
     // Plastic history of the owned cells, gathered in cell order.
     std::vector<std::pair<CellKey, std::vector<double>>> mine;
     const unsigned int n_q = quadrature.size();
@@ -244,6 +262,15 @@ namespace tribos
         owned_solution[dof_handler.n_dofs() + i] = c.multipliers[i];
     owned_solution.compress(VectorOperation::insert);
     solution_changed();
+    if (c.stepper.change_increment > 0)
+    {
+      restart_change.reinit(system_owned, mpi_communicator);
+      set_from_cell_values(c.cell_values.at("change"), restart_change);
+      for (types::global_dof_index i = 0; i < n_multipliers; ++i)
+        if (system_owned.is_element(dof_handler.n_dofs() + i))
+          restart_change[dof_handler.n_dofs() + i] = c.multiplier_change[i];
+      restart_change.compress(VectorOperation::insert);
+    }
 
     unsigned int                                   n_missing = 0;
     std::map<CellKey, const std::vector<double> *> by_cell;

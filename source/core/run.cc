@@ -76,7 +76,8 @@ namespace tribos
     stepper->run(
       *this,
       [this](const std::string &text) { message(text); },
-      start);
+      start,
+      start.change_increment > 0 ? &restart_change : nullptr);
 
     if (contact)
       for (const auto &w : contact->run_warnings())

@@ -21,7 +21,8 @@ namespace tribos
   void
   LoadStepper::run(IncrementalProblem                             &problem,
                    const std::function<void(const std::string &)> &print,
-                   const StepperState                             &start)
+                   const StepperState                             &start,
+                   const NonlinearProblem::Vector                 *start_change)
   {
     const auto  &ts           = parameters;
     const double nominal_step = ts.end_time / ts.n_steps;
@@ -32,6 +33,20 @@ namespace tribos
     double     time      = restarted ? start.time : 0.;
     double     increment = restarted ? start.increment : nominal_step;
     NonlinearProblem::Vector converged = problem.solution();
+    // Time stepping/Extrapolation: the last converged increment's change
+    // and size, from which the next increment's first iterate is guessed.
+    const bool extrapolate      = ts.extrapolate && !ts.dynamic();
+    double     change_increment = 0;
+    if (extrapolate && restarted && start.change_increment > 0)
+    {
+      AssertThrow(start_change != nullptr, ExcInternalError());
+      change           = *start_change;
+      change_increment = start.change_increment;
+    }
+    NonlinearProblem::Vector predictor;
+    // Set when an extrapolated attempt failed: the increment is tried
+    // again from the converged state, and so are its cutbacks.
+    bool plain_start = false;
     // Converged increments since the last growth or cutback, and the
     // linear solves when the last increment was accepted.
     unsigned int converged_in_row = restarted ? start.converged_in_row : 0;
@@ -57,7 +72,14 @@ namespace tribos
         try
         {
           problem.begin_attempt(step, sums.n_increments + 1);
-          IncrementReport report = newton.solve(problem, next);
+          const NonlinearProblem::Vector *guess = nullptr;
+          if (change_increment > 0 && !plain_start)
+          {
+            predictor = change;
+            predictor *= (next - time) / change_increment;
+            guess = &predictor;
+          }
+          IncrementReport report = newton.solve(problem, next, guess);
           // Outer updates (Uzawa), each followed by a new solve of the
           // same increment.
           while (problem.outer_update(report))
@@ -72,6 +94,7 @@ namespace tribos
             report.n_relaxations += again.n_relaxations;
           }
           problem.commit(next);
+          plain_start = false;
           // Every linear solve since the last accepted increment: this
           // increment's failed attempts included.
           report.n_iterations_all = newton.n_linear_solves() - solves_accepted;
@@ -81,6 +104,12 @@ namespace tribos
           sums.largest_stabilization_ratio =
             std::max(sums.largest_stabilization_ratio,
                      report.stabilization_ratio);
+          if (extrapolate)
+          {
+            change = problem.solution();
+            change -= converged;
+            change_increment = next - time;
+          }
           converged = problem.solution();
           time      = next;
           ++n_increments;
@@ -108,6 +137,19 @@ namespace tribos
           problem.solution() = converged;
           problem.solution_changed();
           problem.restore();
+          // An extrapolated start can be worse than the converged state
+          // where the last increment's motion does not go on (a contact
+          // change, a snap-through: the paper's ring failed in its last
+          // step). The same increment is tried once more without it
+          // before it is cut.
+          if (change_increment > 0 && !plain_start)
+          {
+            plain_start = true;
+            print("  the extrapolated start did not converge (" +
+                  std::string(failure.what()) +
+                  "): the increment again from the converged state");
+            continue;
+          }
           ++n_cutbacks;
           ++sums.n_cutbacks;
           ++cutbacks_in_row;
@@ -150,7 +192,8 @@ namespace tribos
            << problem.step_status() << "  " << std::setprecision(3) << elapsed
            << " s  ETA " << eta << " s";
       print(line.str());
-      progress = {step, time, increment, converged_in_row, sums};
+      progress =
+        {step, time, increment, converged_in_row, sums, change_increment};
       problem.end_step(step, time);
     }
   }

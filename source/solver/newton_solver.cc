@@ -45,11 +45,13 @@ namespace tribos
 
 
   IncrementReport
-  NewtonSolver::solve(NonlinearProblem &problem, const double time)
+  NewtonSolver::solve(NonlinearProblem                     &problem,
+                      const double                          time,
+                      const NonlinearProblem::Vector *const predictor)
   {
     const auto  &p   = parameters;
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    problem.begin_increment(time);
+    problem.begin_increment(time, predictor);
 
     NonlinearProblem::Vector update(problem.system_rhs());
     const auto               floor = problem.round_off_floor();

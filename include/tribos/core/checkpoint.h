@@ -28,7 +28,7 @@ namespace tribos
   struct Checkpoint
   {
     /** The layout version of this struct. */
-    static constexpr unsigned int format = 2;
+    static constexpr unsigned int format = 3;
 
     unsigned int dimension      = 0;
     unsigned int n_active_cells = 0;
@@ -46,6 +46,9 @@ namespace tribos
     std::map<std::string, std::vector<double>> cell_values;
     /** The contact multipliers (after the dofs in the solution). */
     std::vector<double> multipliers;
+    /** Their change over the last increment (with cell_values["change"],
+     * where stepper.change_increment > 0). */
+    std::vector<double> multiplier_change;
     /** Per cell with history, in CellId order: the cell and its values. */
     std::vector<std::pair<std::array<unsigned int, 4>, std::vector<double>>>
       history;
@@ -65,6 +68,7 @@ namespace tribos
 
       archive &dimension &n_active_cells &dofs_per_cell &n_dofs &n_multipliers;
       archive &s.step &s.time &s.increment &s.converged_in_row;
+      archive &s.change_increment &multiplier_change;
       archive &t.n_increments &t.n_newton_iterations &t.n_cutbacks;
       archive &t.largest_stabilization_ratio &t.n_linear_solves;
       archive &cells &cell_values &multipliers &history &contact &scalars;

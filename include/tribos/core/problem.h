@@ -118,7 +118,7 @@ namespace tribos
 
     /* IncrementalProblem (increment.cc) */
     void
-    begin_increment(const double time) override;
+    begin_increment(const double time, const Vector *predictor) override;
     Residual
     assemble(const bool with_matrix, const bool first_iteration) override;
     TrilinosWrappers::SparseMatrix &
@@ -414,6 +414,9 @@ namespace tribos
     Vector displacement;
     /** The solution at the start of the increment. */
     Vector increment_start;
+    /** A restart's change of the unknowns over its last increment (the
+     * load stepper's extrapolation goes on from it). */
+    Vector restart_change;
     /** The stabilization springs' anchors: the solution at the start of
      * the increment, moved on at every re-anchoring. */
     Vector ghosted_anchors;

@@ -49,6 +49,9 @@ namespace tribos
       double       growth_factor;
       unsigned int easy_iterations;
       unsigned int growth_after;
+      /** Extrapolation = linear: an increment of a static run starts from
+       * the last one's change, scaled by the increment sizes. */
+      bool extrapolate;
 
       Integrator integrator;
       double     newmark_beta;

@@ -98,6 +98,10 @@ namespace tribos
     double        increment        = 0;
     unsigned int  converged_in_row = 0;
     StepperTotals totals;
+    /** The size of the last converged increment, whose change of the
+     * unknowns (LoadStepper::last_change()) the next increment
+     * extrapolates (Time stepping/Extrapolation); 0: none yet. */
+    double change_increment = 0;
   };
 
 
@@ -118,13 +122,23 @@ namespace tribos
                 NewtonSolver                   &newton);
 
     /**
-     * Run every nominal step after @p start (a restart's state; by default
-     * the beginning); throws NonConvergence when it stops.
+     * Run every nominal step after @p start (a restart's state, with the
+     * change of its last increment @p start_change if it has one; by
+     * default the beginning); throws NonConvergence when it stops.
      */
     void
     run(IncrementalProblem                             &problem,
         const std::function<void(const std::string &)> &print,
-        const StepperState                             &start = {});
+        const StepperState                             &start        = {},
+        const NonlinearProblem::Vector                 *start_change = nullptr);
+
+    /** The change of the unknowns over the last converged increment (for a
+     * checkpoint; meaningful where state().change_increment > 0). */
+    const NonlinearProblem::Vector &
+    last_change() const
+    {
+      return change;
+    }
 
     /** The state after the last completed nominal step (for a checkpoint
      * written at its end). */
@@ -145,6 +159,7 @@ namespace tribos
     NewtonSolver                   &newton;
     StepperTotals                   sums;
     StepperState                    progress;
+    NonlinearProblem::Vector        change;
   };
 } // namespace tribos
 

@@ -36,9 +36,12 @@ namespace tribos
     NewtonSolver(const Parameters::NonlinearSolver &parameters,
                  LinearSolver                      &linear_solver);
 
-    /** Solve the increment that ends at @p time. */
+    /** Solve the increment that ends at @p time, starting from the
+     * current solution plus @p predictor (if given). */
     IncrementReport
-    solve(NonlinearProblem &problem, const double time);
+    solve(NonlinearProblem                     &problem,
+          const double                          time,
+          const NonlinearProblem::Vector *const predictor = nullptr);
 
     /** Linear solves so far, failed attempts included. */
     unsigned int

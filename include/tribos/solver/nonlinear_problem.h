@@ -81,11 +81,14 @@ namespace tribos
 
     /**
      * Start solving the increment that ends at @p time from the current
-     * solution: remember it as the increment's start and prepare the
-     * increment's (inhomogeneous) constraints.
+     * solution: remember it as the increment's start, add @p predictor to
+     * the solution (if given: the first iterate's guess of the change),
+     * and prepare the increment's (inhomogeneous) constraints, which then
+     * take the solution to the increment's Dirichlet values from the
+     * predicted state.
      */
     virtual void
-    begin_increment(const double time) = 0;
+    begin_increment(const double time, const Vector *predictor) = 0;
 
     /**
      * Assemble at the current iterate: the residual always, the tangent and
