@@ -16,9 +16,11 @@ namespace tribos
 
 
   double
-  NewtonSolver::line_search(NonlinearProblem               &problem,
-                            const NonlinearProblem::Vector &update,
-                            const double                    residual)
+  NewtonSolver::line_search(
+    NonlinearProblem                          &problem,
+    const NonlinearProblem::Vector            &update,
+    const double                               residual,
+    std::optional<NonlinearProblem::Residual> &assembled)
   {
     const NonlinearProblem::Vector base = problem.solution();
     double                         step = 1;
@@ -27,17 +29,27 @@ namespace tribos
       problem.solution() = base;
       problem.solution().add(step, update);
       problem.solution_changed();
+      // The full step with the tangent: it is usually taken, and the
+      // next iteration's assembly would repeat this one (the paper's
+      // cylinder at 1.2M dofs: 165 assemblies for 86 Newton iterations).
       double trial = std::numeric_limits<double>::infinity();
       try
       {
-        trial = problem.assemble(false, false).free;
+        const auto r = problem.assemble(k == 0, false);
+        trial        = r.free;
+        if (k == 0)
+          assembled = r;
       }
       catch (const InvertedElement &)
       {
       }
       if (trial <= (1 - 1e-4 * step) * residual ||
           k >= parameters.max_line_search_steps)
+      {
+        if (k > 0)
+          assembled.reset();
         return step;
+      }
       step *= 0.5;
     }
   }
@@ -67,10 +79,14 @@ namespace tribos
     double                  previous_eta = 0.1;
     unsigned int            relaxed_at = 0, n_solves = 0;
 
+    // The system at the current iterate where the line search assembled
+    // it already (its full step, taken).
+    std::optional<NonlinearProblem::Residual> assembled;
     for (unsigned int iteration = 0;; ++iteration)
     {
       const bool first = (iteration == 0);
-      const auto r     = problem.assemble(true, first);
+      const auto r     = assembled ? *assembled : problem.assemble(true, first);
+      assembled.reset();
       if (!std::isfinite(r.free))
         throw NonConvergence("the residual is not finite");
       problem.after_assembly(iteration, r.free);
@@ -215,7 +231,7 @@ namespace tribos
       // update is still too large): there is nothing left to decrease.
       step_length = 1;
       if (p.line_search && !first && !residual_converged)
-        step_length = line_search(problem, update, r.free);
+        step_length = line_search(problem, update, r.free, assembled);
       else
       {
         problem.solution().add(1., update);

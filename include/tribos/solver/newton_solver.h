@@ -5,6 +5,7 @@
 #include <tribos/solver/linear_solver.h>
 #include <tribos/solver/nonlinear_problem.h>
 
+#include <optional>
 #include <set>
 #include <string>
 
@@ -54,12 +55,15 @@ namespace tribos
     /**
      * Backtracking from the current iterate along @p update until the
      * residual has fallen by the Armijo factor (or the halvings run out);
-     * returns the step length taken.
+     * returns the step length taken. The full step is assembled with its
+     * tangent: if it is taken (the usual case), @p assembled holds its
+     * residual and the next Newton iteration need not assemble again.
      */
     double
-    line_search(NonlinearProblem               &problem,
-                const NonlinearProblem::Vector &update,
-                const double                    residual);
+    line_search(NonlinearProblem                          &problem,
+                const NonlinearProblem::Vector            &update,
+                const double                               residual,
+                std::optional<NonlinearProblem::Residual> &assembled);
 
     const Parameters::NonlinearSolver &parameters;
     LinearSolver                      &linear_solver;
