@@ -106,6 +106,27 @@ namespace tribos
 
 
 
+  namespace
+  {
+    /**
+     * Zero a vector that the assembly adds to, with what an interrupted
+     * assembly left in it: entries added for other processes wait in the
+     * Trilinos vector until compress() sends them, and zeroing does not
+     * drop them. An assembly that threw (an inverted cell, a mortar
+     * element too large: both on every process) never reached its
+     * compress(), and the next one added them to its residual (a cutback
+     * under MPI retried from a state 8.4 off equilibrium).
+     */
+    void
+    clear(TrilinosWrappers::MPI::Vector &v)
+    {
+      v.compress(VectorOperation::add);
+      v = 0;
+    }
+  } // namespace
+
+
+
   template <int dim>
   double
   Problem<dim>::assemble_system(const bool                       with_matrix,
@@ -125,19 +146,19 @@ namespace tribos
     if (with_matrix)
     {
       matrix = 0;
-      rhs    = 0;
+      clear(rhs);
     }
-    free_residual               = 0;
-    full_residual               = 0;
+    clear(free_residual);
+    clear(full_residual);
     const double stabilization  = parameters.nonlinear_solver.stabilization;
     const bool   dynamic        = integrator && with_inertia;
     const bool   track_external = stabilization > 0 || integrator;
     if (stabilization > 0)
-      stabilization_forces = 0;
+      clear(stabilization_forces);
     if (track_external)
-      external_forces = 0;
+      clear(external_forces);
     if (dynamic)
-      inertia_forces = 0;
+      clear(inertia_forces);
     if (body_force)
       body_force->set_time(time);
     for (auto &[id, function] : neumann_functions)
@@ -565,7 +586,7 @@ namespace tribos
     if (contact)
     {
       TimerOutput::Scope contact_timer(timer, "contact assembly");
-      contact_forces = 0;
+      clear(contact_forces);
       contact->assemble(with_matrix,
                         constraints,
                         homogeneous_constraints,

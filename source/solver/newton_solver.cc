@@ -65,8 +65,14 @@ namespace tribos
     const double nan = std::numeric_limits<double>::quiet_NaN();
     problem.begin_increment(time, predictor);
 
-    NonlinearProblem::Vector update(problem.system_rhs());
-    const auto               floor = problem.round_off_floor();
+    // A new vector of the right-hand side's layout, not a copy: a copy
+    // would take along entries for other processes that an interrupted
+    // assembly left in it, and the constraints' distribute() would write
+    // them into the update (a cutback under MPI then started from a
+    // state its serial run never saw).
+    NonlinearProblem::Vector update;
+    update.reinit(problem.system_rhs());
+    const auto floor = problem.round_off_floor();
 
     IncrementReport report;
     double          reference   = 0;
