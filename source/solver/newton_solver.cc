@@ -80,7 +80,7 @@ namespace tribos
     // The undamped Newton correction (a line search shortens the step
     // taken, not the distance to the solution) and the update taken, per
     // kind of unknown.
-    NonlinearProblem::Norms correction{nan, 0}, taken{nan, 0};
+    NonlinearProblem::Norms correction{nan, 0}, taken{nan, 0}, earlier{nan, 0};
     double                  previous[2]  = {-1, -1};
     double                  previous_eta = 0.1;
     unsigned int            relaxed_at = 0, n_solves = 0;
@@ -122,10 +122,25 @@ namespace tribos
           r.free <= p.residual_tolerance * std::max(reference, r.force_scale) +
                       p.absolute_residual_tolerance;
         const auto change = problem.change_scale();
+        // The error of this iterate is the corrections still to come, not
+        // the one that led here: where the last two (both after the first
+        // iteration, which carries the Dirichlet increment, the last one a
+        // full step) contract at a rate rho < 1/2, they sum to at most
+        // rho / (1 - rho) times the last. Testing the last correction
+        // itself cost one more iteration wherever Newton had converged
+        // (the paper's cylinder at 1.2M dofs: 7 of 25 steps).
+        const auto error = [&](const double now, const double before)
+        {
+          const double rho = now / before;
+          if (step_length == 1 && iteration >= 3 && before > 0 && rho < 0.5)
+            return rho / (1 - rho) * now;
+          return now;
+        };
         const bool update_converged =
-          (taken.displacement <= p.increment_tolerance * change.displacement ||
+          (error(taken.displacement, earlier.displacement) <=
+             p.increment_tolerance * change.displacement ||
            change.displacement == 0) &&
-          taken.multipliers <=
+          error(taken.multipliers, earlier.multipliers) <=
             p.increment_tolerance * change.multipliers + floor.multipliers;
         // Round-off stagnation: accepted only below the stated bound.
         const bool stagnated =
@@ -243,6 +258,7 @@ namespace tribos
         problem.solution().add(1., update);
         problem.solution_changed();
       }
+      earlier            = correction;
       correction         = problem.norms(update);
       taken.displacement = step_length * correction.displacement;
       taken.multipliers  = step_length * correction.multipliers;
