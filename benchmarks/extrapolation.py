@@ -22,6 +22,8 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tests"))
+from tribos_test import sphere_on_block  # noqa: E402
 
 # name: (parameter file, overrides)
 CASES = {
@@ -44,6 +46,9 @@ CASES = {
                                 ["Contact/Friction coefficient=0"]),
     "sliding_blocks_3d": ("tests/sliding_blocks_3d.prm", []),
     "cattaneo_mindlin": ("tests/cattaneo_mindlin.prm", []),
+    # The 3D mortar sphere on a block, level 3 (mortar_3d_hertz's largest).
+    "sphere_on_block_mortar": ("parameters/hertz_3d.prm",
+                               sphere_on_block(3, "mortar")),
 }
 
 
