@@ -1,9 +1,9 @@
 """Lagrange multipliers through the three linear solves: UMFPACK's LU of
 the whole saddle-point system (Linear solver/Eliminate multipliers =
 false, the reference), the multipliers eliminated from a regularized copy
-with CHOLMOD and iterative refinement (the default), and FGMRES on the
-saddle-point system preconditioned by the elimination with GMRES + ML on
-the displacement-only matrix (Linear solver/Type = iterative). Each must
+with CHOLMOD and iterative refinement (the default), and GMRES on the
+saddle-point system preconditioned by the elimination with an ML V-cycle
+on the displacement-only matrix (Linear solver/Type = iterative). Each must
 give the reference's history within 1e-6 (Newton iterations may differ:
 the iterative solve is inexact Newton) and report the solve it used; on
 a frictional case the elimination must hand the unsymmetric system to LU.
@@ -50,8 +50,8 @@ for case, (prm, sets, direct) in CASES.items():
         used = solver_line(folder)
         expected = {"lu": "UMFPACK (SuiteSparse)",
                     "eliminated": direct + " (SuiteSparse)",
-                    "iterative": "FGMRES + eliminated multipliers "
-                                 "(GMRES + ML)"}[solve]
+                    "iterative": "GMRES + eliminated multipliers "
+                                 "(ML)"}[solve]
         check(used == expected, "%s, %s: solved with <%s> (expected <%s>)"
               % (case, solve, used, expected))
         if solve != "lu":
@@ -71,7 +71,7 @@ if mpi_available():
         run(tribos, prm, folder, sets + LM + SOLVES["iterative"],
             mpi_ranks=ranks)
         used = solver_line(folder)
-        check(used == "FGMRES + eliminated multipliers (GMRES + ML)",
+        check(used == "GMRES + eliminated multipliers (ML)",
               "%s, iterative, mpirun -np %d: solved with <%s>"
               % (case, ranks, used))
         strip_columns(folder + "/history.csv", folder + "/h.csv",

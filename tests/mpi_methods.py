@@ -12,7 +12,8 @@ nodes with master faces of another process, and the 3D blocks (node to
 segment) must see a slave node's master face pass to another process while
 sliding (summary.txt counts both). The 3D blocks, node to segment and
 mortar, also run each method with Linear solver/Type = iterative at np 2
-(GMRES + ML; FGMRES with the multipliers eliminated across processes)."""
+(GMRES + ML; with multipliers preconditioned by their elimination across
+processes)."""
 
 import sys
 
@@ -80,7 +81,7 @@ for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d",
                       "of process while sliding" % (scene, method, ranks,
                                                     changes))
 
-# The iterative solves under MPI (GMRES + ML; with multipliers FGMRES, the
+# The iterative solves under MPI (GMRES + ML; with multipliers GMRES, the
 # multipliers eliminated across processes): the serial direct history to
 # 1e-6 (inexact Newton iterates differently within its tolerance). The
 # augmented Lagrangian to 1e-4: each Uzawa update adds the penalty times

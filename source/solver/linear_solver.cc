@@ -32,10 +32,10 @@ namespace tribos
   /**
    * The iterative solve of a system with multipliers: the multipliers are
    * eliminated from a copy regularized like a penalty of 1/alpha times the
-   * local stiffness (DistributedElimination), GMRES with ML solves the
-   * displacement-only matrix approximately, and that is the
-   * preconditioner of FGMRES on the unmodified saddle-point system, which
-   * removes the regularization.
+   * local stiffness (DistributedElimination), and one V-cycle of ML on
+   * that displacement-only matrix, with the multipliers recovered from
+   * their rows, preconditions GMRES on the unmodified saddle-point system,
+   * which removes the regularization.
    */
   struct LinearSolver::Eliminated
   {
@@ -145,10 +145,8 @@ namespace tribos
     const double                          tolerance)
   {
     // A penalty of about 100 times the local stiffness, like the default
-    // penalty factors, which AMG handles; FGMRES removes it.
+    // penalty factors, which AMG handles; GMRES removes it.
     constexpr double alpha = 1e-2;
-    // The inner solves are a preconditioner: loose, FGMRES corrects them.
-    constexpr double inner_tolerance = 1e-2;
     if (!eliminated)
       eliminated = std::make_unique<Eliminated>();
     auto &e = *eliminated;
@@ -164,67 +162,26 @@ namespace tribos
     }
     e.elimination.eliminate(matrix, alpha);
 
-    // The inner solve: GMRES + ML on the eliminated matrix (solve_with_amg).
-    const auto inner = [&](Vector &y, const Vector &z)
-    {
-      try
-      {
-        solve_with_amg(e.elimination.matrix(),
-                       e.hierarchy,
-                       y,
-                       z,
-                       inner_tolerance);
-      }
-      catch (const SolverControl::NoConvergence &)
-      {
-        return false;
-      }
-      return true;
-    };
-
-    // FGMRES on the saddle-point system, preconditioned by the
-    // elimination.
-    struct Preconditioner
-    {
-      std::function<void(Vector &, const Vector &)> function;
-      void
-      vmult(Vector &y, const Vector &z) const
-      {
-        function(y, z);
-      }
-    };
-    // An inner solve that fails (with a new hierarchy: solve_with_amg) ends
-    // the solve; going on would rebuild ML at every FGMRES iteration.
-    const Preconditioner P{
-      [&](Vector &y, const Vector &z)
-      {
-        if (!e.elimination.apply(z, y, inner))
-          throw NonConvergence(
-            "GMRES/AMG on the system with the multipliers eliminated did "
-            "not converge in Linear solver/Maximum iterations; try Linear "
-            "solver/Type = direct");
-      }};
-    const double         relative = std::max(tolerance, parameters.tolerance);
-    SolverControl        control(std::min(parameters.max_iterations, 200u),
-                          relative * rhs.l2_norm(),
-                          false,
-                          false);
-    SolverFGMRES<Vector> outer(control,
-                               SolverFGMRES<Vector>::AdditionalData(200));
     x = 0;
     try
     {
-      outer.solve(matrix, x, rhs, P);
+      solve_with_amg(matrix,
+                     e.elimination.matrix(),
+                     e.hierarchy,
+                     x,
+                     rhs,
+                     std::max(tolerance, parameters.tolerance),
+                     &e.elimination);
     }
     catch (const SolverControl::NoConvergence &failure)
     {
-      throw NonConvergence("FGMRES with the multipliers eliminated did not "
+      throw NonConvergence("GMRES with the multipliers eliminated did not "
                            "converge in " +
                            std::to_string(failure.last_step) +
-                           " iterations; try Linear solver/Type = direct");
+                           " iterations (Linear solver/Maximum iterations); "
+                           "try Type = direct");
     }
-    total_refinements += control.last_step();
-    last = "FGMRES + eliminated multipliers (GMRES + ML)";
+    last = "GMRES + eliminated multipliers (ML)";
   }
 
 
@@ -328,11 +285,41 @@ namespace tribos
 
   void
   LinearSolver::solve_with_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                               const TrilinosWrappers::SparseMatrix &reduced,
                                Hierarchy                            &h,
                                Vector                               &x,
                                const Vector                         &rhs,
-                               const double                          relative)
+                               const double                          relative,
+                               DistributedElimination *elimination)
   {
+    // One V-cycle of h's ML: on the system, or, with multipliers, on the
+    // eliminated matrix, the multipliers then recovered from their rows.
+    // Either way a fixed linear operator, which GMRES needs (an inner
+    // Krylov solve to a tolerance would need FGMRES: the elimination's
+    // first version did that, and took 1.6 times as long; doc/scaling.md).
+    struct Preconditioner
+    {
+      const Hierarchy        &h;
+      DistributedElimination *elimination;
+      void
+      vmult(Vector &y, const Vector &z) const
+      {
+        if (elimination == nullptr)
+        {
+          h.amg->vmult(y, z);
+          return;
+        }
+        elimination->apply(z,
+                           y,
+                           [this](Vector &y_reduced, const Vector &z_reduced)
+                           {
+                             h.amg->vmult(y_reduced, z_reduced);
+                             return true;
+                           });
+      }
+    };
+    const Preconditioner preconditioner{h, elimination};
+
     // Right preconditioning: GMRES then measures the true residual
     // |rhs - A x|, which the tolerance (relative to |rhs|, from inexact
     // Newton) is about; left preconditioning measures the AMG-scaled one,
@@ -345,7 +332,7 @@ namespace tribos
                                                                      true));
       try
       {
-        solver.solve(matrix, x, rhs, *h.amg);
+        solver.solve(matrix, x, rhs, preconditioner);
       }
       catch (const SolverControl::NoConvergence &e)
       {
@@ -375,7 +362,7 @@ namespace tribos
         x = start;
       }
     }
-    h.amg = make_amg(matrix);
+    h.amg = make_amg(reduced);
     try
     {
       h.iterations = gmres(parameters.max_iterations);
@@ -404,6 +391,7 @@ namespace tribos
     try
     {
       solve_with_amg(matrix,
+                     matrix,
                      hierarchy,
                      x,
                      rhs,

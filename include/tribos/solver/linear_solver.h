@@ -17,6 +17,8 @@ namespace tribos
 {
   using namespace dealii;
 
+  class DistributedElimination;
+
   /**
    * The linear solve of a Newton iteration, chosen by Linear solver (Type
    * = auto: iterative for large 3D systems, direct otherwise):
@@ -29,9 +31,9 @@ namespace tribos
    * - iterative: GMRES preconditioned by ML algebraic multigrid with the
    *   near-null space it is given (the rigid-body modes), the tolerance
    *   given by the Newton solver (inexact Newton); with multipliers
-   *   FGMRES on the whole system, preconditioned by their elimination
-   *   (DistributedElimination, any number of processes) with GMRES + ML
-   *   inside.
+   *   GMRES on the whole system, preconditioned by their elimination
+   *   (DistributedElimination, any number of processes) with one ML
+   *   V-cycle on the displacement-only matrix.
    *
    * A failure (singular matrix, GMRES without convergence) throws
    * NonConvergence, which cuts the increment.
@@ -157,17 +159,22 @@ namespace tribos
                                const double        tolerance);
 
     /**
-     * GMRES with the AMG hierarchy @p h on @p matrix to @p relative |rhs|:
-     * @p h is kept while its solves stay within twice the iterations of
-     * its first one (at least 20), rebuilt when one needs more or it has
-     * none. Throws SolverControl::NoConvergence if a new hierarchy fails.
+     * GMRES on @p matrix to @p relative |rhs|, preconditioned by one
+     * V-cycle of the AMG hierarchy @p h of @p reduced: @p matrix itself,
+     * or with multipliers the matrix @p elimination eliminated them from,
+     * which then gives the multipliers. @p h is kept while its solves stay
+     * within twice the iterations of its first one (at least 20), rebuilt
+     * when one needs more or it has none. Throws
+     * SolverControl::NoConvergence if a new hierarchy fails.
      */
     void
     solve_with_amg(const TrilinosWrappers::SparseMatrix &matrix,
+                   const TrilinosWrappers::SparseMatrix &reduced,
                    Hierarchy                            &h,
                    Vector                               &x,
                    const Vector                         &rhs,
-                   const double                          relative);
+                   const double                          relative,
+                   DistributedElimination               *elimination = nullptr);
 
     /** ML on @p matrix with the near-null space (on its rows). */
     std::unique_ptr<TrilinosWrappers::PreconditionAMG>

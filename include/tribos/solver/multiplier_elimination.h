@@ -49,7 +49,7 @@ namespace tribos
    * penalty of k / alpha on the constraint. The modified matrix P differs
    * from A in those entries only, so P^-1 preconditions A well: iterative
    * refinement x += P^-1 (b - A x) converges to A's solution at a rate of
-   * about alpha, and FGMRES faster.
+   * about alpha, and GMRES faster.
    */
   class MultiplierElimination
   {
