@@ -56,13 +56,15 @@ namespace tribos
      * Backtracking from the current iterate along @p update until the
      * residual has fallen by the Armijo factor (or the halvings run out);
      * returns the step length taken. The full step is assembled with its
-     * tangent: if it is taken (the usual case), @p assembled holds its
-     * residual and the next Newton iteration need not assemble again.
+     * tangent (@p with_tangent; not where it is expected to converge): if
+     * it is taken (the usual case), @p assembled holds its residual and
+     * the next Newton iteration need not assemble again.
      */
     double
     line_search(NonlinearProblem                          &problem,
                 const NonlinearProblem::Vector            &update,
                 const double                               residual,
+                const bool                                 with_tangent,
                 std::optional<NonlinearProblem::Residual> &assembled);
 
     const Parameters::NonlinearSolver &parameters;
