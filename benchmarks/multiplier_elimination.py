@@ -18,10 +18,9 @@ difference of the final contact force (history.csv) to the LU run's.
         [--out doc/data/multiplier_iterative.csv]
 
 runs instead the 3D Hertz with multipliers and Linear solver/Type =
-iterative (FGMRES preconditioned by the elimination, GMRES + ML inside) at
-Contact refinements 3, 4 and 5, once each: unknowns, Newton iterations,
-FGMRES iterations (summary.txt's refinement steps), inner GMRES
-iterations, AMG setups, wall time, peak memory."""
+iterative (GMRES preconditioned by the elimination, one ML V-cycle inside)
+at Contact refinements 3, 4 and 5, once each: unknowns, Newton
+iterations, GMRES iterations, AMG setups, wall time, peak memory."""
 
 import argparse
 import csv
@@ -157,8 +156,7 @@ def iterative(args):
             counters = {}
             with open(os.path.join(folder, "summary.txt")) as f:
                 for line in f:
-                    for key in ("linear iterations", "AMG setups",
-                                "refinement steps"):
+                    for key in ("linear iterations", "AMG setups"):
                         if line.startswith(key):
                             counters[key] = int(line.split()[-1])
             calls, solve = sections.get("linear solve", (0, 0.0))
@@ -167,7 +165,6 @@ def iterative(args):
                 "level": level, "dofs": values.get("dofs", 0),
                 "multipliers": values.get("multipliers", 0),
                 "newton_iterations": newton,
-                "fgmres_iterations": counters.get("refinement steps", 0),
                 "gmres_iterations": counters.get("linear iterations", 0),
                 "amg_setups": counters.get("AMG setups", 0),
                 "wall": w, "t_linear_solve": solve,
@@ -176,11 +173,10 @@ def iterative(args):
                 "solver": values.get("linear solver", ""),
             }
             rows.append(row)
-            print("L%d %7d dofs + %5d multipliers: %2d Newton, %.1f FGMRES "
-                  "and %.1f GMRES iterations per solve, %d AMG setups, "
+            print("L%d %7d dofs + %5d multipliers: %2d Newton, %.1f GMRES "
+                  "iterations per solve, %d AMG setups, "
                   "%.1f s (%.2f s per solve), %.0f MB  [%s]" % (
                       level, row["dofs"], row["multipliers"], newton,
-                      row["fgmres_iterations"] / max(newton, 1),
                       row["gmres_iterations"] / max(newton, 1),
                       row["amg_setups"], w, row["s_per_solve"], rss,
                       row["solver"]), flush=True)
