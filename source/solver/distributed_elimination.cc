@@ -377,7 +377,7 @@ namespace tribos
 
 
 
-  bool
+  void
   DistributedElimination::apply(const Vector       &z,
                                 Vector             &y,
                                 const ReducedSolve &solve)
@@ -412,9 +412,7 @@ namespace tribos
     f.add(rows, values);
     f.compress(VectorOperation::add);
 
-    y_reduced = 0;
-    if (!solve(y_reduced, f))
-      return false;
+    solve(y_reduced, f);
     y_ghosted.trilinos_vector().Import(y_reduced.trilinos_vector(),
                                        *import,
                                        Insert);
@@ -438,6 +436,5 @@ namespace tribos
           yl[c] += b.inverse[c * size + d] * q[d];
       }
     }
-    return true;
   }
 } // namespace tribos

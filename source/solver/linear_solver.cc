@@ -166,7 +166,6 @@ namespace tribos
     try
     {
       solve_with_amg(matrix,
-                     e.elimination.matrix(),
                      e.hierarchy,
                      x,
                      rhs,
@@ -285,7 +284,6 @@ namespace tribos
 
   void
   LinearSolver::solve_with_amg(const TrilinosWrappers::SparseMatrix &matrix,
-                               const TrilinosWrappers::SparseMatrix &reduced,
                                Hierarchy                            &h,
                                Vector                               &x,
                                const Vector                         &rhs,
@@ -312,10 +310,7 @@ namespace tribos
         elimination->apply(z,
                            y,
                            [this](Vector &y_reduced, const Vector &z_reduced)
-                           {
-                             h.amg->vmult(y_reduced, z_reduced);
-                             return true;
-                           });
+                           { h.amg->vmult(y_reduced, z_reduced); });
       }
     };
     const Preconditioner preconditioner{h, elimination};
@@ -362,7 +357,7 @@ namespace tribos
         x = start;
       }
     }
-    h.amg = make_amg(reduced);
+    h.amg = make_amg(elimination != nullptr ? elimination->matrix() : matrix);
     try
     {
       h.iterations = gmres(parameters.max_iterations);
@@ -391,7 +386,6 @@ namespace tribos
     try
     {
       solve_with_amg(matrix,
-                     matrix,
                      hierarchy,
                      x,
                      rhs,

@@ -97,11 +97,11 @@ namespace tribos
     // paper's cylinder at 1.2M dofs: 7 of 25 steps).
     const auto update_test = [&](const NonlinearProblem::Norms &last,
                                  const NonlinearProblem::Norms &before,
+                                 const NonlinearProblem::Norms &change,
                                  const bool                     full_step,
                                  const unsigned int             iteration)
     {
-      const auto change = problem.change_scale();
-      const auto error  = [&](const double now, const double earlier)
+      const auto error = [&](const double now, const double earlier)
       {
         const double rho = now / earlier;
         if (full_step && iteration >= 3 && earlier > 0 && rho < 0.5)
@@ -126,8 +126,9 @@ namespace tribos
     bool residual_first = false;
     for (unsigned int iteration = 0;; ++iteration)
     {
-      const bool first       = (iteration == 0);
-      const bool with_matrix = !(residual_first && !assembled);
+      const bool first = (iteration == 0);
+      // (The line search assembles no tangent where residual_first is set.)
+      const bool with_matrix = !residual_first;
       const auto r =
         assembled ? *assembled : problem.assemble(with_matrix, first);
       assembled.reset();
@@ -159,10 +160,10 @@ namespace tribos
         residual_converged =
           r.free <= p.residual_tolerance * std::max(reference, r.force_scale) +
                       p.absolute_residual_tolerance;
-        const bool update_converged =
-          update_test(taken, earlier, step_length == 1, iteration);
-        // Round-off stagnation: accepted only below the stated bound.
         const auto change = problem.change_scale();
+        const bool update_converged =
+          update_test(taken, earlier, change, step_length == 1, iteration);
+        // Round-off stagnation: accepted only below the stated bound.
         const bool stagnated =
           correction.displacement <= 1e-12 * change.displacement &&
           correction.multipliers <=
@@ -274,9 +275,13 @@ namespace tribos
       // increment) nor once the residual is at its tolerance (only the
       // update is still too large): there is nothing left to decrease.
       const auto next_correction = problem.norms(update);
-      residual_first =
-        !first && update_test(next_correction, correction, true, iteration + 1);
-      step_length = 1;
+      // (The change so far before this update: near convergence the same.)
+      residual_first = !first && update_test(next_correction,
+                                             correction,
+                                             problem.change_scale(),
+                                             true,
+                                             iteration + 1);
+      step_length    = 1;
       if (p.line_search && !first && !residual_converged)
         step_length =
           line_search(problem, update, r.free, !residual_first, assembled);

@@ -41,9 +41,9 @@ namespace tribos
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    /** Solves the eliminated system: y, right-hand side (displacement
-     * rows). */
-    using ReducedSolve = std::function<bool(Vector &, const Vector &)>;
+    /** Solves the eliminated system, or approximates its solution: y
+     * (overwritten), right-hand side (displacement rows). */
+    using ReducedSolve = std::function<void(Vector &, const Vector &)>;
 
     /**
      * Prepare for @p A's pattern, whose unknowns from @p first on are
@@ -68,8 +68,8 @@ namespace tribos
     }
 
     /** @p y = P^-1 @p z (system vectors), the eliminated system solved by
-     * @p solve. False if @p solve fails. */
-    bool
+     * @p solve. */
+    void
     apply(const Vector &z, Vector &y, const ReducedSolve &solve);
 
   private:

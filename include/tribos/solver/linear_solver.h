@@ -160,8 +160,8 @@ namespace tribos
 
     /**
      * GMRES on @p matrix to @p relative |rhs|, preconditioned by one
-     * V-cycle of the AMG hierarchy @p h of @p reduced: @p matrix itself,
-     * or with multipliers the matrix @p elimination eliminated them from,
+     * V-cycle of the AMG hierarchy @p h: of @p matrix itself, or with
+     * multipliers of the matrix @p elimination eliminated them from,
      * which then gives the multipliers. @p h is kept while its solves stay
      * within twice the iterations of its first one (at least 20), rebuilt
      * when one needs more or it has none. Throws
@@ -169,7 +169,6 @@ namespace tribos
      */
     void
     solve_with_amg(const TrilinosWrappers::SparseMatrix &matrix,
-                   const TrilinosWrappers::SparseMatrix &reduced,
                    Hierarchy                            &h,
                    Vector                               &x,
                    const Vector                         &rhs,
