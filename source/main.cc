@@ -13,10 +13,14 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace
@@ -44,11 +48,114 @@ namespace
          "Exit status: 0 success, 1 bad input or error, 2 no convergence.\n";
   }
 
+  /** The exit status and the message of a failure. */
+  std::pair<int, std::string>
+  describe(const std::exception_ptr &failure)
+  {
+    try
+    {
+      std::rethrow_exception(failure);
+    }
+    catch (const tribos::NonConvergence &error)
+    {
+      return {2, std::string("NO CONVERGENCE: ") + error.what()};
+    }
+    catch (const dealii::ExceptionBase &error)
+    {
+      std::ostringstream message;
+      error.print_info(message);
+      return {1, "ERROR: " + message.str()};
+    }
+    catch (const std::exception &error)
+    {
+      return {1, std::string("ERROR: ") + error.what()};
+    }
+    catch (...)
+    {
+      return {1, "ERROR: unknown exception"};
+    }
+  }
+
+
+
+  /**
+   * Makes sure that a failure ends the run under MPI, without a hang.
+   *
+   * Most failures are raised on every process alike (bad input, a
+   * non-convergence the processes agreed on); the first process then
+   * prints the message and every process returns the exit status. A
+   * failure raised on some processes only (a file one of them cannot
+   * write) would leave the others waiting in their next collective step,
+   * and the failed ones too in the collective steps of the problem's
+   * destructor, with the message unprinted if the first process is not
+   * among them. So a process that failed first meets the others on a
+   * barrier of a communicator of its own (the others may be inside a
+   * collective step on MPI_COMM_WORLD), before anything is destroyed: if
+   * not every process arrives within a few seconds, it prints its message
+   * itself and aborts the run with the failure's exit status.
+   */
+  class FailureHandshake
+  {
+  public:
+    FailureHandshake()
+    {
+      MPI_Comm_dup(MPI_COMM_WORLD, &communicator);
+    }
+
+    ~FailureHandshake()
+    {
+      MPI_Comm_free(&communicator);
+    }
+
+    /** Returns if every process failed too; aborts the run otherwise. */
+    void
+    meet(const std::exception_ptr &failure)
+    {
+      if (met)
+        return;
+      met             = true;
+      int rank        = 0;
+      int n_processes = 1;
+      MPI_Comm_rank(communicator, &rank);
+      MPI_Comm_size(communicator, &n_processes);
+      if (n_processes == 1)
+        return;
+      MPI_Request request;
+      MPI_Ibarrier(communicator, &request);
+      int        everyone = 0;
+      const auto start    = std::chrono::steady_clock::now();
+      while (!everyone && std::chrono::steady_clock::now() - start <
+                            std::chrono::seconds(wait_seconds))
+      {
+        MPI_Test(&request, &everyone, MPI_STATUS_IGNORE);
+        if (!everyone)
+          std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      if (everyone)
+        return;
+      const auto [status, message] = describe(failure);
+      std::cerr << "\ntribos: " << message << "\n(on process " << rank << " of "
+                << n_processes
+                << " only: the others did not fail; aborting the run)"
+                << std::endl;
+      MPI_Abort(MPI_COMM_WORLD, status);
+    }
+
+  private:
+    /** Long enough for processes that fail together to meet. */
+    static constexpr int wait_seconds = 10;
+    MPI_Comm             communicator;
+    bool                 met = false;
+  };
+
+
+
   template <int dim>
   void
   run(dealii::ParameterHandler &prm,
       const std::string        &filename,
-      const std::string        &restart)
+      const std::string        &restart,
+      FailureHandshake         &handshake)
   {
     tribos::Parameters::AllParameters parameters;
     parameters.parse_parameters(prm);
@@ -79,6 +186,7 @@ namespace
         catch (...)
         {
           failure = std::current_exception();
+          handshake.meet(failure);
         }
       }
       if (failure)
@@ -126,7 +234,8 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc,
                                        argv,
                                        numbers::invalid_unsigned_int);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool       root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  FailureHandshake handshake;
 
   try
   {
@@ -208,31 +317,18 @@ main(int argc, char **argv)
       tribos::Parameters::read_dimension(filename, overrides);
     tribos::Parameters::read_input(prm, filename, overrides);
     if (dim == 2)
-      run<2>(prm, filename, restart);
+      run<2>(prm, filename, restart, handshake);
     else
-      run<3>(prm, filename, restart);
+      run<3>(prm, filename, restart, handshake);
   }
-  catch (const tribos::NonConvergence &failure)
+  catch (...)
   {
+    const std::exception_ptr failure = std::current_exception();
+    handshake.meet(failure);
+    const auto [status, message] = describe(failure);
     if (root)
-      std::cerr << "\ntribos: NO CONVERGENCE: " << failure.what() << std::endl;
-    return 2;
-  }
-  catch (const dealii::ExceptionBase &error)
-  {
-    if (root)
-    {
-      std::cerr << "\ntribos: ERROR: ";
-      error.print_info(std::cerr);
-      std::cerr << std::endl;
-    }
-    return 1;
-  }
-  catch (const std::exception &error)
-  {
-    if (root)
-      std::cerr << "\ntribos: ERROR: " << error.what() << std::endl;
-    return 1;
+      std::cerr << "\ntribos: " << message << std::endl;
+    return status;
   }
   return 0;
 }

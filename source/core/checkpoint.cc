@@ -30,10 +30,17 @@ namespace tribos
                   dealii::ExcMessage("Cannot write the checkpoint <" +
                                      (temporary / "state.bin").string() +
                                      ">."));
-      boost::archive::binary_oarchive archive(out);
-      const std::string               header  = magic;
-      const unsigned int              version = format;
-      archive << header << version << *this;
+      {
+        boost::archive::binary_oarchive archive(out);
+        const std::string               header  = magic;
+        const unsigned int              version = format;
+        archive << header << version << *this;
+      }
+      out.flush();
+      AssertThrow(out,
+                  dealii::ExcMessage("Cannot write the checkpoint <" +
+                                     (temporary / "state.bin").string() +
+                                     "> (disk full?)."));
     }
     // The old checkpoint goes only once the new one is complete.
     const fs::path old = target.string() + ".old";

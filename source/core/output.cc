@@ -1,3 +1,4 @@
+#include <tribos/base/write_atomically.h>
 #include <tribos/core/problem.h>
 
 #include <deal.II/base/mpi.h>
@@ -10,10 +11,11 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <sstream>
 
 namespace tribos
 {
@@ -21,18 +23,37 @@ namespace tribos
   {
     const char *const axis = "xyz";
 
-    /** Write through a temporary file so that no half-written file remains. */
-    template <typename Writer>
+    /**
+     * Runs @p work on every process and fails on all of them if it failed
+     * on any: the output files are opened by the first process only, and a
+     * failure there alone would leave the others waiting in the next
+     * collective step.
+     */
     void
-    write_atomically(const std::string &filename, const Writer &writer)
+    on_every_process(const MPI_Comm               communicator,
+                     const std::function<void()> &work)
     {
-      const std::string temporary = filename + ".part";
+      std::string failure;
+      try
       {
-        std::ofstream out(temporary);
-        AssertThrow(out, ExcMessage("Cannot write <" + temporary + ">."));
-        writer(out);
+        work();
       }
-      std::filesystem::rename(temporary, filename);
+      catch (const ExceptionBase &error)
+      {
+        std::ostringstream message;
+        error.print_info(message);
+        failure = message.str();
+        // print_info indents and ends the message; main() does it again.
+        failure.erase(0, failure.find_first_not_of(" "));
+        failure.erase(failure.find_last_not_of("\n") + 1);
+      }
+      catch (const std::exception &error)
+      {
+        failure = error.what();
+      }
+      for (const auto &message :
+           Utilities::MPI::all_gather(communicator, failure))
+        AssertThrow(message.empty(), ExcMessage(message));
     }
   } // namespace
 
@@ -44,37 +65,42 @@ namespace tribos
   {
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
     const std::string dir = parameters.output.directory;
-    if (root)
-    {
-      std::error_code error;
-      std::filesystem::create_directories(dir, error);
-      AssertThrow(!error && std::filesystem::is_directory(dir),
-                  ExcMessage("Parameter <Output/Directory> = <" + dir +
-                             ">: cannot create the directory (" +
-                             error.message() + ")."));
-      // Remove the series files of an earlier run, so that the folder
-      // holds one consistent run; other files are left alone.
-      // A restart keeps those of the steps up to its checkpoint.
-      for (const auto &entry : std::filesystem::directory_iterator(dir))
+    on_every_process(
+      mpi_communicator,
+      [&]()
       {
-        const std::string name = entry.path().filename().string();
-        for (const std::string prefix : {"solution-", "contact-"})
-          if (name.rfind(prefix, 0) == 0)
+        if (root)
+        {
+          std::error_code error;
+          std::filesystem::create_directories(dir, error);
+          AssertThrow(!error && std::filesystem::is_directory(dir),
+                      ExcMessage("Parameter <Output/Directory> = <" + dir +
+                                 ">: cannot create the directory (" +
+                                 error.message() + ")."));
+          // Remove the series files of an earlier run, so that the folder
+          // holds one consistent run; other files are left alone.
+          // A restart keeps those of the steps up to its checkpoint.
+          for (const auto &entry : std::filesystem::directory_iterator(dir))
           {
-            unsigned int step = 0;
-            try
-            {
-              step = std::stoul(name.substr(prefix.size(), 5));
-            }
-            catch (...)
-            {
-            }
-            if (!restart || step > restart->stepper.step)
-              std::filesystem::remove(entry.path());
+            const std::string name = entry.path().filename().string();
+            for (const std::string prefix : {"solution-", "contact-"})
+              if (name.rfind(prefix, 0) == 0)
+              {
+                unsigned int step = 0;
+                try
+                {
+                  step = std::stoul(name.substr(prefix.size(), 5));
+                }
+                catch (...)
+                {
+                }
+                if (entry.is_regular_file() &&
+                    (!restart || step > restart->stepper.step))
+                  std::filesystem::remove(entry.path());
+              }
           }
-      }
-    }
-    MPI_Barrier(mpi_communicator);
+        }
+      });
 
     std::vector<std::string> columns = {"step",
                                         "increment",
@@ -165,21 +191,28 @@ namespace tribos
     }
     // A restart continues the earlier run's files after its checkpoint.
     const long keep = restart ? long(restart->stepper.totals.n_increments) : -1;
-    history_csv =
-      std::make_unique<CsvWriter>(dir + "/history.csv", columns, root, keep);
-    convergence_csv =
-      std::make_unique<CsvWriter>(dir + "/convergence.csv",
-                                  std::vector<std::string>{"step",
-                                                           "increment",
-                                                           "time",
-                                                           "iteration",
-                                                           "residual",
-                                                           "relative_residual",
-                                                           "update_norm",
-                                                           "line_search_step",
-                                                           "order"},
-                                  root,
-                                  keep);
+    on_every_process(mpi_communicator,
+                     [&]()
+                     {
+                       history_csv =
+                         std::make_unique<CsvWriter>(dir + "/history.csv",
+                                                     columns,
+                                                     root,
+                                                     keep);
+                       convergence_csv = std::make_unique<CsvWriter>(
+                         dir + "/convergence.csv",
+                         std::vector<std::string>{"step",
+                                                  "increment",
+                                                  "time",
+                                                  "iteration",
+                                                  "residual",
+                                                  "relative_residual",
+                                                  "update_norm",
+                                                  "line_search_step",
+                                                  "order"},
+                         root,
+                         keep);
+                     });
   }
 
 

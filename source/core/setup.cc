@@ -28,10 +28,7 @@ namespace tribos
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    , timer(mpi_communicator,
-            pcout,
-            TimerOutput::never,
-            TimerOutput::wall_times)
+    , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation_storage(
         parameters.parallel.mesh == Parameters::Parallel::Mesh::shared ?
           std::unique_ptr<parallel::TriangulationBase<dim>>(

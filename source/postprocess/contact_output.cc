@@ -1,11 +1,10 @@
+#include <tribos/base/write_atomically.h>
 #include <tribos/postprocess/contact_output.h>
 
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <map>
 
@@ -240,25 +239,24 @@ namespace tribos
               [](const auto &a, const auto &b)
               { return a[0] != b[0] ? a[0] < b[0] : a[15] < b[15]; });
 
-    const std::string temporary = filename + ".part";
-    {
-      std::ofstream out(temporary);
-      AssertThrow(out, ExcMessage("Cannot write <" + temporary + ">."));
-      out << "pair,body,x,y,z,CPRESS,CSHEAR_x,CSHEAR_y,CSHEAR_z,COPEN,CSLIP,"
-             "CSTATUS,X,Y,Z\n"
-          << std::setprecision(15);
-      for (const auto &row : all)
+    write_atomically(
+      filename,
+      [&](std::ostream &out)
       {
-        out << int(row[0]) << ',' << int(row[1]);
-        for (unsigned int c = 2; c < 11; ++c)
-          out << ',' << row[c];
-        out << ',' << int(row[11]);
-        for (unsigned int c = 12; c < 15; ++c)
-          out << ',' << row[c];
-        out << '\n';
-      }
-    }
-    std::rename(temporary.c_str(), filename.c_str());
+        out << "pair,body,x,y,z,CPRESS,CSHEAR_x,CSHEAR_y,CSHEAR_z,COPEN,CSLIP,"
+               "CSTATUS,X,Y,Z\n"
+            << std::setprecision(15);
+        for (const auto &row : all)
+        {
+          out << int(row[0]) << ',' << int(row[1]);
+          for (unsigned int c = 2; c < 11; ++c)
+            out << ',' << row[c];
+          out << ',' << int(row[11]);
+          for (unsigned int c = 12; c < 15; ++c)
+            out << ',' << row[c];
+          out << '\n';
+        }
+      });
   }
 
 

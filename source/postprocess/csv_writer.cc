@@ -13,7 +13,8 @@ namespace tribos
                        const std::vector<std::string> &columns,
                        const bool                      active,
                        const long                      keep_through_increment)
-    : columns(columns)
+    : filename(filename)
+    , columns(columns)
     , active(active)
   {
     if (!active)
@@ -48,6 +49,9 @@ namespace tribos
     for (const auto &line : kept)
       file << line << '\n';
     file << std::flush;
+    AssertThrow(file,
+                dealii::ExcMessage("Cannot write to <" + filename +
+                                   "> (disk full?)."));
   }
 
 
@@ -72,5 +76,8 @@ namespace tribos
         row << values[i];
     }
     file << row.str() << '\n' << std::flush;
+    AssertThrow(file,
+                dealii::ExcMessage("Cannot write to <" + filename +
+                                   "> (disk full?)."));
   }
 } // namespace tribos

@@ -367,7 +367,13 @@ namespace tribos
     const Parameters::AllParameters &parameters;
     MPI_Comm                         mpi_communicator;
     ConditionalOStream               pcout;
-    TimerOutput                      timer;
+    /**
+     * This process's own section times (summary.txt shows the first
+     * process's). On the whole communicator every section's end would be a
+     * collective step, also while an exception raised on one process only
+     * unwinds, and the run would hang there instead of ending.
+     */
+    TimerOutput timer;
 
     /** The mesh: parallel::shared or parallel::fullydistributed
      * (Parallel/Mesh). */

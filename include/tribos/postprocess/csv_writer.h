@@ -37,6 +37,7 @@ namespace tribos
     }
 
   private:
+    const std::string              filename;
     const std::vector<std::string> columns;
     const bool                     active;
     std::ofstream                  file;
