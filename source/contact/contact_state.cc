@@ -1,0 +1,361 @@
+#include <tribos/base/exceptions.h>
+#include <tribos/contact/contact_handler.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cstring>
+#include <set>
+#include <type_traits>
+
+// ContactHandler's state between increments: what the search and the
+// assembly (contact_handler.cc) leave in the contact pairs is committed,
+// restored after a cutback, written to and read from checkpoints,
+// augmented and watched for chattering here.
+namespace tribos
+{
+  template <int dim>
+  std::vector<std::pair<CellId::binary_type, double>>
+  ContactHandler<dim>::take_work()
+  {
+    std::vector<std::pair<CellId::binary_type, double>> work;
+    for (auto &pair : contact_pairs)
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        if (pair.owned[k] && pair.work[k] > 0)
+        {
+          const auto &node = pair.slave->nodes()[k];
+          work.emplace_back(pair.slave->faces()[node.faces[0]].cell,
+                            pair.work[k]);
+          pair.work[k] = 0;
+        }
+    return work;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactHandler<dim>::frictional_dissipation() const
+  {
+    double sum = 0;
+    for (const auto &pair : contact_pairs)
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        if (pair.owned[k] && pair.current[k].closed())
+        {
+          const auto &r = pair.current[k].result;
+          sum += norm(r.traction) * r.slip_increment * r.area;
+        }
+    return Utilities::MPI::sum(sum, mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  std::vector<char>
+  ContactHandler<dim>::committed_state() const
+  {
+    static_assert(std::is_trivially_copyable_v<NodeState>,
+                  "NodeState is written as bytes");
+    // Per owned node: pair, node, state; gathered from every process.
+    std::vector<char> mine;
+    const auto        append = [&mine](const void *data, const size_t size)
+    {
+      const char *bytes = static_cast<const char *>(data);
+      mine.insert(mine.end(), bytes, bytes + size);
+    };
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+      for (unsigned int k = 0; k < contact_pairs[p].n_nodes(); ++k)
+        if (contact_pairs[p].owned[k])
+        {
+          append(&p, sizeof(p));
+          append(&k, sizeof(k));
+          append(&contact_pairs[p].committed[k], sizeof(NodeState));
+        }
+    std::vector<std::vector<NodeState>> states(contact_pairs.size());
+    std::vector<char>                   ever_near(contact_pairs.size(), 0);
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+    {
+      states[p].resize(contact_pairs[p].n_nodes());
+      ever_near[p] = Utilities::MPI::logical_or(contact_pairs[p].ever_near,
+                                                mpi_communicator);
+    }
+    const size_t record = 2 * sizeof(unsigned int) + sizeof(NodeState);
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, mine))
+      for (size_t offset = 0; offset + record <= part.size(); offset += record)
+      {
+        unsigned int p, k;
+        std::memcpy(&p, part.data() + offset, sizeof(p));
+        std::memcpy(&k, part.data() + offset + sizeof(p), sizeof(k));
+        std::memcpy(&states[p][k],
+                    part.data() + offset + 2 * sizeof(p),
+                    sizeof(NodeState));
+      }
+
+    // Layout: number of pairs; per pair the number of nodes, ever_near and
+    // the states.
+    std::vector<char> result;
+    const auto        put = [&result](const void *data, const size_t size)
+    {
+      const char *bytes = static_cast<const char *>(data);
+      result.insert(result.end(), bytes, bytes + size);
+    };
+    const unsigned int n_pairs = contact_pairs.size();
+    put(&n_pairs, sizeof(n_pairs));
+    for (unsigned int p = 0; p < n_pairs; ++p)
+    {
+      const unsigned int n = states[p].size();
+      put(&n, sizeof(n));
+      put(&ever_near[p], 1);
+      put(states[p].data(), n * sizeof(NodeState));
+    }
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::load_committed_state(const std::vector<char> &state,
+                                            const double             time)
+  {
+    size_t     offset = 0;
+    const auto get    = [&](void *data, const size_t size)
+    {
+      AssertThrow(offset + size <= state.size(),
+                  ExcMessage("The checkpoint's contact state is truncated."));
+      std::memcpy(data, state.data() + offset, size);
+      offset += size;
+    };
+    unsigned int n_pairs;
+    get(&n_pairs, sizeof(n_pairs));
+    AssertThrow(n_pairs == contact_pairs.size(),
+                ExcMessage("The checkpoint has " + std::to_string(n_pairs) +
+                           " contact pairs, this run " +
+                           std::to_string(contact_pairs.size()) +
+                           ": Contact/Pairs must be those of the run that "
+                           "wrote it."));
+    for (auto &pair : contact_pairs)
+    {
+      unsigned int n;
+      char         near;
+      get(&n, sizeof(n));
+      AssertThrow(n == pair.n_nodes(),
+                  ExcMessage("The checkpoint's contact pair has " +
+                             std::to_string(n) + " slave nodes, this run's " +
+                             std::to_string(pair.n_nodes()) +
+                             ": the mesh must be that of the run that wrote "
+                             "it."));
+      get(&near, 1);
+      get(pair.committed.data(), n * sizeof(NodeState));
+      pair.current              = pair.committed;
+      pair.ever_near            = near != 0;
+      pair.old_slave_positions  = pair.slave_positions;
+      pair.old_master_positions = pair.master_positions;
+    }
+    committed_time = time;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::begin_increment()
+  {
+    monitor.begin_increment(contact_pairs);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactHandler<dim>::track_status_changes(const unsigned int limit,
+                                            const bool         count)
+  {
+    return monitor.track(contact_pairs, limit, count);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactHandler<dim>::freeze_chattering(const unsigned int limit)
+  {
+    return monitor.freeze(contact_pairs, limit);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactHandler<dim>::n_frozen_inadmissible() const
+  {
+    return monitor.n_frozen_inadmissible(contact_pairs);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ContactHandler<dim>::release_frozen_inadmissible()
+  {
+    return monitor.release_inadmissible(contact_pairs);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::commit()
+  {
+    // Couplings are added as slave nodes find new master faces and kept
+    // through the increment (the pattern must not change inside Newton).
+    // At a converged increment those that no node uses any more go once
+    // they are a quarter of the pattern's contact couplings: the pattern
+    // follows the contact zone instead of growing with the sliding
+    // distance, and is rebuilt (with a new symbolic factorization) only
+    // when that pays.
+    std::vector<std::set<std::pair<unsigned int, unsigned int>>> used(
+      contact_pairs.size());
+    unsigned int       n_stale = 0, n_kept = 0;
+    const unsigned int rank =
+      Utilities::MPI::this_mpi_process(mpi_communicator);
+    n_paired_across = 0;
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+    {
+      auto &pair = contact_pairs[p];
+      if (pair.master)
+        for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        {
+          const int now = pair.current[k].face, before = pair.committed[k].face;
+          if (!pair.owned[k] || now < 0)
+            continue;
+          const unsigned int owner = pair.master->faces()[now].owner;
+          n_paired_across += (owner != rank);
+          n_owner_changes +=
+            (before >= 0 && pair.master->faces()[before].owner != owner);
+        }
+      pair.committed            = pair.current;
+      pair.old_slave_positions  = pair.slave_positions;
+      pair.old_master_positions = pair.master_positions;
+      if (pair.rigid)
+        continue;
+      std::vector<unsigned int> faces;
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      {
+        const int face = pair.current[k].face;
+        if (pair.owned[k] && !pair.excluded[k] && face >= 0)
+        {
+          if (pair.mortar)
+          {
+            pair.mortar_master_faces(k, faces);
+            for (const unsigned int f : faces)
+              pair.insert_couplings(k, f, used[p]);
+          }
+          else
+            pair.insert_couplings(k, face, used[p]);
+        }
+      }
+      n_kept += used[p].size();
+      n_stale += pair.couplings.size() - used[p].size();
+    }
+    n_stale = Utilities::MPI::sum(n_stale, mpi_communicator);
+    n_kept  = Utilities::MPI::sum(n_kept, mpi_communicator);
+    if (n_stale > 0 && 3 * n_stale >= n_kept)
+    {
+      for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+        if (!contact_pairs[p].rigid)
+          contact_pairs[p].couplings.swap(used[p]);
+      outdated = true;
+    }
+    committed_time = time;
+  }
+
+
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  ContactHandler<dim>::process_crossings() const
+  {
+    return {Utilities::MPI::sum(n_paired_across, mpi_communicator),
+            Utilities::MPI::sum(n_owner_changes, mpi_communicator)};
+  }
+
+
+
+  template <int dim>
+  void
+  ContactHandler<dim>::restore()
+  {
+    for (auto &pair : contact_pairs)
+      pair.current = pair.committed;
+  }
+
+
+
+  template <int dim>
+  bool
+  ContactHandler<dim>::augmented() const
+  {
+    for (const auto &pair : contact_pairs)
+      if (pair.enforcement->has_outer_update())
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactHandler<dim>::augment(const double tolerance)
+  {
+    double violation = 0;
+    for (const auto &pair : contact_pairs)
+      if (pair.enforcement->has_outer_update())
+        violation = std::max(violation, pair.enforcement->violation(pair));
+    violation = Utilities::MPI::max(violation, mpi_communicator);
+    if (violation > tolerance)
+      for (auto &pair : contact_pairs)
+        if (pair.enforcement->has_outer_update())
+          pair.enforcement->outer_update(pair);
+    return violation;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactHandler<dim>::setup_warnings() const
+  {
+    return penalty_warnings(contact_pairs);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactHandler<dim>::run_warnings() const
+  {
+    std::vector<std::string> warnings;
+    for (const auto &pair : contact_pairs)
+      if (Utilities::MPI::max(pair.ever_near ? 1 : 0, mpi_communicator) == 0)
+        warnings.push_back(
+          "contact pair <" + pair.description.text +
+          ">: no slave node came within the search distance of the master "
+          "during the run (Contact/Search distance = " +
+          to_scientific(parameters.search_distance) +
+          "); check the pair's boundary ids and the surfaces' positions.");
+    return warnings;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  ContactHandler<dim>::describe() const
+  {
+    return tribos::describe(contact_pairs);
+  }
+
+  template class ContactHandler<2>;
+  template class ContactHandler<3>;
+} // namespace tribos

@@ -1,0 +1,165 @@
+#include <tribos/base/write_atomically.h>
+#include <tribos/core/problem.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <iomanip>
+#include <iostream>
+
+namespace tribos
+{
+  template <int dim>
+  void
+  Problem<dim>::warn(const std::string &message)
+  {
+    warnings.push_back(message);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      std::cerr << "tribos: WARNING: " << message << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::write_summary(const std::string &status)
+  {
+    // Load balance: each process's time in the sections its share of the
+    // cells and of the contact zone sets (collective, so before rank 0
+    // alone goes on). A contact zone on one process makes the others wait.
+    const std::vector<std::pair<std::string, Utilities::MPI::MinMaxAvg>>
+      balance = {
+        {"assembly",
+         Utilities::MPI::min_max_avg(own_assembly_time, mpi_communicator)},
+        {"contact",
+         Utilities::MPI::min_max_avg(contact ? contact->own_time() : 0.,
+                                     mpi_communicator)}};
+    // The slave nodes each process evaluates (the contact's share of the
+    // work, whatever their state).
+    const auto slave_nodes =
+      Utilities::MPI::min_max_avg(contact ?
+                                    double(contact->n_own_slave_nodes()) :
+                                    0.,
+                                  mpi_communicator);
+    // Communication: the values each process receives per update of the
+    // ghosted solution (all of them, and the contact's share), and the
+    // contact across processes.
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const auto ghosts =
+      Utilities::MPI::min_max_avg(double(system_relevant.n_elements() -
+                                         system_owned.n_elements()),
+                                  mpi_communicator);
+    const auto contact_ghosts =
+      Utilities::MPI::min_max_avg(double(n_contact_ghosts), mpi_communicator);
+    const auto crossings =
+      contact ? contact->process_crossings() : std::pair<unsigned, unsigned>();
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const auto peak_memory =
+      Utilities::MPI::min_max_avg(memory.VmHWM / 1024., mpi_communicator);
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    const StepperTotals totals = stepper ? stepper->totals() : StepperTotals();
+    const auto wall  = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto calls = timer.get_summary_data(TimerOutput::n_calls);
+    double     total = 0;
+    for (const auto &[section, seconds] : wall)
+      total += seconds;
+
+    write_atomically(
+      parameters.output.directory + "/summary.txt",
+      [&](std::ostream &out)
+      {
+        out << "status            " << status << '\n'
+            << "dimension         " << dim << '\n'
+            << "scene             " << parameters.scene.name << '\n'
+            << "cells             " << triangulation.n_global_active_cells()
+            << '\n'
+            << "dofs              " << dof_handler.n_dofs() << '\n'
+            << "contact dofs      "
+            << (contact ? contact->contact_dofs().n_elements() : 0) << '\n'
+            << "multipliers       " << n_multipliers << '\n'
+            << "bodies            " << n_bodies << '\n'
+            << "MPI processes     "
+            << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'
+            << "increments        " << totals.n_increments << '\n'
+            << "newton iterations " << totals.n_newton_iterations << '\n'
+            << "newton iterations (all attempts) "
+            << (restart ? restart->stepper.totals.n_linear_solves : 0) +
+                 (newton ? newton->n_linear_solves() : 0)
+            << '\n'
+            << "cutbacks          " << totals.n_cutbacks << '\n'
+            << "linear solver     "
+            << (linear_solver && !linear_solver->method().empty() ?
+                  linear_solver->method() :
+                  "none")
+            << '\n';
+        if (linear_solver && linear_solver->n_iterations() > 0)
+          out << "linear iterations " << linear_solver->n_iterations() << '\n'
+              << "AMG setups        "
+              << linear_solver->n_preconditioner_setups() << '\n';
+        if (linear_solver && linear_solver->n_refinements() > 0)
+          out << "refinement steps  " << linear_solver->n_refinements() << '\n';
+        if (parameters.nonlinear_solver.stabilization > 0)
+          out << "largest stabilization ratio "
+              << totals.largest_stabilization_ratio << '\n';
+        out << "peak memory       " << peak_memory.max
+            << " MB per process (max), " << peak_memory.sum << " MB in all\n";
+        if (n_ranks > 1)
+        {
+          for (const auto &[section, t] : balance)
+          {
+            out << "balance " << std::left << std::setw(10) << section
+                << std::right << "min " << t.min << " s, max " << t.max
+                << " s, max/min ";
+            if (t.min > 0)
+              out << t.max / t.min << '\n';
+            else
+              out << (t.max > 0 ? "inf" : "-") << '\n';
+          }
+          if (contact)
+            out << "balance slave nodes min " << slave_nodes.min << ", max "
+                << slave_nodes.max << " per process\n";
+          out << "ghost values      max " << ghosts.max << " per process ("
+              << 8 * ghosts.max << " bytes per update), of which contact "
+              << contact_ghosts.max << '\n';
+          if (contact)
+            out << "contact across processes " << crossings.first
+                << " slave nodes at the end, " << crossings.second
+                << " master face changes of process\n";
+        }
+        if (contact && slave_nodes.sum > 0 && balance[0].second.sum > 0)
+        {
+          // A cell with a slave face carries about one slave node: its
+          // weight is one cell's assembly and one node's contact work,
+          // in units of a cell's assembly (sums over the processes).
+          const double per_cell =
+            balance[0].second.sum / triangulation.n_global_active_cells();
+          const double per_node = balance[1].second.sum / slave_nodes.sum;
+          out << "contact cell weight " << std::lround(1 + per_node / per_cell)
+              << " would balance the measured work (Parallel/Contact cell "
+                 "weight = "
+              << parameters.parallel.contact_cell_weight << ")\n";
+        }
+        if (last_rebalance.count > 0)
+          out << "rebalanced        " << last_rebalance.count
+              << " time(s), the last after step " << last_rebalance.step
+              << " (contact time max/min " << last_rebalance.imbalance
+              << "); balance and sections since then\n";
+        for (const auto &w : warnings)
+          out << "warning           " << w << '\n';
+        out << "\nsection               calls    wall [s]  share\n";
+        for (const auto &[section, seconds] : wall)
+          out << std::left << std::setw(20) << section << std::right
+              << std::setw(8) << static_cast<unsigned int>(calls.at(section))
+              << ' ' << std::setw(11) << std::fixed << std::setprecision(4)
+              << seconds << ' ' << std::setw(6) << std::setprecision(2)
+              << (total > 0 ? 100 * seconds / total : 0) << "%\n"
+              << std::defaultfloat;
+      });
+  }
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos
