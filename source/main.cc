@@ -135,9 +135,8 @@ namespace
         return;
       const auto [status, message] = describe(failure);
       std::cerr << "\ntribos: " << message << "\n(on process " << rank << " of "
-                << n_processes
-                << " only: the others did not fail; aborting the run)"
-                << std::endl;
+                << n_processes << " only: the others had not failed within "
+                << wait_seconds << " s; aborting the run)" << std::endl;
       MPI_Abort(MPI_COMM_WORLD, status);
     }
 
