@@ -16,12 +16,10 @@ them in (np 2 cut back 3 times where the serial run cut twice)."""
 
 import os
 import re
-import signal
-import subprocess
 import sys
 
-from tribos_test import (setup, run, check, finish, mpi_available,
-                         strip_columns, numdiff)
+from tribos_test import (setup, run, run_or_hang, check, finish,
+                         mpi_available, strip_columns, numdiff)
 
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/neo_hookean_stretch.prm"
@@ -33,25 +31,7 @@ crush = ["Scene/Block/Upper corner=4, 1, 1",
 
 
 def run_failing(folder, ranks):
-    command = [tribos, prm, "--set", "Output/Directory=" + folder]
-    for s in crush:
-        command += ["--set", s]
-    if ranks:
-        command = [os.environ.get("MPIEXEC", "mpirun"), "-np",
-                   str(ranks)] + command
-    # In a session of its own, so that a hung run's processes can all be
-    # killed (mpirun does not pass on SIGKILL).
-    process = subprocess.Popen(command, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True,
-                               start_new_session=True)
-    try:
-        process.communicate(timeout=120)
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.communicate()
-        raise SystemExit("FAILED  %d process(es): the run hangs (no end "
-                         "in 120 s)" % max(ranks, 1))
-    return process
+    return run_or_hang(tribos, prm, folder, crush, ranks)
 
 
 def status(folder):

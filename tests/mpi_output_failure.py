@@ -22,36 +22,17 @@ processes and, for reference, on one:
 """
 
 import os
-import signal
-import subprocess
 import sys
 
-from tribos_test import setup, check, finish, mpi_available
+from tribos_test import setup, run_or_hang, check, finish, mpi_available
 
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/patch_test.prm"
 
 
 def run_failing(folder, ranks, sets=()):
-    command = [tribos, prm, "--set", "Output/Directory=" + folder]
-    for s in sets:
-        command += ["--set", s]
-    if ranks:
-        command = [os.environ.get("MPIEXEC", "mpirun"), "-np",
-                   str(ranks)] + command
-    # In a session of its own, so that a hung run's processes can all be
-    # killed (mpirun does not pass on SIGKILL).
-    process = subprocess.Popen(command, stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True,
-                               start_new_session=True)
-    try:
-        output = process.communicate(timeout=90)[0]
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.communicate()
-        raise SystemExit("FAILED  %d process(es): the run hangs (no end "
-                         "in 90 s)" % max(ranks, 1))
-    return process.returncode, output
+    result = run_or_hang(tribos, prm, folder, sets, ranks, timeout=90)
+    return result.returncode, result.stdout
 
 
 if not mpi_available():

@@ -6,6 +6,7 @@ import csv
 import math
 import os
 import shutil
+import signal
 import subprocess
 import sys
 
@@ -36,6 +37,31 @@ def run(tribos, prm, out, sets=(), mpi_ranks=0, expect_success=True,
         raise SystemExit("tribos failed with exit code %d: %s"
                          % (result.returncode, " ".join(command)))
     return result
+
+
+def run_or_hang(tribos, prm, out, sets=(), mpi_ranks=0, timeout=120):
+    """Run tribos like run() but expecting it may fail or hang: the
+    CompletedProcess (stdout and stderr together in .stdout), or a test
+    failure if the run does not end within timeout seconds. The run gets a
+    session of its own, so that a hung run's processes can all be killed
+    (mpirun does not pass on SIGKILL)."""
+    command = [tribos, prm, "--set", "Output/Directory=" + out]
+    for s in sets:
+        command += ["--set", s]
+    if mpi_ranks:
+        command = [os.environ.get("MPIEXEC", "mpirun"), "-np",
+                   str(mpi_ranks)] + command
+    process = subprocess.Popen(command, stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, text=True,
+                               start_new_session=True)
+    try:
+        output = process.communicate(timeout=timeout)[0]
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        raise SystemExit("FAILED  %d process(es): the run hangs (no end "
+                         "in %d s)" % (max(mpi_ranks, 1), timeout))
+    return subprocess.CompletedProcess(command, process.returncode, output)
 
 
 def mpi_available():
