@@ -3,95 +3,60 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <Sacado.hpp>
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <type_traits>
 
 namespace tribos
 {
   namespace
   {
-    using AD = Sacado::Fad::SLFad<double, 9>;
+    using Mat3 = std::array<std::array<double, 3>, 3>;
+    using Vec3 = std::array<double, 3>;
 
-    double
-    value(const double x)
-    {
-      return x;
-    }
-
-    double
-    value(const AD &x)
-    {
-      return x.val();
-    }
-
-    template <typename N>
-    using Mat3 = std::array<std::array<N, 3>, 3>;
-
-    template <typename N>
-    Mat3<N>
+    Mat3
     identity()
     {
-      Mat3<N> I;
+      Mat3 I{};
       for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          I[i][j] = (i == j ? 1. : 0.);
+        I[i][i] = 1.;
       return I;
     }
 
-    template <typename N>
-    Mat3<N>
-    operator*(const Mat3<N> &A, const Mat3<N> &B)
+    Mat3
+    operator*(const Mat3 &A, const Mat3 &B)
     {
-      Mat3<N> C;
+      Mat3 C{};
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
-        {
-          C[i][j] = 0.;
           for (unsigned int k = 0; k < 3; ++k)
             C[i][j] += A[i][k] * B[k][j];
-        }
       return C;
     }
 
-    template <typename N, typename S>
-    Mat3<N>
-    combine(const S &a, const Mat3<N> &A, const S &b, const Mat3<N> &B)
+    Mat3
+    transpose(const Mat3 &A)
     {
-      Mat3<N> C;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          C[i][j] = a * A[i][j] + b * B[i][j];
-      return C;
-    }
-
-    template <typename N>
-    Mat3<N>
-    transpose(const Mat3<N> &A)
-    {
-      Mat3<N> T;
+      Mat3 T;
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
           T[i][j] = A[j][i];
       return T;
     }
 
-    template <typename N>
-    N
-    determinant(const Mat3<N> &A)
+    double
+    determinant(const Mat3 &A)
     {
       return A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
              A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
              A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
     }
 
-    template <typename N>
-    Mat3<N>
-    inverse(const Mat3<N> &A)
+    Mat3
+    inverse(const Mat3 &A)
     {
-      const N det = determinant(A);
-      Mat3<N> B;
+      const double det = determinant(A);
+      Mat3         B;
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
         {
@@ -102,36 +67,19 @@ namespace tribos
       return B;
     }
 
-    /**
-     * Eigenvalues and orthonormal eigenvectors (columns of @p Q) of the
-     * values of a symmetric matrix; Jacobi rotations for their accuracy
-     * near repeated eigenvalues.
-     */
-    template <typename N>
-    std::array<double, 3>
-    spectral_values(const Mat3<N> &A, Mat3<double> &Q)
+    /** Q diag(d) Q^T. */
+    Mat3
+    spectral_sum(const Mat3 &Q, const Vec3 &d)
     {
-      SymmetricTensor<2, 3> S;
+      Mat3 A{};
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = i; j < 3; ++j)
-          S[i][j] = 0.5 * (value(A[i][j]) + value(A[j][i]));
-      const auto pairs =
-        eigenvectors(S, SymmetricTensorEigenvectorMethod::jacobi);
-      std::array<double, 3> lambda;
-      for (unsigned int k = 0; k < 3; ++k)
-      {
-        lambda[k] = pairs[k].first;
-        for (unsigned int i = 0; i < 3; ++i)
-          Q[i][k] = pairs[k].second[i];
-      }
-      return lambda;
-    }
-
-    /** Q diag(f) Q^T, or Q (theta o D) Q^T for a full matrix of weights. */
-    Mat3<double>
-    spectral_sum(const Mat3<double> &Q, const Mat3<double> &weights)
-    {
-      return Q * weights * transpose(Q);
+        {
+          for (unsigned int k = 0; k < 3; ++k)
+            A[i][j] += Q[i][k] * d[k] * Q[j][k];
+          A[j][i] = A[i][j];
+        }
+      return A;
     }
 
     /**
@@ -147,78 +95,6 @@ namespace tribos
       if (std::abs(x) < 1e-8)
         return (1. - x / 2. + x * x / 3.) / b;
       return std::log1p(x) / (x * b);
-    }
-
-    /**
-     * Logarithm of an SPD matrix from its spectral decomposition,
-     * ln M = sum ln(lambda_i) n_i n_i^T. For AD numbers each derivative
-     * direction dM maps to Q (theta o Q^T dM Q) Q^T with the divided
-     * differences theta_ij of ln: the exact derivative, at the cost of a
-     * few 3x3 products per direction instead of AD through an iterative
-     * algorithm.
-     */
-    template <typename N>
-    Mat3<N>
-    log_spd(const Mat3<N> &M)
-    {
-      Mat3<double>                Q;
-      const std::array<double, 3> lambda = spectral_values(M, Q);
-      for (const double l : lambda)
-        if (!(l > 0))
-          throw InvertedElement("J2 plasticity: elastic left Cauchy-Green "
-                                "tensor with eigenvalue " +
-                                to_scientific(l) + " <= 0");
-      Mat3<double> log_lambda = identity<double>();
-      for (unsigned int i = 0; i < 3; ++i)
-        log_lambda[i][i] = std::log(lambda[i]);
-      const Mat3<double> L = spectral_sum(Q, log_lambda);
-
-      Mat3<N> result;
-      if constexpr (std::is_same_v<N, double>)
-        result = L;
-      else
-      {
-        Mat3<double> theta;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            theta[i][j] = log_divided_difference(lambda[i], lambda[j]);
-        int n_derivatives = 0;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            n_derivatives = std::max(n_derivatives, M[i][j].size());
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            result[i][j] = N(n_derivatives, L[i][j]);
-        const Mat3<double> Q_t = transpose(Q);
-        for (int k = 0; k < n_derivatives; ++k)
-        {
-          Mat3<double> dM;
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              dM[i][j] = M[i][j].dx(k);
-          Mat3<double> D = Q_t * dM * Q;
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              D[i][j] *= theta[i][j];
-          const Mat3<double> dL = spectral_sum(Q, D);
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              result[i][j].fastAccessDx(k) = dL[i][j];
-        }
-      }
-      return result;
-    }
-
-    /** Exponential of a symmetric matrix (values), spectrally. */
-    Mat3<double>
-    exp_sym(const Mat3<double> &A)
-    {
-      Mat3<double>                Q;
-      const std::array<double, 3> mu          = spectral_values(A, Q);
-      Mat3<double>                exponential = identity<double>();
-      for (unsigned int i = 0; i < 3; ++i)
-        exponential[i][i] = std::exp(mu[i]);
-      return spectral_sum(Q, exponential);
     }
 
     /** The six independent entries of a symmetric matrix and back. */
@@ -242,64 +118,107 @@ namespace tribos
 
   namespace
   {
-    /**
-     * @p F_in (dim x dim) as a 3x3 matrix of numbers @p N; as AD numbers its
-     * dim x dim entries are the independent variables of the tangent.
-     */
-    template <typename N, int dim>
-    Mat3<N>
+    /** F (dim x dim) as a 3x3 matrix, F_33 = 1 in 2D (plane strain). */
+    template <int dim>
+    Mat3
     embed(const Tensor<2, dim> &F_in)
     {
-      Mat3<N> F = identity<N>();
+      Mat3 F = identity();
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
-          if constexpr (std::is_same_v<N, AD>)
-            F[i][j] = AD(dim * dim, i * dim + j, F_in[i][j]);
-          else
-            F[i][j] = F_in[i][j];
+          F[i][j] = F_in[i][j];
       return F;
     }
 
 
 
     /**
-     * The return map at deformation gradient @p F (3x3) from the history
-     * @p old: Kirchhoff stress @p tau, and (values) the new history.
+     * The return map's result at one point, in the principal axes Q of
+     * the trial left Cauchy-Green tensor b_trial = F C_p^-1 F^T, which
+     * the logarithmic elastic strain and the Kirchhoff stress share.
      */
-    template <typename N>
-    void
-    return_map(const Mat3<N>      &F,
+    struct ReturnMap
+    {
+      /** Eigenvectors of b_trial (columns) and its eigenvalues. */
+      Mat3 Q;
+      Vec3 lambda;
+      /** Kirchhoff stress, principal values and the full matrix. */
+      Vec3 tau_principal;
+      Mat3 tau;
+      /** The unit flow direction dev(eps_trial)/|dev(eps_trial)|. */
+      Vec3 n;
+      /**
+       * d tau = K tr(d eps) 1 + beta dev(d eps) - gamma (n : d eps) n for
+       * a change d eps of the trial strain: the algorithmic moduli of
+       * small-strain J2's radial return (beta = 2G, gamma = 0 elastic).
+       */
+      double beta  = 0;
+      double gamma = 0;
+    };
+
+
+
+    /**
+     * The radial return in logarithmic strains at deformation gradient
+     * @p F (3x3) from the history @p old; writes the new history if
+     * @p new_history is not null.
+     */
+    ReturnMap
+    return_map(const Mat3         &F,
                const double       *old,
                const double        K,
                const double        G,
                const HardeningLaw &hardening,
-               Mat3<N>            &tau,
                double             *new_history)
     {
-      Mat3<N> Cp_inv;
+      Mat3 Cp_inv;
       for (unsigned int c = 0; c < 6; ++c)
       {
         Cp_inv[sym_index[c][0]][sym_index[c][1]] = old[c];
         Cp_inv[sym_index[c][1]][sym_index[c][0]] = old[c];
       }
-      const Mat3<N> b_trial = F * Cp_inv * transpose(F);
-      const Mat3<N> eps_trial =
-        combine<N, double>(0.5, log_spd(b_trial), 0., b_trial);
+      const Mat3 b_trial = F * Cp_inv * transpose(F);
 
-      const N trace    = eps_trial[0][0] + eps_trial[1][1] + eps_trial[2][2];
-      Mat3<N> deviator = eps_trial;
+      // Jacobi eigenvectors for their accuracy near repeated eigenvalues.
+      ReturnMap             result;
+      SymmetricTensor<2, 3> b;
       for (unsigned int i = 0; i < 3; ++i)
-        deviator[i][i] -= trace / 3.;
-      N norm_squared = 0.;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          norm_squared += deviator[i][j] * deviator[i][j];
-      using std::sqrt;
-      const N      dev_norm    = sqrt(norm_squared + 1e-300);
-      const N      q_trial     = sqrt(1.5) * 2. * G * dev_norm;
-      const double alpha_old   = old[6];
-      const double yield_old   = hardening.yield_stress(alpha_old);
-      N            delta_alpha = 0.;
+        for (unsigned int j = i; j < 3; ++j)
+          b[i][j] = 0.5 * (b_trial[i][j] + b_trial[j][i]);
+      const auto pairs =
+        eigenvectors(b, SymmetricTensorEigenvectorMethod::jacobi);
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        result.lambda[k] = pairs[k].first;
+        for (unsigned int i = 0; i < 3; ++i)
+          result.Q[i][k] = pairs[k].second[i];
+        if (!(result.lambda[k] > 0))
+          throw InvertedElement("J2 plasticity: elastic left Cauchy-Green "
+                                "tensor with eigenvalue " +
+                                to_scientific(result.lambda[k]) + " <= 0");
+      }
+
+      // Principal trial strains eps_i = ln(lambda_i) / 2, their trace and
+      // deviator.
+      Vec3   eps;
+      double trace = 0;
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        eps[k] = 0.5 * std::log(result.lambda[k]);
+        trace += eps[k];
+      }
+      Vec3   deviator;
+      double norm_squared = 0;
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        deviator[k] = eps[k] - trace / 3.;
+        norm_squared += deviator[k] * deviator[k];
+      }
+      const double dev_norm = std::sqrt(norm_squared + 1e-300);
+      for (unsigned int k = 0; k < 3; ++k)
+        result.n[k] = deviator[k] / dev_norm;
+      const double q_trial   = std::sqrt(1.5) * 2. * G * dev_norm;
+      const double alpha_old = old[6];
       // A point that converged plastically starts the next increment with
       // its trial state on the yield surface to round-off (through the
       // logarithm and back): that tie is elastic (no correction, the
@@ -307,12 +226,13 @@ namespace tribos
       // coulomb_return(). Left to round-off, about half such points took
       // the ~1000 times softer plastic tangent, and the first Newton
       // iterate depended on the thread count and the BLAS kernel.
-      const bool plastic = value(q_trial) > yield_old * (1. + 1e-12);
+      const bool plastic =
+        q_trial > hardening.yield_stress(alpha_old) * (1. + 1e-12);
+      double delta_alpha = 0, factor = 0;
+      result.beta = 2. * G;
       if (plastic)
       {
-        // Scalar Newton on q_trial - 3 G da - sigma_y(alpha + da) = 0 in
-        // values, then one step in the AD type from the root: the exact
-        // derivative of the converged da.
+        // Scalar Newton on q_trial - 3 G da - sigma_y(alpha + da) = 0.
         const auto slope = [&](const double da)
         {
           return 3 * G +
@@ -324,46 +244,42 @@ namespace tribos
         double da = 0;
         for (unsigned int k = 0; k < 50; ++k)
         {
-          const double r = value(q_trial) - 3 * G * da -
-                           hardening.yield_stress(alpha_old + da);
+          const double r =
+            q_trial - 3 * G * da - hardening.yield_stress(alpha_old + da);
           const double step = r / slope(da);
           da += step;
           if (std::abs(step) < 1e-15 * (1 + da))
             break;
         }
-        delta_alpha =
-          da + (q_trial - 3 * G * da - hardening.yield_stress(alpha_old + da)) /
-                 slope(da);
+        delta_alpha = da;
+        // eps_e = eps_trial - f dev(eps_trial); d(da) = d(q_trial) / slope
+        // at the root gives d tau's moduli.
+        factor       = std::sqrt(1.5) * delta_alpha / dev_norm;
+        result.beta  = 2. * G * (1. - factor);
+        result.gamma = 2. * G * (3. * G / slope(delta_alpha) - factor);
       }
 
-      // eps_e = eps_trial - sqrt(3/2) da n, n = deviator / |deviator|.
-      const N factor =
-        (plastic ? N(sqrt(1.5) * delta_alpha / dev_norm) : N(0.));
-      Mat3<N> eps_e = eps_trial;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          eps_e[i][j] -= factor * deviator[i][j];
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          tau[i][j] = 2. * G * (eps_e[i][j] - (i == j ? trace / 3. : N(0.))) +
-                      (i == j ? N(K * trace) : N(0.));
+      // tau = 2 G dev(eps_e) + K tr(eps_e) 1, dev(eps_e) = (1 - f) dev.
+      for (unsigned int k = 0; k < 3; ++k)
+        result.tau_principal[k] =
+          2. * G * (1. - factor) * deviator[k] + K * trace;
+      result.tau = spectral_sum(result.Q, result.tau_principal);
 
       if (new_history != nullptr)
       {
-        Mat3<double> eps_value, F_value;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-          {
-            eps_value[i][j] = 2 * value(eps_e[i][j]);
-            F_value[i][j]   = value(F[i][j]);
-          }
-        const Mat3<double> b_e    = exp_sym(eps_value);
-        const Mat3<double> F_inv  = inverse(F_value);
-        const Mat3<double> Cp_new = F_inv * b_e * transpose(F_inv);
+        // C_p^-1 = F^-1 b_e F^-T with b_e = exp(2 eps_e), which has the
+        // trial eigenvectors (the return is radial).
+        Vec3 b_e_principal;
+        for (unsigned int k = 0; k < 3; ++k)
+          b_e_principal[k] = std::exp(2. * (eps[k] - factor * deviator[k]));
+        const Mat3 F_inv = inverse(F);
+        const Mat3 Cp_new =
+          F_inv * spectral_sum(result.Q, b_e_principal) * transpose(F_inv);
         for (unsigned int c = 0; c < 6; ++c)
           new_history[c] = Cp_new[sym_index[c][0]][sym_index[c][1]];
-        new_history[6] = alpha_old + value(delta_alpha);
+        new_history[6] = alpha_old + delta_alpha;
       }
+      return result;
     }
   } // namespace
 
@@ -402,38 +318,79 @@ namespace tribos
   {
     if (!(determinant(F_in) > 0))
       throw InvertedElement("J2 plasticity", determinant(F_in));
-    // P = tau F^-T of the return map, in the number type of F.
-    const auto first_piola = [&](const auto &F)
-    {
-      std::decay_t<decltype(F)> tau;
-      return_map(F,
-                 old_history,
-                 bulk_modulus,
-                 shear_modulus,
-                 hardening,
-                 tau,
-                 new_history);
-      return tau * transpose(inverse(F));
-    };
-    if (tangent == nullptr)
-    {
-      // Residual only (line search, reactions): plain doubles, without
-      // carrying empty derivatives.
-      const Mat3<double> P_full = first_piola(embed<double>(F_in));
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          P[i][j] = P_full[i][j];
-      return;
-    }
-    const Mat3<AD> P_full = first_piola(embed<AD>(F_in));
+    const Mat3      F = embed(F_in);
+    const ReturnMap r = return_map(F,
+                                   old_history,
+                                   bulk_modulus,
+                                   shear_modulus,
+                                   hardening,
+                                   new_history);
+
+    // P = tau F^-T.
+    const Mat3 G     = transpose(inverse(F));
+    const Mat3 P_all = r.tau * G;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
+        P[i][j] = P_all[i][j];
+    if (tangent == nullptr)
+      return;
+
+    // The tangent dP/dF_ab, direction by direction, in the principal axes
+    // Q (hats):
+    //   d b_trial = e_a m_b^T + m_b e_a^T, m_b the column b of F C_p^-1;
+    //   d eps^ = 1/2 theta o (Q^T d b_trial Q) (Daleckii-Krein, theta the
+    //            divided differences of ln);
+    //   d tau^ = K tr(d eps) 1 + beta dev(d eps^) - gamma (n : d eps) n;
+    //   d P    = Q d tau^ Q^T G - P e_b (G^T e_a)^T  (G = F^-T).
+    // The exact derivative of the update above; the finite differences of
+    // unit/material_tangent check it.
+    const Mat3 &Q = r.Q;
+    Mat3        theta;
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int l = 0; l < 3; ++l)
+        theta[k][l] = log_divided_difference(r.lambda[k], r.lambda[l]);
+    Mat3 Cp_inv;
+    for (unsigned int c = 0; c < 6; ++c)
+    {
+      Cp_inv[sym_index[c][0]][sym_index[c][1]] = old_history[c];
+      Cp_inv[sym_index[c][1]][sym_index[c][0]] = old_history[c];
+    }
+    const Mat3   FC = F * Cp_inv;
+    const Mat3   W  = transpose(Q) * G;
+    const double K  = bulk_modulus;
+    for (unsigned int b = 0; b < dim; ++b)
+    {
+      // Q^T m_b.
+      Vec3 m{};
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int j = 0; j < 3; ++j)
+          m[k] += Q[j][k] * FC[j][b];
+      for (unsigned int a = 0; a < dim; ++a)
       {
-        P[i][j] = P_full[i][j].val();
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int l = 0; l < dim; ++l)
-            (*tangent)[i][j][k][l] = P_full[i][j].dx(k * dim + l);
+        // Q^T e_a is the row a of Q.
+        Mat3   d_eps;
+        double d_trace = 0, n_d_eps = 0;
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int l = 0; l < 3; ++l)
+            d_eps[k][l] = 0.5 * theta[k][l] * (Q[a][k] * m[l] + m[k] * Q[a][l]);
+        for (unsigned int k = 0; k < 3; ++k)
+        {
+          d_trace += d_eps[k][k];
+          n_d_eps += r.n[k] * d_eps[k][k];
+        }
+        Mat3 d_tau;
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int l = 0; l < 3; ++l)
+            d_tau[k][l] = r.beta * d_eps[k][l];
+        for (unsigned int k = 0; k < 3; ++k)
+          d_tau[k][k] +=
+            (K - r.beta / 3.) * d_trace - r.gamma * n_d_eps * r.n[k];
+        const Mat3 d_P = Q * (d_tau * W);
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            (*tangent)[i][j][a][b] = d_P[i][j] - P_all[i][b] * G[a][j];
       }
+    }
   }
 
 
@@ -443,22 +400,18 @@ namespace tribos
   J2Plasticity<dim>::cauchy_stress(const Tensor<2, dim> &F_in,
                                    const double         *history) const
   {
-    const Mat3<double> F = embed<double>(F_in);
-    Mat3<double>       tau;
-    return_map(F,
-               history,
-               bulk_modulus,
-               shear_modulus,
-               hardening,
-               tau,
-               nullptr);
+    const Mat3      F = embed(F_in);
+    const ReturnMap r =
+      return_map(F, history, bulk_modulus, shear_modulus, hardening, nullptr);
     const double          J = determinant(F);
     SymmetricTensor<2, 3> sigma;
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int j = i; j < 3; ++j)
-        sigma[i][j] = tau[i][j] / J;
+        sigma[i][j] = r.tau[i][j] / J;
     return sigma;
   }
+
+
 
   template <int dim>
   double
