@@ -1,9 +1,10 @@
 /**
  * Unit test: the tangent A = dP/dF of every material against central finite
  * differences of P, in 2D and 3D, near the identity and at large strain.
- * Asserts a relative error below 1e-6. Also: an inverted or not-a-number
- * F is refused with a message that says which (it printed "det F = -nan
- * <= 0" for the latter).
+ * Asserts a relative error below 1e-6, and the major symmetry
+ * A_ijkl = A_klij to 1e-12 where a material claims it. Also: an inverted
+ * or not-a-number F is refused with a message that says which (it printed
+ * "det F = -nan <= 0" for the latter).
  */
 
 #include <tribos/base/exceptions.h>
@@ -53,6 +54,24 @@ tangent_error(const tribos::Material<dim> &material,
         for (unsigned int j = 0; j < dim; ++j)
           A_fd[i][j][k][l] = (Pp[i][j] - Pm[i][j]) / (2 * h);
     }
+  // A material that claims the major symmetry A_ijkl = A_klij (the
+  // assembly then computes half of each cell matrix) must have it.
+  if (material.has_symmetric_tangent())
+  {
+    Tensor<4, dim> A_t;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = 0; l < dim; ++l)
+            A_t[i][j][k][l] = A[k][l][i][j];
+    const double asymmetry = (A - A_t).norm() / A.norm();
+    if (asymmetry > 1e-12)
+    {
+      std::cout << "tangent not symmetric as claimed: relative asymmetry "
+                << asymmetry << std::endl;
+      return 1.;
+    }
+  }
   return kink ? -1. : (A - A_fd).norm() / A.norm();
 }
 

@@ -230,9 +230,13 @@ namespace tribos
           J0         = determinant(F3_0);
         }
       }
-      const Material<dim> &material  = *materials[cell->material_id()];
-      const unsigned int   n_history = n_history_variables(cell->material_id());
-      const unsigned int   offset = history_offset[cell->active_cell_index()];
+      const Material<dim> &material = *materials[cell->material_id()];
+      // A symmetric material tangent gives a symmetric cell matrix, but for
+      // F-bar's coupling through the centre: then the upper triangle only.
+      const bool symmetric = with_matrix && !f_bar && !axisymmetric &&
+                             material.has_symmetric_tangent();
+      const unsigned int n_history = n_history_variables(cell->material_id());
+      const unsigned int offset    = history_offset[cell->active_cell_index()];
 
       for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -379,7 +383,7 @@ namespace tribos
             Tensor<2, dim> row;
             for (unsigned int l = 0; l < dim; ++l)
               row += grad_i[l] * A[ci][l];
-            for (unsigned int j = 0; j < dofs_per_cell; ++j)
+            for (unsigned int j = (symmetric ? i : 0); j < dofs_per_cell; ++j)
               cell_matrix(i, j) +=
                 (row[component[j]] * fe_values.shape_grad(j, q)) * JxW;
             if (f_bar)
@@ -396,6 +400,11 @@ namespace tribos
           }
         }
       }
+
+      if (symmetric)
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
 
       if (!neumann_functions.empty())
         for (const auto &face : cell->face_iterators())

@@ -81,6 +81,12 @@ namespace tribos
       return history[6];
     }
 
+    bool
+    has_symmetric_tangent() const override
+    {
+      return true;
+    }
+
     double
     youngs_modulus() const override
     {

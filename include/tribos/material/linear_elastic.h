@@ -31,6 +31,12 @@ namespace tribos
     stored_energy(const Tensor<2, dim> &F,
                   const double         *history) const override;
 
+    bool
+    has_symmetric_tangent() const override
+    {
+      return true;
+    }
+
     double
     youngs_modulus() const override
     {

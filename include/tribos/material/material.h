@@ -82,6 +82,18 @@ namespace tribos
     virtual double
     stored_energy(const Tensor<2, dim> &F, const double *history) const = 0;
 
+    /**
+     * Whether the tangent has the major symmetry A_ijkl = A_klij, as the
+     * derivative of a stress from a potential has (J2's radial return too:
+     * its algorithmic moduli are symmetric). The assembly then computes
+     * half of each cell matrix. False unless a material says so.
+     */
+    virtual bool
+    has_symmetric_tangent() const
+    {
+      return false;
+    }
+
     /** Young's modulus, used to scale penalty parameters. */
     virtual double
     youngs_modulus() const = 0;
