@@ -9,6 +9,9 @@
  *
  *   ./build/benchmarks/material_speed > material_speed.csv
  *
+ * doc/data/material_speed.csv has two builds side by side (medians of 5
+ * alternating runs, the earlier build's library through LD_LIBRARY_PATH).
+ *
  * One process, one thread; run it on a quiet machine and compare two
  * builds in one sitting.
  */
