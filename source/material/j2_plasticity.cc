@@ -3,7 +3,6 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -100,6 +99,19 @@ namespace tribos
     /** The six independent entries of a symmetric matrix and back. */
     constexpr unsigned int sym_index[6][2] =
       {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+
+    /** The symmetric matrix of the six history values @p packed. */
+    Mat3
+    unpack_symmetric(const double *packed)
+    {
+      Mat3 A;
+      for (unsigned int c = 0; c < 6; ++c)
+      {
+        A[sym_index[c][0]][sym_index[c][1]] = packed[c];
+        A[sym_index[c][1]][sym_index[c][0]] = packed[c];
+      }
+      return A;
+    }
   } // namespace
 
 
@@ -142,8 +154,7 @@ namespace tribos
       /** Eigenvectors of b_trial (columns) and its eigenvalues. */
       Mat3 Q;
       Vec3 lambda;
-      /** Kirchhoff stress, principal values and the full matrix. */
-      Vec3 tau_principal;
+      /** Kirchhoff stress. */
       Mat3 tau;
       /** The unit flow direction dev(eps_trial)/|dev(eps_trial)|. */
       Vec3 n;
@@ -160,24 +171,19 @@ namespace tribos
 
     /**
      * The radial return in logarithmic strains at deformation gradient
-     * @p F (3x3) from the history @p old; writes the new history if
-     * @p new_history is not null.
+     * @p F (3x3, inverse @p F_inv) from the history @p old; writes the new
+     * history if @p new_history is not null.
      */
     ReturnMap
     return_map(const Mat3         &F,
+               const Mat3         &F_inv,
                const double       *old,
                const double        K,
                const double        G,
                const HardeningLaw &hardening,
                double             *new_history)
     {
-      Mat3 Cp_inv;
-      for (unsigned int c = 0; c < 6; ++c)
-      {
-        Cp_inv[sym_index[c][0]][sym_index[c][1]] = old[c];
-        Cp_inv[sym_index[c][1]][sym_index[c][0]] = old[c];
-      }
-      const Mat3 b_trial = F * Cp_inv * transpose(F);
+      const Mat3 b_trial = F * unpack_symmetric(old) * transpose(F);
 
       // Jacobi eigenvectors for their accuracy near repeated eigenvalues.
       ReturnMap             result;
@@ -260,10 +266,10 @@ namespace tribos
       }
 
       // tau = 2 G dev(eps_e) + K tr(eps_e) 1, dev(eps_e) = (1 - f) dev.
+      Vec3 tau_principal;
       for (unsigned int k = 0; k < 3; ++k)
-        result.tau_principal[k] =
-          2. * G * (1. - factor) * deviator[k] + K * trace;
-      result.tau = spectral_sum(result.Q, result.tau_principal);
+        tau_principal[k] = result.beta * deviator[k] + K * trace;
+      result.tau = spectral_sum(result.Q, tau_principal);
 
       if (new_history != nullptr)
       {
@@ -272,7 +278,6 @@ namespace tribos
         Vec3 b_e_principal;
         for (unsigned int k = 0; k < 3; ++k)
           b_e_principal[k] = std::exp(2. * (eps[k] - factor * deviator[k]));
-        const Mat3 F_inv = inverse(F);
         const Mat3 Cp_new =
           F_inv * spectral_sum(result.Q, b_e_principal) * transpose(F_inv);
         for (unsigned int c = 0; c < 6; ++c)
@@ -318,8 +323,10 @@ namespace tribos
   {
     if (!(determinant(F_in) > 0))
       throw InvertedElement("J2 plasticity", determinant(F_in));
-    const Mat3      F = embed(F_in);
-    const ReturnMap r = return_map(F,
+    const Mat3      F     = embed(F_in);
+    const Mat3      F_inv = inverse(F);
+    const ReturnMap r     = return_map(F,
+                                   F_inv,
                                    old_history,
                                    bulk_modulus,
                                    shear_modulus,
@@ -327,7 +334,7 @@ namespace tribos
                                    new_history);
 
     // P = tau F^-T.
-    const Mat3 G     = transpose(inverse(F));
+    const Mat3 G     = transpose(F_inv);
     const Mat3 P_all = r.tau * G;
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = 0; j < dim; ++j)
@@ -349,13 +356,7 @@ namespace tribos
     for (unsigned int k = 0; k < 3; ++k)
       for (unsigned int l = 0; l < 3; ++l)
         theta[k][l] = log_divided_difference(r.lambda[k], r.lambda[l]);
-    Mat3 Cp_inv;
-    for (unsigned int c = 0; c < 6; ++c)
-    {
-      Cp_inv[sym_index[c][0]][sym_index[c][1]] = old_history[c];
-      Cp_inv[sym_index[c][1]][sym_index[c][0]] = old_history[c];
-    }
-    const Mat3   FC = F * Cp_inv;
+    const Mat3   FC = F * unpack_symmetric(old_history);
     const Mat3   W  = transpose(Q) * G;
     const double K  = bulk_modulus;
     for (unsigned int b = 0; b < dim; ++b)
@@ -400,9 +401,14 @@ namespace tribos
   J2Plasticity<dim>::cauchy_stress(const Tensor<2, dim> &F_in,
                                    const double         *history) const
   {
-    const Mat3      F = embed(F_in);
-    const ReturnMap r =
-      return_map(F, history, bulk_modulus, shear_modulus, hardening, nullptr);
+    const Mat3            F = embed(F_in);
+    const ReturnMap       r = return_map(F,
+                                   inverse(F),
+                                   history,
+                                   bulk_modulus,
+                                   shear_modulus,
+                                   hardening,
+                                   nullptr);
     const double          J = determinant(F);
     SymmetricTensor<2, 3> sigma;
     for (unsigned int i = 0; i < 3; ++i)
