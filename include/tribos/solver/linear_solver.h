@@ -139,8 +139,13 @@ namespace tribos
     struct Hierarchy
     {
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-      unsigned long version    = static_cast<unsigned long>(-1);
-      unsigned int  iterations = 0;
+      unsigned long version = static_cast<unsigned long>(-1);
+      /**
+       * GMRES iterations per decade of residual reduction in the first
+       * solve with this hierarchy: the measure of its later solves, whose
+       * tolerances differ by orders of magnitude.
+       */
+      double iterations_per_decade = 0;
     };
 
     void
