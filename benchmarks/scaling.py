@@ -33,7 +33,7 @@ Cases (Parallel/Mesh = distributed unless the variant says shared):
 * large (only with --large, about 15 minutes): the cylinder at 1.2M dofs,
   its first two steps of 25 at np 2, for the whole stroke's projection;
   large_multipliers the same with Lagrange multipliers; large_full and
-  large_multipliers_full (about 35 minutes each, only with --only) the
+  large_multipliers_full (26 and 41 minutes, only with --only) the
   whole stroke of 25 steps, the issue's targets.
 
 Each row: case, variant, processes, dofs, Newton iterations, median wall
