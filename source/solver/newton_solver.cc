@@ -212,9 +212,10 @@ namespace tribos
       // residual, eta = 0.9 (r_k / r_k-1)^2, kept above 0.9 eta_k-1^2 when
       // that is large (no sudden oversolving) and above half of what the
       // Newton test still asks (no solve beyond the tolerance), at most
-      // 1e-3; the first iteration, which carries the Dirichlet increment,
-      // at 1e-4. The cap: contact changes the active set between
-      // iterations, and a loose direction costs Newton iterations that cost
+      // 1e-3 (0.1 in the quadratic range near the tolerance, below); the
+      // first iteration, which carries the Dirichlet increment, at 1e-4.
+      // The cap: contact changes the active set between iterations, and a
+      // loose direction costs Newton iterations that cost
       // more than the Krylov iterations saved (3D Hertz, 121k unknowns:
       // 23 Newton iterations and 34.7 s with 0.1, 15 and 27.4 s with 1e-3,
       // 15 and 35.1 s with 1e-4, 13 and 43.7 s solving to 1e-10).
