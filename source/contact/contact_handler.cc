@@ -23,17 +23,23 @@ namespace tribos
     const bool                                       axisymmetric)
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
-    , pairing(parameters)
+    , pairing(parameters, mpi_communicator)
     , monitor(mpi_communicator)
     , n_displacement_dofs(dof_handler.n_dofs())
   {
-    contact_pairs = make_contact_pairs(parameters,
+    contact_pairs   = make_contact_pairs(parameters,
                                        dof_handler,
                                        youngs_modulus,
                                        locally_owned_dofs,
                                        axisymmetric,
                                        n_enforcement_unknowns,
                                        all_contact_dofs);
+    slave_read_dofs = IndexSet(dof_handler.n_dofs());
+    for (const auto &pair : contact_pairs)
+      for (const unsigned int k : pair.read_slave_nodes)
+        for (const auto dof : pair.slave->nodes()[k].dofs)
+          slave_read_dofs.add_index(dof);
+    slave_read_dofs.compress();
   }
 
 
@@ -48,7 +54,11 @@ namespace tribos
     bool new_coupling = false;
     for (auto &pair : contact_pairs)
       new_coupling = pairing.update(pair, solution) || new_coupling;
-    own_seconds += seconds_since(start);
+    const std::size_t n_received = pairing.take_received_values();
+    exchange.largest             = std::max(exchange.largest, n_received);
+    exchange.total += n_received;
+    ++exchange.n_searches;
+    own_seconds += seconds_since(start) - pairing.take_exchange_seconds();
     if (Utilities::MPI::max(new_coupling ? 1 : 0, mpi_communicator) == 1)
       outdated = true;
   }

@@ -415,6 +415,36 @@ namespace tribos
                         "use node to segment."));
         }
       }
+      // The slave positions this process reads: its own nodes and the
+      // stencils of the elements it evaluates.
+      {
+        std::vector<bool>         read(n_slaves, false);
+        std::vector<unsigned int> stencil;
+        for (unsigned int k = 0; k < n_slaves; ++k)
+          if (pair.owned[k])
+          {
+            read[k] = true;
+            if (pair.mortar && !pair.excluded[k])
+            {
+              pair.mortar_stencil(k, stencil);
+              for (const unsigned int m : stencil)
+                read[m] = true;
+            }
+          }
+        for (unsigned int k = 0; k < n_slaves; ++k)
+          if (read[k])
+            pair.read_slave_nodes.push_back(k);
+      }
+      if (pair.master)
+      {
+        const auto &master_nodes = pair.master->nodes();
+        pair.master_owned.resize(master_nodes.size());
+        for (unsigned int n = 0; n < master_nodes.size(); ++n)
+          pair.master_owned[n] =
+            locally_owned_dofs.is_element(master_nodes[n].dofs[0]);
+        pair.master_known.assign(master_nodes.size(), false);
+        pair.face_known.assign(pair.master->faces().size(), false);
+      }
       pair.first_unknown = dof_handler.n_dofs() + n_unknowns;
       n_unknowns += pair.enforcement->n_node_unknowns() * n_slaves;
       pair.committed           = pair.current;

@@ -79,14 +79,16 @@ namespace tribos
   template <int dim>
   void
   ContactSearch<dim>::build(const ContactSurface<dim>       &surface,
+                            const std::vector<unsigned int> &faces,
                             const std::vector<Vec3<double>> &positions)
   {
+    face_numbers   = faces;
     auto &elements = tree->elements;
     elements.clear();
-    elements.reserve(surface.faces().size() * Primitives<dim>::per_face);
-    for (const auto &face : surface.faces())
+    elements.reserve(faces.size() * Primitives<dim>::per_face);
+    for (const unsigned int f : faces)
     {
-      const auto &n = face.nodes;
+      const auto &n = surface.faces()[f].nodes;
       if constexpr (dim == 2)
         elements.emplace_back(point(positions[n[0]]), point(positions[n[1]]));
       else
@@ -117,9 +119,9 @@ namespace tribos
     if (tree->elements.empty())
       return false;
     const auto result = tree->tree.closest_point_and_primitive(point(x));
-    face =
-      (result.second - tree->elements.cbegin()) / Primitives<dim>::per_face;
-    squared_distance = CGAL::squared_distance(result.first, point(x));
+    face              = face_numbers[(result.second - tree->elements.cbegin()) /
+                        Primitives<dim>::per_face];
+    squared_distance  = CGAL::squared_distance(result.first, point(x));
     return true;
   }
 

@@ -1,8 +1,11 @@
+#include <tribos/base/timing.h>
+#include <tribos/contact/master_exchange.h>
 #include <tribos/contact/mortar_element_3d.h>
 #include <tribos/contact/pairing.h>
 #include <tribos/contact/smoothed_segment.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -40,8 +43,10 @@ namespace tribos
 
 
   template <int dim>
-  Pairing<dim>::Pairing(const Parameters::Contact &parameters)
+  Pairing<dim>::Pairing(const Parameters::Contact &parameters,
+                        const MPI_Comm             communicator)
     : parameters(parameters)
+    , communicator(communicator)
   {
   }
 
@@ -50,25 +55,21 @@ namespace tribos
   template <int dim>
   bool
   Pairing<dim>::update(ContactPair<dim>                    &pair,
-                       const TrilinosWrappers::MPI::Vector &solution) const
+                       const TrilinosWrappers::MPI::Vector &solution)
   {
-    const auto positions =
-      [&solution](const auto &surface, std::vector<Vec3<double>> &x)
+    const auto &slave_nodes = pair.slave->nodes();
+    for (const unsigned int k : pair.read_slave_nodes)
     {
-      const auto &nodes = surface.nodes();
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-      {
-        x[k] = nodes[k].reference;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[k][d] += solution[nodes[k].dofs[d]];
-      }
-    };
-    positions(*pair.slave, pair.slave_positions);
-    // The enforcement's unknowns are unknowns of the system: read them.
+      pair.slave_positions[k] = slave_nodes[k].reference;
+      for (unsigned int d = 0; d < dim; ++d)
+        pair.slave_positions[k][d] += solution[slave_nodes[k].dofs[d]];
+    }
     const unsigned int n_unknowns = pair.enforcement->n_node_unknowns();
+    // The enforcement's unknowns are unknowns of the system: read those
+    // of the own nodes (only their elements use them).
     if (n_unknowns > 0)
       for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-        for (unsigned int d = 0; d < n_unknowns; ++d)
+        for (unsigned int d = 0; d < n_unknowns && pair.owned[k]; ++d)
           pair.current[k].lambda[d] =
             solution[pair.first_unknown + n_unknowns * k + d];
 
@@ -78,8 +79,12 @@ namespace tribos
         pair.current[k].paired = pair.owned[k] && !pair.excluded[k];
       return false;
     }
-    positions(*pair.master, pair.master_positions);
-    pair.search.build(*pair.master, pair.master_positions);
+    const auto start = std::chrono::steady_clock::now();
+    n_received += exchange_master_nodes(pair,
+                                        solution,
+                                        parameters.search_distance,
+                                        communicator);
+    exchange_seconds += seconds_since(start);
 
     bool                      new_coupling = false;
     std::vector<unsigned int> faces;
@@ -152,7 +157,8 @@ namespace tribos
     // concave kink of the deformed master) the closest face would otherwise
     // flip between iterations and Newton would cycle between two smooth
     // residuals.
-    if (state.paired)
+    // A face that is not known lies beyond the search distance.
+    if (state.paired && pair.face_known[state.face])
     {
       const Projection kept = project_onto(state.face, false);
       bool             near = kept.distance <= parameters.search_distance;
@@ -222,12 +228,18 @@ namespace tribos
     double       squared_distance;
     if (!pair.search.closest_face(x, closest, squared_distance))
       return {};
+    // Beyond the search distance the master is not looked for (the faces
+    // there are not all known under MPI): no gap either.
     state.distance = std::sqrt(squared_distance);
     if (state.distance > parameters.search_distance)
+    {
+      state.distance = std::numeric_limits<double>::quiet_NaN();
       return {};
-    std::vector<unsigned int> candidates =
-      pair.master->faces()[closest].neighbours;
-    candidates.insert(candidates.begin(), closest);
+    }
+    std::vector<unsigned int> candidates(1, closest);
+    for (const unsigned int g : pair.master->faces()[closest].neighbours)
+      if (pair.face_known[g])
+        candidates.push_back(g);
     return candidates;
   }
 
@@ -271,7 +283,7 @@ namespace tribos
     // The face of the last evaluation while the node still projects onto
     // it: the projection is continuous across vertices, so this only saves
     // the search.
-    if (state.paired)
+    if (state.paired && pair.face_known[state.face])
     {
       Projection p;
       const int  kind = try_face(state.face, p);
@@ -351,7 +363,8 @@ namespace tribos
           found.push_back(m);
         if (class_m > 0 || i < n_start)
           for (const unsigned int g : faces[m].neighbours)
-            if (std::find(queue.begin(), queue.end(), g) == queue.end())
+            if (pair.face_known[g] &&
+                std::find(queue.begin(), queue.end(), g) == queue.end())
               queue.push_back(g);
       }
       return true;
@@ -477,7 +490,10 @@ namespace tribos
           return;
       }
     }
-    state.distance = closest;
+    // Beyond the search distance no gap is known (see candidate_faces()).
+    state.distance = closest <= parameters.search_distance ?
+                       closest :
+                       std::numeric_limits<double>::quiet_NaN();
     if (!reached)
       found.clear();
     if (!found.empty())

@@ -135,15 +135,18 @@ namespace tribos
     AssertThrow(c.stepper.step == step,
                 ExcInternalError("checkpoint of another step"));
 
-    // The displacement part of the solution, then the multipliers (from
-    // the ghosted solution: every process has all of them).
+    // The displacement part of the solution, then the multipliers (each
+    // from its owner, summed over the processes).
     Vector owned(locally_owned_dofs, mpi_communicator);
     for (const auto i : locally_owned_dofs)
       owned[i] = owned_solution[i];
     owned.compress(VectorOperation::insert);
     c.cell_values["solution"] = cell_values(owned, &c.cells);
-    for (types::global_dof_index i = 0; i < n_multipliers; ++i)
-      c.multipliers.push_back(ghosted_solution[dof_handler.n_dofs() + i]);
+    c.multipliers.assign(n_multipliers, 0.);
+    for (const auto i : system_owned)
+      if (i >= dof_handler.n_dofs())
+        c.multipliers[i - dof_handler.n_dofs()] = owned_solution[i];
+    Utilities::MPI::sum(c.multipliers, mpi_communicator, c.multipliers);
 
     // The last increment's change, which the next one extrapolates: its
     // displacement part per cell, its multipliers summed over their owners.

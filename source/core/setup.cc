@@ -363,9 +363,16 @@ namespace tribos
         mpi_communicator,
         parameters.finite_element.axisymmetric);
       // Contact couples this process's slave nodes to master nodes
-      // anywhere: their dofs count as relevant (ghosted, constrained).
+      // anywhere: the constraints and the pattern know every contact dof.
+      // The solution is ghosted on the slave nodes this process reads; the
+      // master nodes' positions come with the search (on a shared mesh,
+      // whose constraints come from the cells alone, every contact dof is
+      // ghosted).
       const auto n_cell_relevant = locally_relevant_dofs.n_elements();
-      locally_relevant_dofs.add_indices(contact->contact_dofs());
+      if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
+        locally_relevant_dofs.add_indices(contact->ghost_dofs());
+      else
+        locally_relevant_dofs.add_indices(contact->contact_dofs());
       n_contact_ghosts = locally_relevant_dofs.n_elements() - n_cell_relevant;
       contact_output   = std::make_unique<ContactOutput<dim>>(*contact);
       for (const auto &w : contact->setup_warnings())
@@ -378,25 +385,34 @@ namespace tribos
       dof_handler.n_dofs() + n_multipliers;
     system_owned = IndexSet(n_system);
     system_owned.add_indices(locally_owned_dofs);
+    coupled_dofs = locally_relevant_dofs;
+    if (contact)
+      coupled_dofs.add_indices(contact->contact_dofs());
     system_relevant = IndexSet(n_system);
     system_relevant.add_indices(locally_relevant_dofs);
+    system_coupled = IndexSet(n_system);
+    system_coupled.add_indices(coupled_dofs);
     if (n_multipliers > 0)
     {
       // A node's multipliers belong to the process that owns the node (and
-      // evaluates it); every process reads all of them (the contact zone's
-      // unknowns, few against the dofs).
+      // evaluates it), the only one that reads them.
       for (const auto &pair : contact->pairs())
       {
         const unsigned int n = pair.enforcement->n_node_unknowns();
         for (unsigned int k = 0; k < pair.n_nodes() && n > 0; ++k)
           if (pair.owned[k])
+          {
             system_owned.add_range(pair.first_unknown + n * k,
                                    pair.first_unknown + n * (k + 1));
+            system_relevant.add_range(pair.first_unknown + n * k,
+                                      pair.first_unknown + n * (k + 1));
+          }
       }
-      system_relevant.add_range(dof_handler.n_dofs(), n_system);
+      system_coupled.add_range(dof_handler.n_dofs(), n_system);
     }
     system_owned.compress();
     system_relevant.compress();
+    system_coupled.compress();
 
     make_constraints(0, true, homogeneous_constraints);
     make_sparsity();
@@ -466,7 +482,7 @@ namespace tribos
     // Contact couples slave nodes with master faces of other cells, often of
     // other bodies: those couplings join the bulk pattern, and the pattern
     // is rebuilt when the search meets a new slave-face pair.
-    DynamicSparsityPattern dsp(system_relevant);
+    DynamicSparsityPattern dsp(system_coupled);
     if (n_multipliers == 0)
       DoFTools::make_sparsity_pattern(dof_handler,
                                       dsp,
@@ -489,7 +505,7 @@ namespace tribos
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                system_owned,
                                                mpi_communicator,
-                                               system_relevant);
+                                               system_coupled);
     // Whatever holds on to the old matrix goes first.
     if (linear_solver)
       linear_solver->release_matrix();
@@ -506,7 +522,7 @@ namespace tribos
                                  AffineConstraints<double> &constraints) const
   {
     constraints.clear();
-    constraints.reinit(system_relevant);
+    constraints.reinit(system_coupled);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
 
     // Dirichlet: du = g(t) - u on the constrained dofs, or du = 0.
@@ -547,7 +563,7 @@ namespace tribos
 
     if (!bc.symmetry.empty())
     {
-      AffineConstraints<double>          symmetry(system_relevant);
+      AffineConstraints<double>          symmetry(system_coupled);
       const std::set<types::boundary_id> ids(bc.symmetry.begin(),
                                              bc.symmetry.end());
       VectorTools::compute_no_normal_flux_constraints(dof_handler,
@@ -565,7 +581,7 @@ namespace tribos
       // close() resolves the chains.
       if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
       {
-        AffineConstraints<double> own(system_relevant);
+        AffineConstraints<double> own(system_coupled);
         for (const auto &line : symmetry.get_lines())
           if (locally_owned_dofs.is_element(line.index))
           {
@@ -585,7 +601,7 @@ namespace tribos
     if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
       import_constraints(constraints,
                          owned_per_process,
-                         locally_relevant_dofs,
+                         coupled_dofs,
                          mpi_communicator);
     constraints.close();
   }

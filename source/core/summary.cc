@@ -54,6 +54,19 @@ namespace tribos
       Utilities::MPI::min_max_avg(double(n_contact_ghosts), mpi_communicator);
     const auto crossings =
       contact ? contact->process_crossings() : std::pair<unsigned, unsigned>();
+    // The master exchange of the contact search: the most values one
+    // search brought to a process, and the mean per search.
+    const auto exchange_largest =
+      Utilities::MPI::min_max_avg(contact ?
+                                    double(contact->exchange_volume().largest) :
+                                    0.,
+                                  mpi_communicator);
+    const auto exchange_mean = Utilities::MPI::min_max_avg(
+      contact && contact->exchange_volume().n_searches > 0 ?
+        double(contact->exchange_volume().total) /
+          contact->exchange_volume().n_searches :
+        0.,
+      mpi_communicator);
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
     const auto peak_memory =
@@ -124,6 +137,11 @@ namespace tribos
           out << "ghost values      max " << ghosts.max << " per process ("
               << 8 * ghosts.max << " bytes per update), of which contact "
               << contact_ghosts.max << '\n';
+          if (contact)
+            out << "master exchange   max " << exchange_largest.max
+                << " values per process and search ("
+                << 8 * exchange_largest.max << " bytes), mean "
+                << exchange_mean.max << '\n';
           if (contact)
             out << "contact across processes " << crossings.first
                 << " slave nodes at the end, " << crossings.second

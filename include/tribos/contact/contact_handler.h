@@ -44,11 +44,41 @@ namespace tribos
       const MPI_Comm                                   mpi_communicator,
       const bool                                       axisymmetric = false);
 
-    /** The dofs of every contact node: they must be ghosted on all ranks. */
+    /**
+     * The dofs of every contact node. Contact may couple a slave node with
+     * any of them: the constraints and the sparsity pattern of a process
+     * know them all.
+     */
     const IndexSet &
     contact_dofs() const
     {
       return all_contact_dofs;
+    }
+
+    /**
+     * The dofs of the slave nodes this process reads
+     * (ContactPair::read_slave_nodes): the solution must be ghosted on
+     * them. The master nodes' positions come by exchange_master_nodes().
+     */
+    const IndexSet &
+    ghost_dofs() const
+    {
+      return slave_read_dofs;
+    }
+
+    /** What the master exchanges of update() brought to this process:
+     * values (numbers) received, the most in one search and in all, and
+     * the number of searches. */
+    struct ExchangeVolume
+    {
+      std::size_t  largest    = 0;
+      std::size_t  total      = 0;
+      unsigned int n_searches = 0;
+    };
+    const ExchangeVolume &
+    exchange_volume() const
+    {
+      return exchange;
     }
 
     /**
@@ -70,7 +100,7 @@ namespace tribos
 
     /**
      * Search at the unknowns @p solution (displacements ghosted on
-     * contact_dofs(), then the multipliers) and time @p time: pair every
+     * ghost_dofs(), then the multipliers) and time @p time: pair every
      * slave node with a master point and read the multipliers. Collective.
      */
     void
@@ -255,6 +285,8 @@ namespace tribos
     Pairing<dim>                  pairing;
     ChatteringMonitor<dim>        monitor;
     IndexSet                      all_contact_dofs;
+    IndexSet                      slave_read_dofs;
+    ExchangeVolume                exchange;
     double                        force_weight           = 1;
     types::global_dof_index       n_enforcement_unknowns = 0;
     /** Unknowns below this number are displacements. */

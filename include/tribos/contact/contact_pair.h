@@ -93,7 +93,29 @@ namespace tribos
     std::vector<Vec3<double>> slave_positions, old_slave_positions;
     std::vector<Vec3<double>> master_positions, old_master_positions;
 
-    /** The master's search tree (deformable masters). */
+    /**
+     * The slave nodes whose positions this process reads: its own, and
+     * the nodes of the elements it evaluates (mortar: their stencils).
+     * Their dofs are ghosted; the positions of other slave nodes are not
+     * kept up to date.
+     */
+    std::vector<unsigned int> read_slave_nodes;
+    /** Deformable masters: per master node, whether this process owns its
+     * dofs (it sends the node's positions to the processes that need it). */
+    std::vector<bool> master_owned;
+    /**
+     * Deformable masters, at the last search (MasterExchange): per master
+     * node, whether master_positions and old_master_positions hold its
+     * positions; per master face, whether its nodes (with a smoothed
+     * master also the nodes beyond its ends) do; and the known faces, in
+     * the search tree. Every face that can reach a slave node this process
+     * evaluates is known, with its neighbours.
+     */
+    std::vector<bool>         master_known, face_known;
+    std::vector<unsigned int> known_faces;
+
+    /** The master's search tree over the known faces (deformable
+     * masters). */
     ContactSearch<dim> search;
     /** (slave node, master face) pairs coupled in the sparsity pattern. */
     std::set<std::pair<unsigned int, unsigned int>> couplings;

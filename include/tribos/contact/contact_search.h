@@ -26,15 +26,22 @@ namespace tribos
     operator=(ContactSearch &&) noexcept;
     ~ContactSearch();
 
-    /** (Re)build the tree for the faces of @p surface at @p positions
-     * (one per surface node). */
+    /**
+     * (Re)build the tree for the faces @p faces of @p surface (their
+     * numbers, ascending) at @p positions (one per surface node; only the
+     * nodes of these faces are read). Under MPI a process holds the faces
+     * that can reach its own slave nodes (MasterExchange), not the whole
+     * surface.
+     */
     void
     build(const ContactSurface<dim>       &surface,
+          const std::vector<unsigned int> &faces,
           const std::vector<Vec3<double>> &positions);
 
     /**
-     * The face closest to @p point and the squared distance to it.
-     * Returns false if the surface has no faces.
+     * The face closest to @p point among those of the tree (its number on
+     * the surface) and the squared distance to it. Returns false if the
+     * tree has no faces.
      */
     bool
     closest_face(const Vec3<double> &point,
@@ -44,6 +51,8 @@ namespace tribos
   private:
     struct Tree;
     std::unique_ptr<Tree> tree;
+    /** The surface's number of each face of the tree. */
+    std::vector<unsigned int> face_numbers;
   };
 } // namespace tribos
 

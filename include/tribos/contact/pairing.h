@@ -28,17 +28,40 @@ namespace tribos
   class Pairing
   {
   public:
-    explicit Pairing(const Parameters::Contact &parameters);
+    Pairing(const Parameters::Contact &parameters, const MPI_Comm communicator);
 
     /**
-     * Read the positions of @p pair's nodes (and, with unknowns, the
-     * multipliers) from @p solution, and pair every owned slave node.
-     * Registers new (slave node, master face) couplings; returns whether
-     * one was new.
+     * Read the positions of the slave nodes this process reads (and, with
+     * unknowns, the multipliers) from @p solution, make the master faces
+     * that can reach them known (exchange_master_nodes()), and pair every
+     * owned slave node. Registers new (slave node, master face) couplings;
+     * returns whether one was new. Collective.
      */
     bool
     update(ContactPair<dim>                    &pair,
-           const TrilinosWrappers::MPI::Vector &solution) const;
+           const TrilinosWrappers::MPI::Vector &solution);
+
+    /** The values this process received from the others in the master
+     * exchanges of the last update() of each pair, summed over the pairs
+     * since the last reset. */
+    std::size_t
+    take_received_values()
+    {
+      const std::size_t n = n_received;
+      n_received          = 0;
+      return n;
+    }
+
+    /** The seconds update() spent in the master exchanges since the last
+     * call: collective, so partly waiting for the other processes (not
+     * this process's own contact work). */
+    double
+    take_exchange_seconds()
+    {
+      const double s   = exchange_seconds;
+      exchange_seconds = 0;
+      return s;
+    }
 
   private:
     /**
@@ -87,6 +110,9 @@ namespace tribos
     pair_mortar(ContactPair<dim> &pair, const unsigned int k) const;
 
     const Parameters::Contact &parameters;
+    MPI_Comm                   communicator;
+    std::size_t                n_received       = 0;
+    double                     exchange_seconds = 0;
   };
 
 

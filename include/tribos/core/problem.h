@@ -385,12 +385,18 @@ namespace tribos
     QGauss<dim - 1>                                   face_quadrature;
 
     IndexSet locally_owned_dofs;
+    /** The dofs the ghosted vectors hold: those of the own and ghost
+     * cells, and the slave nodes this process reads
+     * (ContactHandler::ghost_dofs(); a shared mesh: every contact dof). */
     IndexSet locally_relevant_dofs;
+    /** The dofs the constraints and the sparsity pattern know: the
+     * relevant ones and every contact dof (contact writes rows and columns
+     * of master dofs anywhere). */
+    IndexSet coupled_dofs;
     /** Every process's locally owned dofs. */
     std::vector<IndexSet> owned_per_process;
-    /** Dofs ghosted on this process only because contact couples them to
-     * its slave nodes (master and slave nodes beyond its cells): the
-     * contact's share of every ghost update. */
+    /** Dofs ghosted on this process only because of contact (slave nodes
+     * beyond its cells): the contact's share of every ghost update. */
     types::global_dof_index n_contact_ghosts = 0;
     /**
      * The unknowns of the linear system: the displacement dofs followed by
@@ -399,8 +405,10 @@ namespace tribos
      * the displacement (solution) lives on the dofs alone, the multipliers
      * in the contact handler.
      */
-    IndexSet                system_owned;
-    IndexSet                system_relevant;
+    IndexSet system_owned;
+    IndexSet system_relevant;
+    /** coupled_dofs and the multipliers. */
+    IndexSet                system_coupled;
     types::global_dof_index n_multipliers = 0;
 
     AffineConstraints<double> homogeneous_constraints;

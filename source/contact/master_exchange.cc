@@ -1,0 +1,135 @@
+#include <tribos/contact/master_exchange.h>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <map>
+
+namespace tribos
+{
+  template <int dim>
+  std::size_t
+  exchange_master_nodes(ContactPair<dim>                    &pair,
+                        const TrilinosWrappers::MPI::Vector &solution,
+                        const double                         search_distance,
+                        const MPI_Comm                       communicator)
+  {
+    const auto        &nodes = pair.master->nodes();
+    const auto        &faces = pair.master->faces();
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(communicator);
+    const auto         position = [&](const unsigned int n)
+    {
+      Vec3<double> x = nodes[n].reference;
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] += solution[nodes[n].dofs[d]];
+      return x;
+    };
+
+    // The own master nodes now; their committed positions are kept by the
+    // commit. The largest face diameter, measured from the own nodes (the
+    // other nodes of their faces are on cells at an own vertex: own or
+    // ghost cells).
+    std::fill(pair.master_known.begin(), pair.master_known.end(), false);
+    double h = 0;
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      if (pair.master_owned[n])
+      {
+        pair.master_positions[n] = position(n);
+        pair.master_known[n]     = true;
+        for (const unsigned int f : nodes[n].faces)
+          for (unsigned int i = 0; i < faces[f].n_nodes(); ++i)
+            h = std::max(h,
+                         norm(pair.master_positions[n] -
+                              position(faces[f].node(i))));
+      }
+
+    // The box of the slave nodes this process reads (empty: lo > hi),
+    // and h.
+    constexpr double      inf = std::numeric_limits<double>::infinity();
+    std::array<double, 7> box = {{inf, inf, inf, -inf, -inf, -inf, h}};
+    for (const unsigned int k : pair.read_slave_nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        box[d]     = std::min(box[d], pair.slave_positions[k][d]);
+        box[3 + d] = std::max(box[3 + d], pair.slave_positions[k][d]);
+      }
+    const auto boxes = Utilities::MPI::all_gather(communicator, box);
+    for (const auto &other : boxes)
+      h = std::max(h, other[6]);
+    const double reach = search_distance + 3 * h;
+
+    // To every other process, the own nodes within its box widened by the
+    // reach: number, position now, position at the last commit.
+    std::map<unsigned int, std::vector<double>> send;
+    for (unsigned int r = 0; r < boxes.size(); ++r)
+    {
+      if (r == rank || boxes[r][0] > boxes[r][3])
+        continue;
+      std::vector<double> *records = nullptr;
+      for (unsigned int n = 0; n < nodes.size(); ++n)
+      {
+        if (!pair.master_owned[n])
+          continue;
+        const Vec3<double> &x      = pair.master_positions[n];
+        bool                inside = true;
+        for (unsigned int d = 0; d < dim && inside; ++d)
+          inside =
+            x[d] >= boxes[r][d] - reach && x[d] <= boxes[r][3 + d] + reach;
+        if (!inside)
+          continue;
+        if (records == nullptr)
+          records = &send[r];
+        records->push_back(n);
+        for (unsigned int d = 0; d < dim; ++d)
+          records->push_back(x[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          records->push_back(pair.old_master_positions[n][d]);
+      }
+    }
+    std::size_t n_received = 0;
+    for (const auto &[from, records] :
+         Utilities::MPI::some_to_some(communicator, send))
+    {
+      n_received += records.size();
+      for (std::size_t i = 0; i < records.size(); i += 1 + 2 * dim)
+      {
+        const auto n = static_cast<unsigned int>(records[i]);
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          pair.master_positions[n][d]     = records[i + 1 + d];
+          pair.old_master_positions[n][d] = records[i + 1 + dim + d];
+        }
+        pair.master_known[n] = true;
+      }
+    }
+
+    // The faces whose nodes are known (a smoothed master: and the nodes
+    // beyond its ends), in the order of the surface.
+    pair.known_faces.clear();
+    for (unsigned int f = 0; f < faces.size(); ++f)
+    {
+      bool known = true;
+      for (unsigned int i = 0; i < faces[f].n_nodes() && known; ++i)
+        known = pair.master_known[faces[f].node(i)];
+      if (pair.smoothed)
+        for (const int m : faces[f].beyond)
+          known = known && (m < 0 || pair.master_known[m]);
+      pair.face_known[f] = known;
+      if (known)
+        pair.known_faces.push_back(f);
+    }
+    pair.search.build(*pair.master, pair.known_faces, pair.master_positions);
+    return n_received;
+  }
+
+  template std::size_t
+  exchange_master_nodes(ContactPair<2> &,
+                        const TrilinosWrappers::MPI::Vector &,
+                        const double,
+                        const MPI_Comm);
+  template std::size_t
+  exchange_master_nodes(ContactPair<3> &,
+                        const TrilinosWrappers::MPI::Vector &,
+                        const double,
+                        const MPI_Comm);
+} // namespace tribos

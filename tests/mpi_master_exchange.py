@@ -1,0 +1,84 @@
+"""MPI, the distributed contact search with a finite Contact/Search
+distance: each process receives only the master nodes within the search
+distance (plus three face sizes) of the slave nodes it evaluates and builds
+its search tree over their faces (exchange_master_nodes). The frictional
+ironing (2D, node to segment and mortar, Search distance = 0.1) and the
+frictional 3D blocks (Search distance = 0.05, master faces passing to
+another process while they slide) at `mpirun -np 2` and `-np 3` give the
+serial history and last contact-NNNNN.csv to 1e-8 (slave nodes beyond the
+search distance: COPEN nan in both); the serial history equals the one
+with no search limit (the nodes beyond 0.1 are open either way); and the
+most values a process receives per search in the ironing is below the
+whole master surface's (which it receives with no limit)."""
+
+import os
+import re
+import sys
+
+from tribos_test import setup, run, strip_columns, numdiff, check, finish
+
+tribos, tests, out = setup(sys.argv)
+noisy = ("wall_time", "residual", "newton_iterations",
+         "newton_iterations_all", "chattering_nodes")
+
+
+def exchanged(folder):
+    """The most values one process received in one search (summary.txt)."""
+    text = open(folder + "/summary.txt").read()
+    found = re.search(r"master exchange\s+max ([\d.e+]+) values", text)
+    check(found is not None, "%s: summary.txt reports the master exchange"
+          % os.path.basename(folder))
+    return float(found.group(1))
+
+
+def last_contact(folder):
+    return sorted(f for f in os.listdir(folder) if f.startswith("contact-"))[-1]
+
+
+cases = [("ironing_nts", "ironing_2d", "0.1", []),
+         ("ironing_mortar", "ironing_2d", "0.1",
+          ["Contact/Discretization=mortar"]),
+         ("blocks_3d", "sliding_blocks_3d", "0.05", [])]
+for name, scene, distance, sets in cases:
+    prm = "%s/%s.prm" % (tests, scene)
+    sets = sets + ["Output/Write VTU=false"]
+    local = sets + ["Contact/Search distance=" + distance]
+    serial = out + "/" + name + "_np1"
+    run(tribos, prm, serial, local)
+    strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
+    unlimited = out + "/" + name + "_unlimited"
+    run(tribos, prm, unlimited, sets)
+    strip_columns(unlimited + "/history.csv", unlimited + "/h.csv",
+                  drop=noisy)
+    numdiff(serial + "/h.csv", unlimited + "/h.csv", relative=1e-8,
+            absolute=1e-8)
+    print("ok      %s: Search distance = %s gives the history of no limit"
+          % (name, distance))
+    for ranks in (2, 3):
+        parallel = out + "/%s_np%d" % (name, ranks)
+        run(tribos, prm, parallel, local, mpi_ranks=ranks)
+        strip_columns(parallel + "/history.csv", parallel + "/h.csv",
+                      drop=noisy)
+        numdiff(parallel + "/h.csv", serial + "/h.csv", relative=1e-8,
+                absolute=1e-8)
+        numdiff(parallel + "/" + last_contact(serial),
+                serial + "/" + last_contact(serial), relative=1e-8,
+                absolute=1e-10)
+        print("ok      %s: np %d history and %s equal the serial ones"
+              % (name, ranks, last_contact(serial)))
+    if scene == "sliding_blocks_3d":
+        summary = open(out + "/%s_np3/summary.txt" % name).read()
+        changes = re.search(r"(\d+) master face changes of process",
+                            summary)
+        check(changes is not None and int(changes.group(1)) > 0,
+              "%s: np 3 pairs slave nodes with master faces that change "
+              "process" % name)
+    if scene == "ironing_2d":
+        whole = out + "/%s_whole_np2" % name
+        run(tribos, prm, whole, sets, mpi_ranks=2)
+        received, everything = exchanged(out + "/%s_np2" % name), \
+            exchanged(whole)
+        check(0 < received < everything,
+              "%s: np 2 receives at most %g values per search, below the "
+              "whole master surface's %g" % (name, received, everything))
+finish()
