@@ -12,11 +12,12 @@ Cases (Parallel/Mesh = distributed unless the variant says shared):
   then slid by two elements in one), one process (which
   assembles with both cores' threads) and one process with one thread
   against `mpirun -np 2`, alternating, medians of --runs;
-* communication: the same scene at three sizes, np 2: the values each
-  process receives per update of the ghosted solution (the bytes of a
-  search's position update), the contact's share of them (master and slave
-  nodes beyond the process's cells), the slave nodes paired with another
-  process's master face;
+* communication: the same scene at three sizes with Contact/Search
+  distance = 0.05 (and the largest with no limit), np 2: the values each
+  process receives per update of the ghosted solution, the contact's share
+  of them (slave nodes beyond the process's cells), the master node values
+  a process receives per search (the most in one search, and the mean),
+  the slave nodes paired with another process's master face;
 * memory: the paper's cylinder (J2, frictionless plate, penalty) at 314k
   dofs, the first step, np 2, shared against distributed mesh: peak memory
   per process and in all, and the ghost values;
@@ -80,6 +81,8 @@ SHARED = ["Parallel/Mesh=shared"]
 ITERATIVE = ["Linear solver/Type=iterative"]
 DIRECT = ["Linear solver/Type=direct"]
 LM = ["Contact/Method=lagrange multiplier"]
+# 2.7 elements of the lower block at refinement 3 (0.15 / 2^3).
+SEARCH = ["Contact/Search distance=0.05"]
 # One process without the assembly's second thread: the classic strong
 # scaling baseline beside tribos' default one (both cores' threads).
 ONE_THREAD = {"env": {"DEAL_II_NUM_THREADS": "1"}}
@@ -101,7 +104,9 @@ def variant(case, extra):
 CASES = {
     "speedup": [("np1", blocks(3), 1), ("np2", blocks(3), 2),
                 ("np1 one thread", blocks(3), ONE_THREAD)],
-    "communication": [("refinement %d" % r, blocks(r), 2) for r in (1, 2, 3)],
+    "communication": [("refinement %d" % r, variant(blocks(r), SEARCH), 2)
+                      for r in (1, 2, 3)]
+    + [("refinement 3 no limit", blocks(3), 2)],
     "memory": [("shared", (CYLINDER, cylinder(3, 2, 1)[1] + SHARED), 2),
                ("distributed", cylinder(3, 2, 1), 2)],
     "multipliers": [
@@ -133,6 +138,8 @@ SUMMARY_VALUES = [
      r"all", ("peak_mb_process", "peak_mb_all"), float),
     (r"ghost values\s+max ([\d.e+]+) per process .* of which contact "
      r"([\d.e+]+)", ("ghost_values", "contact_ghost_values"), float),
+    (r"master exchange\s+max ([\d.e+]+) values .* mean ([\d.e+]+)",
+     ("exchange_values_max", "exchange_values_mean"), float),
     (r"contact across processes (\d+) slave nodes", ("paired_across",), int),
     (r"balance contact\s+min ([\d.e+-]+) s, max ([\d.e+-]+) s",
      ("contact_time_min", "contact_time_max"), float),
@@ -219,7 +226,8 @@ def main():
                "contact_search", "linear_solve", "linear_iterations",
                "outer_iterations",
                "peak_mb_process", "peak_mb_all", "ghost_values",
-               "contact_ghost_values", "paired_across", "contact_time_min",
+               "contact_ghost_values", "exchange_values_max",
+               "exchange_values_mean", "paired_across", "contact_time_min",
                "contact_time_max", "slave_nodes_min", "slave_nodes_max"]
     # The rows of the cases not run stay as they were.
     rows = with_earlier_rows(args.out, rows, names)
