@@ -438,10 +438,9 @@ namespace tribos
       if (pair.master)
       {
         const auto &master_nodes = pair.master->nodes();
-        pair.master_owned.resize(master_nodes.size());
         for (unsigned int n = 0; n < master_nodes.size(); ++n)
-          pair.master_owned[n] =
-            locally_owned_dofs.is_element(master_nodes[n].dofs[0]);
+          if (locally_owned_dofs.is_element(master_nodes[n].dofs[0]))
+            pair.owned_master_nodes.push_back(n);
         pair.master_known.assign(master_nodes.size(), false);
         pair.face_known.assign(pair.master->faces().size(), false);
       }

@@ -25,57 +25,72 @@ namespace tribos
       return x;
     };
 
-    // The own master nodes now; their committed positions are kept by the
-    // commit. The largest face diameter, measured from the own nodes (the
-    // other nodes of their faces are on cells at an own vertex: own or
-    // ghost cells).
+    // The own master nodes now (their committed positions are kept by the
+    // commit) and their box. The largest face diameter, measured from the
+    // own nodes (the other nodes of their faces are on cells at an own
+    // vertex: own or ghost cells).
     std::fill(pair.master_known.begin(), pair.master_known.end(), false);
-    double h = 0;
-    for (unsigned int n = 0; n < nodes.size(); ++n)
-      if (pair.master_owned[n])
-      {
-        pair.master_positions[n] = position(n);
-        pair.master_known[n]     = true;
-        for (const unsigned int f : nodes[n].faces)
-          for (unsigned int i = 0; i < faces[f].n_nodes(); ++i)
-            h = std::max(h,
-                         norm(pair.master_positions[n] -
-                              position(faces[f].node(i))));
-      }
-
-    // The box of the slave nodes this process reads (empty: lo > hi),
-    // and h.
-    constexpr double      inf = std::numeric_limits<double>::infinity();
-    std::array<double, 7> box = {{inf, inf, inf, -inf, -inf, -inf, h}};
-    for (const unsigned int k : pair.read_slave_nodes)
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    // A box: lower corner, upper corner (empty: lower > upper), and h.
+    using Box         = std::array<double, 7>;
+    Box        own    = {{inf, inf, inf, -inf, -inf, -inf, 0}};
+    double     h      = 0;
+    const auto extend = [](Box &box, const Vec3<double> &x)
+    {
       for (unsigned int d = 0; d < dim; ++d)
       {
-        box[d]     = std::min(box[d], pair.slave_positions[k][d]);
-        box[3 + d] = std::max(box[3 + d], pair.slave_positions[k][d]);
+        box[d]     = std::min(box[d], x[d]);
+        box[3 + d] = std::max(box[3 + d], x[d]);
       }
+    };
+    for (const unsigned int n : pair.owned_master_nodes)
+    {
+      pair.master_positions[n] = position(n);
+      pair.master_known[n]     = true;
+      extend(own, pair.master_positions[n]);
+      for (const unsigned int f : nodes[n].faces)
+        for (unsigned int i = 0; i < faces[f].n_nodes(); ++i)
+          h = std::max(h,
+                       norm(pair.master_positions[n] -
+                            position(faces[f].node(i))));
+    }
+
+    // The box of the slave nodes this process reads, and h, from all.
+    Box box = {{inf, inf, inf, -inf, -inf, -inf, h}};
+    for (const unsigned int k : pair.read_slave_nodes)
+      extend(box, pair.slave_positions[k]);
     const auto boxes = Utilities::MPI::all_gather(communicator, box);
     for (const auto &other : boxes)
       h = std::max(h, other[6]);
     const double reach = search_distance + 3 * h;
 
+    // Whether the box from x to y (a point: x = y) meets the box other
+    // widened by the reach.
+    const auto within =
+      [&](const Box &other, const Vec3<double> &x, const Vec3<double> &y)
+    {
+      bool inside = true;
+      for (unsigned int d = 0; d < dim && inside; ++d)
+        inside = y[d] >= other[d] - reach && x[d] <= other[3 + d] + reach;
+      return inside;
+    };
+
     // To every other process, the own nodes within its box widened by the
-    // reach: number, position now, position at the last commit.
+    // reach: number, position now, position at the last commit. A process
+    // whose box misses the own nodes' box gets nothing.
+    const Vec3<double> own_lo{{own[0], own[1], own[2]}},
+      own_hi{{own[3], own[4], own[5]}};
     std::map<unsigned int, std::vector<double>> send;
     for (unsigned int r = 0; r < boxes.size(); ++r)
     {
-      if (r == rank || boxes[r][0] > boxes[r][3])
+      if (r == rank || boxes[r][0] > boxes[r][3] ||
+          pair.owned_master_nodes.empty() || !within(boxes[r], own_lo, own_hi))
         continue;
       std::vector<double> *records = nullptr;
-      for (unsigned int n = 0; n < nodes.size(); ++n)
+      for (const unsigned int n : pair.owned_master_nodes)
       {
-        if (!pair.master_owned[n])
-          continue;
-        const Vec3<double> &x      = pair.master_positions[n];
-        bool                inside = true;
-        for (unsigned int d = 0; d < dim && inside; ++d)
-          inside =
-            x[d] >= boxes[r][d] - reach && x[d] <= boxes[r][3 + d] + reach;
-        if (!inside)
+        const Vec3<double> &x = pair.master_positions[n];
+        if (!within(boxes[r], x, x))
           continue;
         if (records == nullptr)
           records = &send[r];

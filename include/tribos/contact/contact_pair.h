@@ -100,9 +100,9 @@ namespace tribos
      * kept up to date.
      */
     std::vector<unsigned int> read_slave_nodes;
-    /** Deformable masters: per master node, whether this process owns its
-     * dofs (it sends the node's positions to the processes that need it). */
-    std::vector<bool> master_owned;
+    /** Deformable masters: the master nodes whose dofs this process owns
+     * (it sends their positions to the processes that need them). */
+    std::vector<unsigned int> owned_master_nodes;
     /**
      * Deformable masters, at the last search (MasterExchange): per master
      * node, whether master_positions and old_master_positions hold its
