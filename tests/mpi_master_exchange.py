@@ -1,6 +1,7 @@
 """MPI, the distributed contact search with a finite Contact/Search
 distance: each process receives only the master nodes within the search
-distance (plus three face sizes) of the slave nodes it evaluates and builds
+distance (plus three face sizes; mortar: and five slave face sizes) of the
+slave nodes it evaluates and builds
 its search tree over their faces (exchange_master_nodes). The frictional
 ironing (2D, node to segment and mortar, Search distance = 0.1) and the
 frictional 3D blocks (Search distance = 0.05, master faces passing to
@@ -9,7 +10,8 @@ serial history and last contact-NNNNN.csv to 1e-8 (slave nodes beyond the
 search distance: COPEN nan in both); the serial history equals the one
 with no search limit (the nodes beyond 0.1 are open either way); and the
 most values a process receives per search in the ironing is below the
-whole master surface's (which it receives with no limit)."""
+whole master surface's on a block three times as wide (which it receives
+with no limit)."""
 
 import os
 import re
@@ -74,11 +76,18 @@ for name, scene, distance, sets in cases:
               "%s: np 3 pairs slave nodes with master faces that change "
               "process" % name)
     if scene == "ironing_2d":
-        whole = out + "/%s_whole_np2" % name
-        run(tribos, prm, whole, sets, mpi_ranks=2)
-        received, everything = exchanged(out + "/%s_np2" % name), \
-            exchanged(whole)
-        check(0 < received < everything,
-              "%s: np 2 receives at most %g values per search, below the "
-              "whole master surface's %g" % (name, received, everything))
+        # On a block three times as wide (the slave's reach, with mortar
+        # 5 slave segments more, spans the 4-wide block).
+        wide = ["Scene/Cylinder over block/Block width=12",
+                "Scene/Cylinder over block/Block subdivisions=96, 4",
+                "Time stepping/End time=1.25", "Time stepping/Number of steps=5"]
+        near, whole = out + "/%s_wide_np2" % name, \
+            out + "/%s_wide_whole_np2" % name
+        run(tribos, prm, near, local + wide, mpi_ranks=2)
+        run(tribos, prm, whole, sets + wide, mpi_ranks=2)
+        received, everything = exchanged(near), exchanged(whole)
+        check(0 < received < 0.6 * everything,
+              "%s, block width 12: np 2 receives at most %g values per "
+              "search, below 0.6 of the whole master surface's %g"
+              % (name, received, everything))
 finish()

@@ -31,9 +31,10 @@ namespace tribos
     // vertex: own or ghost cells).
     std::fill(pair.master_known.begin(), pair.master_known.end(), false);
     constexpr double inf = std::numeric_limits<double>::infinity();
-    // A box: lower corner, upper corner (empty: lower > upper), and h.
-    using Box         = std::array<double, 7>;
-    Box        own    = {{inf, inf, inf, -inf, -inf, -inf, 0}};
+    // A box: lower corner, upper corner (empty: lower > upper), h, and the
+    // reach beyond the search distance and 3 h that its process asks.
+    using Box         = std::array<double, 8>;
+    Box        own    = {{inf, inf, inf, -inf, -inf, -inf, 0, 0}};
     double     h      = 0;
     const auto extend = [](Box &box, const Vec3<double> &x)
     {
@@ -55,21 +56,41 @@ namespace tribos
                             position(faces[f].node(i))));
     }
 
-    // The box of the slave nodes this process reads, and h, from all.
-    Box box = {{inf, inf, inf, -inf, -inf, -inf, h}};
+    // The box of the slave nodes this process reads, and h, from all. A
+    // mortar element integrates every master face that overlaps its slave
+    // faces and faces them, however far, once one is within the search
+    // distance: over a slave face of size L (Q2: plus a quarter), a master
+    // that rises at up to 75 degrees to it (the steepest it takes, tan 75 =
+    // 3.7) stays within 3.7 * 1.25 L < 5 L of the closest face. Mortar
+    // boxes ask 5 L more (the largest L of their faces).
+    Box box = {{inf, inf, inf, -inf, -inf, -inf, h, 0}};
     for (const unsigned int k : pair.read_slave_nodes)
+    {
       extend(box, pair.slave_positions[k]);
+      if (pair.mortar)
+        for (const unsigned int f : pair.slave->nodes()[k].faces)
+          for (unsigned int i = 0; i < pair.slave->faces()[f].n_nodes(); ++i)
+          {
+            const unsigned int m = pair.slave->faces()[f].node(i);
+            if (std::binary_search(pair.read_slave_nodes.begin(),
+                                   pair.read_slave_nodes.end(),
+                                   m))
+              box[7] = std::max(box[7],
+                                5 * norm(pair.slave_positions[k] -
+                                         pair.slave_positions[m]));
+          }
+    }
     const auto boxes = Utilities::MPI::all_gather(communicator, box);
     for (const auto &other : boxes)
       h = std::max(h, other[6]);
-    const double reach = search_distance + 3 * h;
 
     // Whether the box from x to y (a point: x = y) meets the box other
-    // widened by the reach.
+    // widened by its reach.
     const auto within =
       [&](const Box &other, const Vec3<double> &x, const Vec3<double> &y)
     {
-      bool inside = true;
+      const double reach  = search_distance + 3 * h + other[7];
+      bool         inside = true;
       for (unsigned int d = 0; d < dim && inside; ++d)
         inside = y[d] >= other[d] - reach && x[d] <= other[3 + d] + reach;
       return inside;

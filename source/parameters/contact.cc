@@ -229,9 +229,10 @@ namespace tribos
                         "Slave nodes farther than this from every master "
                         "face are not projected (open, no gap). 0: no "
                         "limit. Under MPI each process receives the master "
-                        "nodes within this distance (plus three face sizes) "
-                        "of its slave nodes at every search: with 0, the "
-                        "whole master surface.");
+                        "nodes within this distance (plus three face "
+                        "sizes; mortar: and five slave face sizes) of its "
+                        "slave nodes at every search: with 0, the whole "
+                        "master surface.");
       prm.declare_entry("Augmentation tolerance",
                         "1e-4",
                         dealii::Patterns::Double(0),

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <map>
 
 namespace tribos
@@ -321,8 +322,11 @@ namespace tribos
       }
     for (const auto &[first_dof, v] : per_node)
     {
-      const auto dof  = scalar_dof.at(first_dof);
-      scalars[1][dof] = v.has_gap ? v.gap : 0.;
+      const auto dof = scalar_dof.at(first_dof);
+      // A slave node beyond the search distance has no gap: nan, not 0
+      // (which would read as touching).
+      scalars[1][dof] =
+        v.has_gap ? v.gap : std::numeric_limits<double>::quiet_NaN();
       scalars[2][dof] = v.slip / v.area;
       scalars[3][dof] = v.status;
       if (v.closed_area > 0)

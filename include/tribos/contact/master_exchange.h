@@ -27,8 +27,14 @@ namespace tribos
    * plus h, its neighbours' nodes within plus 2 h, and the nodes beyond
    * those neighbours' ends (smoothed masters) within plus 3 h. So every
    * face a slave node can pair with, every neighbour the projection looks
-   * at and every node its element reads are known, and the pairing is the
-   * one of a search over the whole surface. The volume sent per search
+   * at and every node its element reads are known, and the node-to-segment
+   * pairing is the one of a search over the whole surface. A mortar
+   * element integrates every overlapping face that faces it, however far,
+   * once one is within the search distance: mortar boxes reach 5 slave
+   * face sizes farther (a master rising at up to 75 degrees over a slave
+   * face). Beyond that reach (steeper masters, or an iterate that pushes
+   * a closed mortar node deeper than the reach) a process would miss faces
+   * a search over the whole surface sees. The volume sent per search
    * scales with the contact interface of each process, not with the mesh
    * nor the whole surface. With Search distance = 0 (no limit) every
    * process receives every master node.
