@@ -54,11 +54,11 @@ namespace tribos
     bool new_coupling = false;
     for (auto &pair : contact_pairs)
       new_coupling = pairing.update(pair, solution) || new_coupling;
-    const std::size_t n_received = pairing.take_received_values();
-    exchange.largest             = std::max(exchange.largest, n_received);
-    exchange.total += n_received;
+    const auto exchanged = pairing.take_exchanged();
+    exchange.largest     = std::max(exchange.largest, exchanged.values);
+    exchange.total += exchanged.values;
     ++exchange.n_searches;
-    own_seconds += seconds_since(start) - pairing.take_exchange_seconds();
+    own_seconds += seconds_since(start) - exchanged.seconds;
     if (Utilities::MPI::max(new_coupling ? 1 : 0, mpi_communicator) == 1)
       outdated = true;
   }

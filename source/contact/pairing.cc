@@ -80,11 +80,11 @@ namespace tribos
       return false;
     }
     const auto start = std::chrono::steady_clock::now();
-    n_received += exchange_master_nodes(pair,
-                                        solution,
-                                        parameters.search_distance,
-                                        communicator);
-    exchange_seconds += seconds_since(start);
+    exchanged.values += exchange_master_nodes(pair,
+                                              solution,
+                                              parameters.search_distance,
+                                              communicator);
+    exchanged.seconds += seconds_since(start);
 
     bool                      new_coupling = false;
     std::vector<unsigned int> faces;

@@ -135,21 +135,28 @@ namespace tribos
     AssertThrow(c.stepper.step == step,
                 ExcInternalError("checkpoint of another step"));
 
-    // The displacement part of the solution, then the multipliers (each
-    // from its owner, summed over the processes).
+    // The multipliers of a system vector, each from its owner, summed over
+    // the processes (only the owner has a node's multipliers).
+    const auto multipliers_of = [&](const Vector &v)
+    {
+      std::vector<double> values(n_multipliers, 0.);
+      for (const auto i : system_owned)
+        if (i >= dof_handler.n_dofs())
+          values[i - dof_handler.n_dofs()] = v[i];
+      Utilities::MPI::sum(values, mpi_communicator, values);
+      return values;
+    };
+
+    // The displacement part of the solution, then the multipliers.
     Vector owned(locally_owned_dofs, mpi_communicator);
     for (const auto i : locally_owned_dofs)
       owned[i] = owned_solution[i];
     owned.compress(VectorOperation::insert);
     c.cell_values["solution"] = cell_values(owned, &c.cells);
-    c.multipliers.assign(n_multipliers, 0.);
-    for (const auto i : system_owned)
-      if (i >= dof_handler.n_dofs())
-        c.multipliers[i - dof_handler.n_dofs()] = owned_solution[i];
-    Utilities::MPI::sum(c.multipliers, mpi_communicator, c.multipliers);
+    c.multipliers             = multipliers_of(owned_solution);
 
     // The last increment's change, which the next one extrapolates: its
-    // displacement part per cell, its multipliers summed over their owners.
+    // displacement part per cell, its multipliers.
     if (c.stepper.change_increment > 0)
     {
       const Vector &change = stepper->last_change();
@@ -157,13 +164,7 @@ namespace tribos
         owned[i] = change[i];
       owned.compress(VectorOperation::insert);
       c.cell_values["change"] = cell_values(owned);
-      c.multiplier_change.assign(n_multipliers, 0.);
-      for (const auto i : system_owned)
-        if (i >= dof_handler.n_dofs())
-          c.multiplier_change[i - dof_handler.n_dofs()] = change[i];
-      Utilities::MPI::sum(c.multiplier_change,
-                          mpi_communicator,
-                          c.multiplier_change);
+      c.multiplier_change     = multipliers_of(change);
     }
 
     // Plastic history of the owned cells, gathered in cell order.

@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <utility>
 #include <vector>
 
 namespace tribos
@@ -41,26 +42,21 @@ namespace tribos
     update(ContactPair<dim>                    &pair,
            const TrilinosWrappers::MPI::Vector &solution);
 
-    /** The values this process received from the others in the master
-     * exchanges of the last update() of each pair, summed over the pairs
-     * since the last reset. */
-    std::size_t
-    take_received_values()
+    /**
+     * What the master exchanges of update() took since the last call: the
+     * values this process received from the others, and the seconds
+     * (collective, so partly waiting for the other processes, not this
+     * process's own contact work).
+     */
+    struct Exchanged
     {
-      const std::size_t n = n_received;
-      n_received          = 0;
-      return n;
-    }
-
-    /** The seconds update() spent in the master exchanges since the last
-     * call: collective, so partly waiting for the other processes (not
-     * this process's own contact work). */
-    double
-    take_exchange_seconds()
+      std::size_t values  = 0;
+      double      seconds = 0;
+    };
+    Exchanged
+    take_exchanged()
     {
-      const double s   = exchange_seconds;
-      exchange_seconds = 0;
-      return s;
+      return std::exchange(exchanged, Exchanged());
     }
 
   private:
@@ -111,8 +107,7 @@ namespace tribos
 
     const Parameters::Contact &parameters;
     MPI_Comm                   communicator;
-    std::size_t                n_received       = 0;
-    double                     exchange_seconds = 0;
+    Exchanged                  exchanged;
   };
 
 
