@@ -122,9 +122,10 @@ expect mortar_3d_two_pass "mortar is one-pass" "$tribos" \
   --set "Contact/Passes=two-pass"
 expect mortar_two_pass "mortar is one-pass" "$tribos" "$tests/patch_test.prm" \
   --set "Contact/Discretization=mortar" --set "Contact/Passes=two-pass"
-expect mortar_smoothing "Master smoothing = none" "$tribos" \
+expect mortar_smoothing_q2 "Polynomial degree = 1 only" "$tribos" \
   "$tests/patch_test.prm" --set "Contact/Discretization=mortar" \
-  --set "Contact/Master smoothing=averaged normals"
+  --set "Contact/Master smoothing=averaged normals" \
+  --set "Finite element/Polynomial degree=2"
 expect mortar_pair_key "discretization <segment>" "$tribos" \
   "$tests/patch_test.prm" --set "Contact/Pairs=12 : 3 : discretization=segment"
 expect mortar_rigid "needs a deformable master" "$tribos" \

@@ -3,7 +3,8 @@ distance: each process receives only the master nodes within the search
 distance (plus three face sizes; mortar: and five slave face sizes) of the
 slave nodes it evaluates and builds
 its search tree over their faces (exchange_master_nodes). The frictional
-ironing (2D, node to segment and mortar, Search distance = 0.1) and the
+ironing (2D, node to segment, mortar and mortar with the master's
+averaged normals, Search distance = 0.1) and the
 frictional 3D blocks (Search distance = 0.05, master faces passing to
 another process while they slide) at `mpirun -np 2` and `-np 3` give the
 serial history and last contact-NNNNN.csv to 1e-8 (slave nodes beyond the
@@ -40,6 +41,10 @@ def last_contact(folder):
 cases = [("ironing_nts", "ironing_2d", "0.1", []),
          ("ironing_mortar", "ironing_2d", "0.1",
           ["Contact/Discretization=mortar"]),
+         # The element also reads the master nodes beyond its segments.
+         ("ironing_mortar_smoothed", "ironing_2d", "0.1",
+          ["Contact/Discretization=mortar",
+           "Contact/Master smoothing=averaged normals"]),
          ("blocks_3d", "sliding_blocks_3d", "0.05", [])]
 for name, scene, distance, sets in cases:
     prm = "%s/%s.prm" % (tests, scene)

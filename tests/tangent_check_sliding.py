@@ -2,7 +2,7 @@
 assembled residual (Nonlinear solver/Check tangent) in every Newton
 iteration of two sliding runs where slave nodes cross master faces: the
 2D ironing scene (deformable curved slave on a deformable master, also
-with the smoothed master) and 3D frictional block-on-block sliding
+with the smoothed master, node to segment and mortar) and 3D frictional block-on-block sliding
 (bilinear master faces). Asserts a
 relative error below 1e-6 everywhere (columns of all contact dofs and
 every 7th dof; with Lagrange multipliers also every multiplier column and
@@ -25,6 +25,9 @@ lagrange = ["Contact/Method=lagrange multiplier"]
 # the two one-sided derivatives.
 smoothed = ["Contact/Master smoothing=averaged normals",
             "Scene/Cylinder over block/Block subdivisions=31, 4"]
+# Mortar with the smoothed master's normals: the element's nodal normal
+# reads the master nodes beyond its segments.
+mortar = ["Contact/Discretization=mortar"]
 for name, prm, sets in (
         ("ironing_2d", "ironing_2d", ironing),
         ("sliding_blocks_3d", "sliding_blocks_3d", []),
@@ -32,7 +35,11 @@ for name, prm, sets in (
         ("sliding_blocks_3d lagrange", "sliding_blocks_3d", lagrange),
         ("ironing_2d smoothed", "ironing_2d", ironing + smoothed),
         ("ironing_2d smoothed lagrange", "ironing_2d",
-         ironing + smoothed + lagrange)):
+         ironing + smoothed + lagrange),
+        ("ironing_2d mortar smoothed", "ironing_2d",
+         ironing + smoothed + mortar),
+        ("ironing_2d mortar smoothed lagrange", "ironing_2d",
+         ironing + smoothed + mortar + lagrange)):
     result = run(tribos, "%s/%s.prm" % (tests, prm),
                  out + "/" + name.replace(" ", "_"),
                  sets + ["Nonlinear solver/Check tangent=true"])

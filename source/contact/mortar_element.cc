@@ -154,6 +154,26 @@ namespace tribos
       // weighted by their share of w_j, so that a segment that leaves the
       // master (at a corner of the slave) fades out of it continuously.
       const double gauss = 1. / std::sqrt(3.);
+      // With a smoothed master: the master nodes' averaged normals, the
+      // normalized sums of the unit normals of the faces that meet there.
+      Vec3<AD> master_normal[max_mortar_master_nodes];
+      if (input.smoothed_master)
+      {
+        for (unsigned int l = 0; l < input.n_master_nodes; ++l)
+          master_normal[l] = {{zero, zero, zero}};
+        for (unsigned int f = 0; f < input.n_normal_faces; ++f)
+        {
+          const unsigned int c = input.normal_face[f][0],
+                             d = input.normal_face[f][1];
+          const Vec3<AD> n     = cross(ez_ad, xm[d] - xm[c]);
+          master_normal[c]     = master_normal[c] + scale(1. / norm(n), n);
+          master_normal[d]     = master_normal[d] + scale(1. / norm(n), n);
+        }
+        for (unsigned int l = 0; l < input.n_master_nodes; ++l)
+          if (norm(master_normal[l]).val() > 0)
+            master_normal[l] =
+              scale(1. / norm(master_normal[l]), master_normal[l]);
+      }
       for (unsigned int s = 0; s < input.n_slave_segments; ++s)
       {
         const unsigned int a              = input.slave_segment[s][0],
@@ -244,9 +264,15 @@ namespace tribos
             M[o.c] += w_phi * (1. - eta);
             M[o.d] += w_phi * eta;
             segment_weight += w_phi;
+            // The master's smoothed normal, out of the master: minus.
+            if (input.smoothed_master)
+              normal_j = normal_j - scale(weight * N_j,
+                                          scale(1. - eta, master_normal[o.c]) +
+                                            scale(eta, master_normal[o.d]));
           }
         }
-        normal_j = normal_j + scale(segment_weight / length, cross(ez_ad, e));
+        if (!input.smoothed_master)
+          normal_j = normal_j + scale(segment_weight / length, cross(ez_ad, e));
       }
     }
   } // namespace
@@ -406,6 +432,34 @@ namespace tribos
       }
       mortar.master_segment[mortar.n_master_segments++] = segment;
     }
+    // A smoothed master: the faces at the segments' nodes, for their
+    // averaged normals; the nodes beyond the chains' ends join the element.
+    mortar.smoothed_master = pair.smoothed;
+    mortar.n_normal_faces  = 0;
+    std::vector<unsigned int> normal_faces;
+    const unsigned int        n_on_segments = master_nodes.size();
+    for (unsigned int l = 0; l < n_on_segments && pair.smoothed; ++l)
+      for (const unsigned int f : pair.master->nodes()[master_nodes[l]].faces)
+        if (std::find(normal_faces.begin(), normal_faces.end(), f) ==
+            normal_faces.end())
+        {
+          normal_faces.push_back(f);
+          auto &face = mortar.normal_face[mortar.n_normal_faces++];
+          for (unsigned int v = 0; v < 2; ++v)
+            face[v] = local(master_nodes, pair.master->faces()[f].node(v));
+          if (master_nodes.size() > max_mortar_master_nodes)
+          {
+            if (too_large.empty())
+              too_large =
+                "contact pair <" + pair.description.text +
+                ">: the mortar element of a slave node with its master's "
+                "averaged normals couples more than " +
+                std::to_string(max_mortar_master_nodes) +
+                " master nodes (a master much finer than the slave: make "
+                "the finer side the slave)";
+            return false;
+          }
+        }
 
     internal::mortar_positions(pair, k, stencil, master_nodes, mortar, dofs);
     mortar.axisymmetric = pair.axisymmetric;

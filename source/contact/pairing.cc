@@ -111,9 +111,18 @@ namespace tribos
             state.distance = pair.current[h].distance;
           }
         }
+        // A smoothed master's element also reads the faces beyond its
+        // faces (their normals): a face first coupled as a neighbour needs
+        // its own neighbours once it is the element's.
         pair.mortar_master_faces(k, faces);
         for (const unsigned int face : faces)
-          if (pair.couplings.count({k, face}) == 0)
+          if (pair.couplings.count({k, face}) == 0 ||
+              (pair.smoothed &&
+               std::any_of(pair.master->faces()[face].neighbours.begin(),
+                           pair.master->faces()[face].neighbours.end(),
+                           [&](const unsigned int g) {
+                             return pair.couplings.count({k, g}) == 0;
+                           })))
           {
             new_coupling = true;
             pair.insert_couplings(k, face, pair.couplings);

@@ -53,6 +53,14 @@ namespace tribos
                     "Parameter <Contact/Master smoothing> = <averaged "
                     "normals> is available in Dimension = 2 only; allowed in "
                     "3D: none."));
+      AssertThrow(contact.smoothing == Parameters::MasterSmoothing::none ||
+                    finite_element.degree == 1,
+                  dealii::ExcMessage(
+                    "Parameter <Contact/Master smoothing> = <averaged "
+                    "normals> is available with Finite element/Polynomial "
+                    "degree = 1 only (Q2's mortar segments are curved and "
+                    "carry their own normals); allowed with degree 2: "
+                    "none."));
       nonlinear_solver.parse_parameters(prm);
       time_stepping.parse_parameters(prm);
       time_stepping.check(dimension);

@@ -151,8 +151,8 @@ namespace tribos
         "in 3D) with "
         "the master segments, weighted by the node's multiplier function "
         "(segment-to-segment; passes the contact patch test). Pairs with a "
-        "rigid master are always node to rigid surface. Mortar is one-pass "
-        "and not combined with Master smoothing.");
+        "rigid master are always node to rigid surface. Mortar is "
+        "one-pass.");
       prm.declare_entry(
         "Mortar basis",
         "dual",
@@ -222,7 +222,12 @@ namespace tribos
         "deformable master is interpolated between averaged nodal normals, "
         "so projection, gap and contact force stay continuous when a slave "
         "node crosses a master vertex (no chattering between segments at "
-        "kinks of a coarse or strongly deformed master).");
+        "kinks of a coarse or strongly deformed master). With "
+        "Discretization = mortar (Q1) the integrals stay over the master's "
+        "segments and only the nodal normal changes: the smoothed master "
+        "normal averaged over the node's segments, instead of the slave's "
+        "own normal, which tilts at the edge of the contact zone on a "
+        "coarse curved slave.");
       prm.declare_entry("Search distance",
                         "0",
                         dealii::Patterns::Double(0),
@@ -550,12 +555,6 @@ namespace tribos
                         ">: Discretization = mortar is one-pass (it passes "
                         "the patch test with either side as slave); set "
                         "Contact/Passes = one-pass."));
-          AssertThrow(smoothing == MasterSmoothing::none,
-                      dealii::ExcMessage(
-                        "Contact pair <" + pair.text +
-                        ">: Discretization = mortar integrates over the "
-                        "master's segments; set Contact/Master smoothing = "
-                        "none."));
         }
       for (const auto &surface : rigid_surfaces)
       {

@@ -49,6 +49,18 @@ namespace tribos
     /** A node whose weight w_j (below) is below this has no master (its
      * segments barely overlap the master). */
     double min_weight = 0;
+    /**
+     * Contact/Master smoothing = averaged normals (Q1): the nodal normal
+     * n_j from the master's averaged nodal normals instead of the slave's
+     * segments (see Mortar2D).
+     */
+    bool smoothed_master = false;
+    /** With smoothed_master: the master faces at the master nodes (the
+     * segments above and the faces beyond the ends of their chains), as
+     * local master node numbers; their unit normals, summed at each node
+     * and normalized, are the nodes' averaged normals. */
+    unsigned int                n_normal_faces = 0;
+    std::array<unsigned int, 2> normal_face[2 * max_mortar_master_nodes];
   };
 
 
@@ -99,6 +111,22 @@ namespace tribos
    * For a flat interface and a uniform traction p, the forces are p int
    * N_k on the slave and p int N_l on the master nodes: the contact patch
    * test holds to round-off, with either side as slave.
+   *
+   * With MortarInput::smoothed_master (Contact/Master smoothing = averaged
+   * normals, Q1) the nodal normal is instead the master's smoothed normal
+   * field n_m(chi) = N_c n_c + N_d n_d (n_c, n_d the averaged normals of a
+   * master segment's ends, as SmoothedSegment) integrated against N_j over
+   * the overlaps and normalized: n_j = -int N_j n_m / |int N_j n_m|.
+   * Why: the slave's nodal normal at the edge of the contact zone is
+   * tilted by the slave segment beyond it, half the angle between the two
+   * segments; a coarse curved slave (a punch on a flat block) then presses
+   * the master at that angle, and with friction the imbalance between the
+   * zone's two edges tilts the resultant (the ironing's horizontal force
+   * 7 % high, doc/mortar.md). The master's normal field does not depend
+   * on which slave segments touch. The weights N_j are positive, so n_j
+   * lies between the master normals it averages (the dual functions, in
+   * part negative, could carry it beyond them). The element then couples
+   * the master nodes beyond the ends of its segments as well.
    */
   struct Mortar2D
   {
