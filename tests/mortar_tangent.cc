@@ -9,7 +9,9 @@
  * standard basis, plane and axisymmetric (weight 2 pi r), straight (Q1)
  * and quadratic (Q2: curved segments with middle nodes, the slave node a
  * vertex of two segments or one, or a middle; the projections' Newton
- * steps differentiated); frictionless,
+ * steps differentiated), Q1 with the master's averaged normals (a bent
+ * segment beyond each end of the master, whose nodes enter the normal);
+ * frictionless,
  * stick and slip; with the penalty law and
  * with the Lagrange multiplier law (the rows and columns of the node's
  * multipliers included). Asserts a relative error below 1e-6 and that the
@@ -40,7 +42,8 @@ main()
 
   bool         ok          = true;
   double       worst_error = 0, worst_balance = 0;
-  unsigned int n_checked = 0, n_quadratic = 0, n_status[4] = {0, 0, 0, 0};
+  unsigned int n_checked = 0, n_quadratic = 0, n_smoothed = 0,
+               n_status[4] = {0, 0, 0, 0};
   for (unsigned int sample = 0; sample < 4000; ++sample)
   {
     const bool            with_multipliers = sample % 2 == 1;
@@ -129,6 +132,24 @@ main()
         input.master_segment[m][2] = n_master + 1 + m;
         ++input.n_master_nodes;
       }
+    // Three Q1 samples in seven: the master's averaged normals (Master
+    // smoothing), with a bent segment beyond each end of the polyline.
+    const bool smoothed = !quadratic && sample % 7 < 3;
+    if (smoothed)
+    {
+      const unsigned int left = n_master + 1, right = n_master + 2;
+      input.xm[left] = {
+        {input.xm[0][0] - h_master, 0.2 * h_master * u(random), 0}};
+      input.xm[right] = {
+        {input.xm[n_master][0] + h_master, 0.2 * h_master * u(random), 0}};
+      input.n_master_nodes += 2;
+      input.smoothed_master = true;
+      input.n_normal_faces  = 0;
+      for (unsigned int m = 0; m < n_master; ++m)
+        input.normal_face[input.n_normal_faces++] = {{m, m + 1}};
+      input.normal_face[input.n_normal_faces++] = {{left, 0}};
+      input.normal_face[input.n_normal_faces++] = {{n_master, right}};
+    }
     for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
       for (unsigned int d = 0; d < 2; ++d)
         input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
@@ -274,6 +295,8 @@ main()
     ++n_checked;
     if (quadratic)
       ++n_quadratic;
+    if (smoothed)
+      ++n_smoothed;
     const double relative = error / scale;
     worst_error           = std::max(worst_error, relative);
     if (relative > 1e-6)
@@ -283,16 +306,19 @@ main()
                 << " (status " << static_cast<int>(result.status)
                 << (with_multipliers ? ", multipliers" : ", penalty")
                 << (input.dual ? ", dual" : ", standard")
-                << (quadratic ? ", quadratic" : "") << ")\n";
+                << (quadratic ? ", quadratic" : "")
+                << (smoothed ? ", smoothed master" : "") << ")\n";
     }
   }
   std::cout << "checked " << n_checked << " mortar elements (" << n_quadratic
-            << " quadratic; open " << n_status[0] << ", stick " << n_status[1]
-            << ", slip " << n_status[2] << ", frictionless " << n_status[3]
+            << " quadratic, " << n_smoothed
+            << " with the master's averaged normals; open " << n_status[0]
+            << ", stick " << n_status[1] << ", slip " << n_status[2]
+            << ", frictionless " << n_status[3]
             << "); worst relative tangent error " << worst_error
             << ", worst force balance " << worst_balance << "\n";
-  if (n_checked < 500 || n_quadratic < 200 || n_status[1] < 50 ||
-      n_status[2] < 50 || n_status[3] < 20)
+  if (n_checked < 500 || n_quadratic < 200 || n_smoothed < 200 ||
+      n_status[1] < 50 || n_status[2] < 50 || n_status[3] < 20)
   {
     std::cout << "FAILED: too few elements of some kind were checked\n";
     ok = false;

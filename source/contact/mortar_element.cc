@@ -166,14 +166,18 @@ namespace tribos
           const unsigned int c = input.normal_face[f][0],
                              d = input.normal_face[f][1];
           const Vec3<AD> n     = cross(ez_ad, xm[d] - xm[c]);
-          master_normal[c]     = master_normal[c] + scale(1. / norm(n), n);
-          master_normal[d]     = master_normal[d] + scale(1. / norm(n), n);
+          if (norm(n).val() == 0)
+            continue;
+          master_normal[c] = master_normal[c] + scale(1. / norm(n), n);
+          master_normal[d] = master_normal[d] + scale(1. / norm(n), n);
         }
         for (unsigned int l = 0; l < input.n_master_nodes; ++l)
           if (norm(master_normal[l]).val() > 0)
             master_normal[l] =
               scale(1. / norm(master_normal[l]), master_normal[l]);
       }
+      // The slave's normal, and with a smoothed master the master's.
+      Vec3<AD> slave_normal = {{zero, zero, zero}};
       for (unsigned int s = 0; s < input.n_slave_segments; ++s)
       {
         const unsigned int a              = input.slave_segment[s][0],
@@ -271,9 +275,14 @@ namespace tribos
                                             scale(eta, master_normal[o.d]));
           }
         }
-        if (!input.smoothed_master)
-          normal_j = normal_j + scale(segment_weight / length, cross(ez_ad, e));
+        slave_normal =
+          slave_normal + scale(segment_weight / length, cross(ez_ad, e));
       }
+      // The master's normal unless it points into the slave (averaged
+      // normals at a sharp master corner the slave slides off can), where
+      // the gap along it would change sign.
+      if (!input.smoothed_master || dot(normal_j, slave_normal).val() <= 0)
+        normal_j = slave_normal;
     }
   } // namespace
 
@@ -432,34 +441,49 @@ namespace tribos
       }
       mortar.master_segment[mortar.n_master_segments++] = segment;
     }
-    // A smoothed master: the faces at the segments' nodes, for their
-    // averaged normals; the nodes beyond the chains' ends join the element.
-    mortar.smoothed_master = pair.smoothed;
-    mortar.n_normal_faces  = 0;
-    std::vector<unsigned int> normal_faces;
-    const unsigned int        n_on_segments = master_nodes.size();
-    for (unsigned int l = 0; l < n_on_segments && pair.smoothed; ++l)
-      for (const unsigned int f : pair.master->nodes()[master_nodes[l]].faces)
-        if (std::find(normal_faces.begin(), normal_faces.end(), f) ==
-            normal_faces.end())
-        {
-          normal_faces.push_back(f);
-          auto &face = mortar.normal_face[mortar.n_normal_faces++];
-          for (unsigned int v = 0; v < 2; ++v)
-            face[v] = local(master_nodes, pair.master->faces()[f].node(v));
-          if (master_nodes.size() > max_mortar_master_nodes)
-          {
-            if (too_large.empty())
-              too_large =
-                "contact pair <" + pair.description.text +
-                ">: the mortar element of a slave node with its master's "
-                "averaged normals couples more than " +
-                std::to_string(max_mortar_master_nodes) +
-                " master nodes (a master much finer than the slave: make "
-                "the finer side the slave)";
-            return false;
-          }
-        }
+    // A smoothed master: the segments and the segments beyond their ends
+    // (MasterFace::beyond, as SmoothedSegment and the search's known faces
+    // read them), whose unit normals average into the nodes' normals; the
+    // nodes beyond the chains' ends join the element.
+    mortar.smoothed_master     = pair.smoothed;
+    mortar.n_normal_faces      = 0;
+    const auto add_normal_face = [&](const unsigned int c, const unsigned int d)
+    {
+      const std::array<unsigned int, 2> face{{c, d}};
+      if (std::find(mortar.normal_face,
+                    mortar.normal_face + mortar.n_normal_faces,
+                    face) == mortar.normal_face + mortar.n_normal_faces)
+        mortar.normal_face[mortar.n_normal_faces++] = face;
+    };
+    for (unsigned int i = 0; pair.smoothed && i < pair.mortar_faces[k].size();
+         ++i)
+    {
+      const unsigned int f    = pair.mortar_faces[k][i];
+      const auto        &face = pair.master->faces()[f];
+      const unsigned int c    = local(master_nodes, face.node(0)),
+                         d    = local(master_nodes, face.node(1));
+      add_normal_face(c, d);
+      if (face.beyond[0] >= 0)
+        add_normal_face(local(master_nodes, face.beyond[0]), c);
+      if (face.beyond[1] >= 0)
+        add_normal_face(d, local(master_nodes, face.beyond[1]));
+      if (master_nodes.size() > max_mortar_master_nodes ||
+          mortar.n_normal_faces + 3 > 2 * max_mortar_master_nodes)
+      {
+        const Vec3<double> &x = pair.slave_positions[k];
+        if (too_large.empty())
+          too_large = "contact pair <" + pair.description.text +
+                      ">: the mortar element of the slave node at (" +
+                      to_scientific(x[0]) + ", " + to_scientific(x[1]) +
+                      ") with its master's averaged normals couples more "
+                      "than " +
+                      std::to_string(max_mortar_master_nodes) +
+                      " master nodes (an iterate gone astray, or a master "
+                      "much finer than the slave: make the finer side the "
+                      "slave)";
+        return false;
+      }
+    }
 
     internal::mortar_positions(pair, k, stencil, master_nodes, mortar, dofs);
     mortar.axisymmetric = pair.axisymmetric;

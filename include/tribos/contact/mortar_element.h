@@ -55,10 +55,10 @@ namespace tribos
      * segments (see Mortar2D).
      */
     bool smoothed_master = false;
-    /** With smoothed_master: the master faces at the master nodes (the
-     * segments above and the faces beyond the ends of their chains), as
-     * local master node numbers; their unit normals, summed at each node
-     * and normalized, are the nodes' averaged normals. */
+    /** With smoothed_master: the master segments and the segments beyond
+     * their ends (MasterFace::beyond), as local master node numbers; their
+     * unit normals, summed at each node and normalized, are the nodes'
+     * averaged normals. */
     unsigned int                n_normal_faces = 0;
     std::array<unsigned int, 2> normal_face[2 * max_mortar_master_nodes];
   };
@@ -126,7 +126,9 @@ namespace tribos
    * on which slave segments touch. The weights N_j are positive, so n_j
    * lies between the master normals it averages (the dual functions, in
    * part negative, could carry it beyond them). The element then couples
-   * the master nodes beyond the ends of its segments as well.
+   * the master nodes beyond the ends of its segments as well. Where n_j
+   * would point into the slave (averaged normals at a sharp master corner
+   * the slave slides off), the slave's normal is kept.
    */
   struct Mortar2D
   {
