@@ -144,11 +144,11 @@ main()
         {input.xm[n_master][0] + h_master, 0.2 * h_master * u(random), 0}};
       input.n_master_nodes += 2;
       input.smoothed_master = true;
-      input.n_normal_faces  = 0;
       for (unsigned int m = 0; m < n_master; ++m)
-        input.normal_face[input.n_normal_faces++] = {{m, m + 1}};
-      input.normal_face[input.n_normal_faces++] = {{left, 0}};
-      input.normal_face[input.n_normal_faces++] = {{n_master, right}};
+      {
+        input.master_beyond[m][0] = m == 0 ? left : m - 1;
+        input.master_beyond[m][1] = m + 1 == n_master ? right : m + 2;
+      }
     }
     for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
       for (unsigned int d = 0; d < 2; ++d)

@@ -2,6 +2,7 @@
 #include <tribos/contact/contact_pair.h>
 #include <tribos/contact/mortar_element.h>
 #include <tribos/contact/mortar_element_3d.h>
+#include <tribos/contact/smoothed_segment.h>
 
 #include <algorithm>
 #include <cmath>
@@ -147,35 +148,13 @@ namespace tribos
 
       struct Overlap
       {
-        unsigned int c, d;
+        unsigned int m, c, d;
         AD           s_c, s_d, lo, hi;
       };
       // The nodal normal: the segments' unit normals (out of the slave body)
       // weighted by their share of w_j, so that a segment that leaves the
       // master (at a corner of the slave) fades out of it continuously.
       const double gauss = 1. / std::sqrt(3.);
-      // With a smoothed master: the master nodes' averaged normals, the
-      // normalized sums of the unit normals of the faces that meet there.
-      Vec3<AD> master_normal[max_mortar_master_nodes];
-      if (input.smoothed_master)
-      {
-        for (unsigned int l = 0; l < input.n_master_nodes; ++l)
-          master_normal[l] = {{zero, zero, zero}};
-        for (unsigned int f = 0; f < input.n_normal_faces; ++f)
-        {
-          const unsigned int c = input.normal_face[f][0],
-                             d = input.normal_face[f][1];
-          const Vec3<AD> n     = cross(ez_ad, xm[d] - xm[c]);
-          if (norm(n).val() == 0)
-            continue;
-          master_normal[c] = master_normal[c] + scale(1. / norm(n), n);
-          master_normal[d] = master_normal[d] + scale(1. / norm(n), n);
-        }
-        for (unsigned int l = 0; l < input.n_master_nodes; ++l)
-          if (norm(master_normal[l]).val() > 0)
-            master_normal[l] =
-              scale(1. / norm(master_normal[l]), master_normal[l]);
-      }
       // The slave's normal, and with a smoothed master the master's.
       Vec3<AD> slave_normal = {{zero, zero, zero}};
       for (unsigned int s = 0; s < input.n_slave_segments; ++s)
@@ -200,6 +179,7 @@ namespace tribos
           if (dot(n_m, n_s) >= 0)
             continue;
           Overlap o;
+          o.m   = m;
           o.c   = c;
           o.d   = d;
           o.s_c = dot(xm[c] - xs[a], e) / length_squared;
@@ -250,6 +230,18 @@ namespace tribos
         for (unsigned int i = 0; i < n_overlaps; ++i)
         {
           const Overlap &o = overlaps[i];
+          // A smoothed master: the averaged normals of the segment's ends.
+          Vec3<AD> n_c, n_d;
+          if (input.smoothed_master)
+          {
+            const int     *beyond = input.master_beyond[o.m];
+            const Vec3<AD> x[4]   = {xm[o.c],
+                                     xm[o.d],
+                                     xm[beyond[0] >= 0 ? beyond[0] : o.c],
+                                     xm[beyond[1] >= 0 ? beyond[1] : o.d]};
+            const bool     has[2] = {beyond[0] >= 0, beyond[1] >= 0};
+            SmoothedSegment::nodal_normals(x, has, n_c, n_d);
+          }
           for (const double g : {-gauss, gauss})
           {
             const AD t      = 0.5 * (o.lo + o.hi) + 0.5 * (o.hi - o.lo) * g;
@@ -270,9 +262,9 @@ namespace tribos
             segment_weight += w_phi;
             // The master's smoothed normal, out of the master: minus.
             if (input.smoothed_master)
-              normal_j = normal_j - scale(weight * N_j,
-                                          scale(1. - eta, master_normal[o.c]) +
-                                            scale(eta, master_normal[o.d]));
+              normal_j =
+                normal_j -
+                scale(weight * N_j, scale(1. - eta, n_c) + scale(eta, n_d));
           }
         }
         slave_normal =
@@ -421,68 +413,46 @@ namespace tribos
       for (unsigned int v = 0; v < mortar.n_segment_nodes; ++v)
         segment[v] = local(stencil, pair.slave->faces()[f].node(v));
     }
+    // More master nodes than the element holds: refused, with the reason.
+    const auto too_many = [&]()
+    {
+      if (master_nodes.size() <= max_mortar_master_nodes)
+        return false;
+      const Vec3<double> &x = pair.slave_positions[k];
+      if (too_large.empty())
+        too_large = "contact pair <" + pair.description.text +
+                    ">: the mortar element of the slave node at (" +
+                    to_scientific(x[0]) + ", " + to_scientific(x[1]) +
+                    ") overlaps more than " +
+                    std::to_string(max_mortar_master_nodes) +
+                    " master nodes (an iterate gone astray, or a master much "
+                    "finer than the slave: make the finer side the slave)";
+      return true;
+    };
     for (const unsigned int f : pair.mortar_faces[k])
     {
       std::array<unsigned int, 3> segment{};
       for (unsigned int v = 0; v < mortar.n_segment_nodes; ++v)
         segment[v] = local(master_nodes, pair.master->faces()[f].node(v));
-      if (master_nodes.size() > max_mortar_master_nodes)
-      {
-        const Vec3<double> &x = pair.slave_positions[k];
-        if (too_large.empty())
-          too_large = "contact pair <" + pair.description.text +
-                      ">: the mortar element of the slave node at (" +
-                      to_scientific(x[0]) + ", " + to_scientific(x[1]) +
-                      ") overlaps more than " +
-                      std::to_string(max_mortar_master_nodes) +
-                      " master nodes (an iterate gone astray, or a master much "
-                      "finer than the slave: make the finer side the slave)";
+      if (too_many())
         return false;
-      }
       mortar.master_segment[mortar.n_master_segments++] = segment;
     }
-    // A smoothed master: the segments and the segments beyond their ends
+    // A smoothed master: the nodes beyond each segment's ends
     // (MasterFace::beyond, as SmoothedSegment and the search's known faces
-    // read them), whose unit normals average into the nodes' normals; the
-    // nodes beyond the chains' ends join the element.
-    mortar.smoothed_master     = pair.smoothed;
-    mortar.n_normal_faces      = 0;
-    const auto add_normal_face = [&](const unsigned int c, const unsigned int d)
+    // read them) for the averaged normals; they join the element after the
+    // segments' nodes.
+    mortar.smoothed_master = pair.smoothed;
+    for (unsigned int m = 0; pair.smoothed && m < mortar.n_master_segments; ++m)
     {
-      const std::array<unsigned int, 2> face{{c, d}};
-      if (std::find(mortar.normal_face,
-                    mortar.normal_face + mortar.n_normal_faces,
-                    face) == mortar.normal_face + mortar.n_normal_faces)
-        mortar.normal_face[mortar.n_normal_faces++] = face;
-    };
-    for (unsigned int i = 0; pair.smoothed && i < pair.mortar_faces[k].size();
-         ++i)
-    {
-      const unsigned int f    = pair.mortar_faces[k][i];
-      const auto        &face = pair.master->faces()[f];
-      const unsigned int c    = local(master_nodes, face.node(0)),
-                         d    = local(master_nodes, face.node(1));
-      add_normal_face(c, d);
-      if (face.beyond[0] >= 0)
-        add_normal_face(local(master_nodes, face.beyond[0]), c);
-      if (face.beyond[1] >= 0)
-        add_normal_face(d, local(master_nodes, face.beyond[1]));
-      if (master_nodes.size() > max_mortar_master_nodes ||
-          mortar.n_normal_faces + 3 > 2 * max_mortar_master_nodes)
-      {
-        const Vec3<double> &x = pair.slave_positions[k];
-        if (too_large.empty())
-          too_large = "contact pair <" + pair.description.text +
-                      ">: the mortar element of the slave node at (" +
-                      to_scientific(x[0]) + ", " + to_scientific(x[1]) +
-                      ") with its master's averaged normals couples more "
-                      "than " +
-                      std::to_string(max_mortar_master_nodes) +
-                      " master nodes (an iterate gone astray, or a master "
-                      "much finer than the slave: make the finer side the "
-                      "slave)";
+      const auto &face = pair.master->faces()[pair.mortar_faces[k][m]];
+      for (unsigned int e = 0; e < 2; ++e)
+        mortar.master_beyond[m][e] =
+          face.beyond[e] >= 0 ?
+            static_cast<int>(local(master_nodes, face.beyond[e])) :
+            -1;
+      if (too_many())
         return false;
-      }
     }
 
     internal::mortar_positions(pair, k, stencil, master_nodes, mortar, dofs);

@@ -55,12 +55,11 @@ namespace tribos
      * segments (see Mortar2D).
      */
     bool smoothed_master = false;
-    /** With smoothed_master: the master segments and the segments beyond
-     * their ends (MasterFace::beyond), as local master node numbers; their
-     * unit normals, summed at each node and normalized, are the nodes'
-     * averaged normals. */
-    unsigned int                n_normal_faces = 0;
-    std::array<unsigned int, 2> normal_face[2 * max_mortar_master_nodes];
+    /** With smoothed_master: per master segment, the local numbers of the
+     * master nodes before its first and after its second node along the
+     * surface (MasterFace::beyond), -1 at the surface's ends; the
+     * segment's averaged end normals are SmoothedSegment's. */
+    int master_beyond[max_mortar_master_nodes][2];
   };
 
 
