@@ -1,9 +1,6 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/base/timing.h>
-#include <tribos/contact/contact_element.h>
 #include <tribos/contact/contact_handler.h>
-#include <tribos/contact/mortar_element.h>
-#include <tribos/contact/mortar_element_3d.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
@@ -24,7 +21,7 @@ namespace tribos
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
     , pairing(parameters, mpi_communicator)
-    , monitor(mpi_communicator)
+    , monitor(parameters, mpi_communicator)
     , n_displacement_dofs(dof_handler.n_dofs())
   {
     contact_pairs   = make_contact_pairs(parameters,
@@ -75,38 +72,13 @@ namespace tribos
     std::vector<types::global_dof_index> dofs;
     for (const auto &pair : contact_pairs)
     {
-      if (pair.mortar)
-      {
-        // A mortar element couples all the master faces of its node with
-        // each other: one element per node over the union of its faces.
-        for (auto c = pair.couplings.begin(); c != pair.couplings.end();)
-        {
-          const unsigned int k = c->first;
-          pair.element_dofs(k, -1, dofs);
-          for (; c != pair.couplings.end() && c->first == k; ++c)
-          {
-            const auto &face = pair.master->faces()[c->second];
-            for (unsigned int i = 0; i < face.n_nodes(); ++i)
-              for (const auto dof : pair.master->nodes()[face.node(i)].dofs)
-                dofs.push_back(dof);
-          }
-          std::sort(dofs.begin(), dofs.end());
-          dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-          constraints.add_entries_local_to_global(dofs, dsp, false);
-        }
-      }
-      else
-        for (const auto &[k, f] : pair.couplings)
-        {
-          pair.element_dofs(k, f, dofs);
-          constraints.add_entries_local_to_global(dofs, dsp, false);
-        }
+      pair.discretization->add_couplings(pair, constraints, dsp);
       // The rows of a node's unknowns exist whether it is paired or not.
       if (pair.enforcement->n_node_unknowns() > 0)
         for (unsigned int k = 0; k < pair.n_nodes(); ++k)
           if (pair.owned[k])
           {
-            pair.element_dofs(k, -1, dofs);
+            pair.discretization->element_dofs(pair, k, -1, dofs);
             constraints.add_entries_local_to_global(dofs, dsp, false);
           }
     }
@@ -125,15 +97,13 @@ namespace tribos
                                 TrilinosWrappers::MPI::Vector   &full_residual,
                                 TrilinosWrappers::MPI::Vector   &contact_forces)
   {
-    const auto             start = std::chrono::steady_clock::now();
-    constexpr unsigned int n_max =
-      std::max(
-        {NodeToSegment<dim>::n_dofs,
-         NodeToSmoothedSegment::max_dofs,
-         2 * (MortarInput::max_slave_nodes + max_mortar_master_nodes),
-         3 * (MortarInput3D::max_slave_nodes + max_mortar_master_nodes_3d)}) +
-      dim;
-    double     R[n_max], K[n_max * n_max];
+    const auto   start = std::chrono::steady_clock::now();
+    unsigned int n_max = 0;
+    for (const auto &pair : contact_pairs)
+      n_max = std::max(n_max, pair.discretization->max_element_dofs());
+    element_residual.resize(n_max);
+    element_matrix.resize(n_max * n_max);
+    double    *R = element_residual.data(), *K = element_matrix.data();
     const bool consistent =
       parameters.tangent == Parameters::ContactTangent::consistent;
 
@@ -178,42 +148,17 @@ namespace tribos
       }
     };
 
-    // A mortar element too large for the AD type: the iterate is void
-    // (the increment is cut back on every process).
-    std::string               too_large;
-    std::vector<unsigned int> stencil, master_nodes;
-    // 3D mortar: each overlap of a slave and a master face integrated once
-    // per pair and assembly (the positions are fixed during it).
-    MortarOverlapCache overlap_cache;
-    // The rows of an evaluated element (R, K) with the dofs in dofs: the
-    // enforcement's last look at the unknowns' rows, then the system.
-    const auto add_element =
-      [&](const ContactPair<dim> &pair, const unsigned int k, NodeState &state)
-    {
-      const unsigned int n_unknowns = pair.enforcement->n_node_unknowns();
-      if (n_unknowns > 0)
-        pair.enforcement->finish_rows(dofs,
-                                      dofs.size() - n_unknowns,
-                                      homogeneous,
-                                      pair.area[k],
-                                      state,
-                                      R,
-                                      K);
-      add(dofs.size());
-    };
+    // An element that cannot be evaluated (a mortar element too large for
+    // the AD type): the iterate is void (the increment is cut back on
+    // every process).
+    std::string refusal;
     for (unsigned int p = 0; p < contact_pairs.size(); ++p)
     {
-      auto                   &pair        = contact_pairs[p];
-      const Enforcement<dim> &enforcement = *pair.enforcement;
-      overlap_cache.entries.clear();
-      const unsigned int n_unknowns = enforcement.n_node_unknowns();
-      RigidInput<dim>    rigid;
-      if (pair.rigid)
-      {
-        rigid.surface   = pair.rigid.get();
-        rigid.shift     = pair.rigid->translation(time);
-        rigid.shift_old = pair.rigid->translation(committed_time);
-      }
+      auto                       &pair           = contact_pairs[p];
+      const Enforcement<dim>     &enforcement    = *pair.enforcement;
+      ContactDiscretization<dim> &discretization = *pair.discretization;
+      const unsigned int          n_unknowns = enforcement.n_node_unknowns();
+      discretization.begin_assembly(pair, time, committed_time);
 
       // Each node's share of the time (charged when the next one starts).
       auto       lap    = std::chrono::steady_clock::now();
@@ -236,11 +181,9 @@ namespace tribos
         state.result                  = ContactPointResult();
         state.slip                    = committed.slip;
         state.point                   = x;
-        // Mortar: the node's element over its slave segments (its weight
-        // may still leave it without a master).
-        SlaveInput slave;
         if (state.paired)
         {
+          SlaveInput slave;
           slave.position  = x;
           slave.committed = &committed;
           slave.law       = enforcement.law(pair, k, state, homogeneous);
@@ -249,130 +192,61 @@ namespace tribos
           slave.area              = pair.area[k];
           slave.unknowns          = n_unknowns > 0 ? &state.lambda : nullptr;
           slave.consistent        = consistent;
-        }
-        if (pair.mortar && state.paired)
-        {
-          using Input =
-            std::conditional_t<dim == 2, MortarInput, MortarInput3D>;
-          using Element = std::conditional_t<dim == 2, Mortar2D, Mortar3D>;
-          Input mortar;
-          if constexpr (dim == 3)
-            mortar.cache = &overlap_cache;
-          if (!mortar_input(pair,
-                            k,
-                            mortar,
-                            stencil,
-                            master_nodes,
-                            dofs,
-                            too_large))
+          const ElementOutcome outcome =
+            discretization.evaluate(pair, k, slave, R, K, dofs, refusal);
+          if (outcome.kind == ElementOutcome::Kind::refused)
             continue;
-          bool         paired = false;
-          Vec3<double> point;
-          state.result =
-            Element::evaluate(slave, mortar, enforcement, R, K, paired, point);
-          if (paired)
+          if (outcome.kind == ElementOutcome::Kind::element)
           {
-            const auto &r  = state.result;
-            state.point    = point;
-            state.slip     = committed.slip + r.slip_increment;
-            pair.ever_near = true;
-            if (n_unknowns > 0 || r.status != ContactStatus::open)
-              add_element(pair, k, state);
+            state.slip = committed.slip + state.result.slip_increment;
+            if (outcome.near)
+              pair.ever_near = true;
+            // The element: the enforcement's last look at the unknowns'
+            // rows, then the system (an open node without unknowns has
+            // none).
+            if (n_unknowns > 0)
+              enforcement.finish_rows(dofs,
+                                      dofs.size() - n_unknowns,
+                                      homogeneous,
+                                      pair.area[k],
+                                      state,
+                                      R,
+                                      K);
+            if (n_unknowns > 0 || state.result.status != ContactStatus::open)
+              add(dofs.size());
             continue;
           }
+          // Paired by the search, but without a master after all (a
+          // mortar weight too small).
           state.result = ContactPointResult();
         }
 
-        if (!state.paired || pair.mortar)
+        // Off the master (beyond its end or the search distance), or
+        // excluded: the distance to the master surface, a positive, open
+        // gap; the rows of the node's unknowns (Lambda = 0), scaled by its
+        // own tributary area (an excluded node has handed its area to
+        // others).
+        state.result.gap = state.distance;
+        if (n_unknowns > 0)
         {
-          // Off the master (beyond its end or the search distance; mortar:
-          // a weight too small, the paired mortar nodes went on above), or
-          // excluded: the distance to the master surface, a positive, open
-          // gap; the rows of the node's unknowns (Lambda = 0), scaled by
-          // its own tributary area (an excluded node has handed its area
-          // to others).
-          state.result.gap = state.distance;
-          if (n_unknowns > 0)
-          {
-            pair.element_dofs(k, -1, dofs);
-            dofs.erase(dofs.begin(), dofs.end() - n_unknowns);
-            enforcement.unpaired_rows(state,
-                                      pair.slave->nodes()[k].area *
-                                        pair.area_factor,
-                                      R,
-                                      K);
-            add(n_unknowns);
-          }
-          continue;
+          dofs.clear();
+          pair.append_unknown_dofs(k, dofs);
+          enforcement.unpaired_rows(state,
+                                    pair.slave->nodes()[k].area *
+                                      pair.area_factor,
+                                    R,
+                                    K);
+          add(n_unknowns);
         }
-
-        const int face = state.face;
-        if (pair.smoothed)
-        {
-          if constexpr (dim == 2)
-          {
-            SmoothedInput segment;
-            bool          has_old[2];
-            Vec3<double>  x_old[4];
-            smoothed_stencil(pair,
-                             face,
-                             pair.master_positions,
-                             segment.x,
-                             segment.has);
-            smoothed_stencil(pair,
-                             face,
-                             pair.old_master_positions,
-                             x_old,
-                             has_old);
-            segment.x_old[0] = x_old[0];
-            segment.x_old[1] = x_old[1];
-            segment.xi       = state.projection.xi[0];
-            state.result     = NodeToSmoothedSegment::evaluate(slave,
-                                                           segment,
-                                                           enforcement,
-                                                           R,
-                                                           K);
-          }
-        }
-        else if (pair.master)
-        {
-          FaceInput<dim> input;
-          const auto    &nodes = pair.master->faces()[face].nodes;
-          for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
-          {
-            input.x[v]     = pair.master_positions[nodes[v]];
-            input.x_old[v] = pair.old_master_positions[nodes[v]];
-          }
-          input.projection = state.projection;
-          input.same_face  = committed.face == face;
-          state.result =
-            NodeToSegment<dim>::evaluate(slave, input, enforcement, R, K);
-        }
-        else
-          state.result =
-            NodeToRigid<dim>::evaluate(slave, rigid, enforcement, R, K);
-
-        const auto &r = state.result;
-        state.point   = x - scale(r.gap, r.normal);
-        state.slip    = committed.slip + r.slip_increment;
-        if (!pair.rigid || r.gap <= parameters.search_distance)
-          pair.ever_near = true;
-        if (n_unknowns == 0 && r.status == ContactStatus::open)
-          continue;
-
-        // The element: the slave, its master nodes (with smoothing also the
-        // segment's neighbours) and the node's unknowns.
-        pair.element_dofs(k, face, dofs);
-        add_element(pair, k, state);
       }
       charge(nullptr);
     }
     own_seconds += seconds_since(start);
-    if (Utilities::MPI::max(too_large.empty() ? 0 : 1, mpi_communicator) > 0)
-      throw NonConvergence(too_large.empty() ?
-                             "a mortar element on another process is too "
-                             "large" :
-                             too_large);
+    if (Utilities::MPI::max(refusal.empty() ? 0 : 1, mpi_communicator) > 0)
+      throw NonConvergence(refusal.empty() ?
+                             "a contact element on another process cannot be "
+                             "evaluated" :
+                             refusal);
   }
 
 

@@ -16,18 +16,6 @@ namespace tribos
 {
   namespace
   {
-    /** Append to @p into the entries of @p from that it does not hold. */
-    void
-    append_missing(std::vector<unsigned int>       &into,
-                   const std::vector<unsigned int> &from)
-    {
-      for (const unsigned int i : from)
-        if (std::find(into.begin(), into.end(), i) == into.end())
-          into.push_back(i);
-    }
-
-
-
     /**
      * Exclude the slave nodes of @p pair whose rows would depend on other
      * rows, and hand their areas over (see make_contact_pairs()): hanging
@@ -105,113 +93,6 @@ namespace tribos
       }
     }
   } // namespace
-
-
-
-  template <int dim>
-  void
-  ContactPair<dim>::insert_couplings(
-    const unsigned int                               k,
-    const unsigned int                               face,
-    std::set<std::pair<unsigned int, unsigned int>> &into) const
-  {
-    into.insert({k, face});
-    for (const unsigned int g : master->faces()[face].neighbours)
-      into.insert({k, g});
-  }
-
-
-
-  template <int dim>
-  void
-  ContactPair<dim>::slave_stencil(const unsigned int         k,
-                                  std::vector<unsigned int> &nodes) const
-  {
-    nodes.assign(1, k);
-    for (const unsigned int f : slave->nodes()[k].faces)
-      for (unsigned int i = 0; i < slave->faces()[f].n_nodes(); ++i)
-      {
-        const unsigned int m = slave->faces()[f].node(i);
-        if (std::find(nodes.begin(), nodes.end(), m) == nodes.end())
-          nodes.push_back(m);
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  ContactPair<dim>::mortar_stencil(const unsigned int         k,
-                                   std::vector<unsigned int> &nodes) const
-  {
-    slave_stencil(k, nodes);
-    std::vector<unsigned int> other;
-    for (const auto &[h, weight] : carried[k])
-    {
-      slave_stencil(h, other);
-      append_missing(nodes, other);
-    }
-  }
-
-
-
-  template <int dim>
-  void
-  ContactPair<dim>::mortar_slave_faces(const unsigned int         k,
-                                       std::vector<unsigned int> &faces) const
-  {
-    faces = slave->nodes()[k].faces;
-    for (const auto &[h, weight] : carried[k])
-      append_missing(faces, slave->nodes()[h].faces);
-  }
-
-
-
-  template <int dim>
-  void
-  ContactPair<dim>::mortar_master_faces(const unsigned int         k,
-                                        std::vector<unsigned int> &faces) const
-  {
-    faces = mortar_faces[k];
-    for (const auto &[h, weight] : carried[k])
-      append_missing(faces, mortar_faces[h]);
-  }
-
-
-
-  template <int dim>
-  void
-  ContactPair<dim>::element_dofs(
-    const unsigned int                    k,
-    const int                             face,
-    std::vector<types::global_dof_index> &dofs) const
-  {
-    const auto &slave_dofs = slave->nodes()[k].dofs;
-    dofs.assign(slave_dofs.begin(), slave_dofs.end());
-    if (mortar)
-    {
-      std::vector<unsigned int> stencil;
-      mortar_stencil(k, stencil);
-      for (unsigned int i = 1; i < stencil.size(); ++i)
-        for (const auto dof : slave->nodes()[stencil[i]].dofs)
-          dofs.push_back(dof);
-    }
-    if (master && face >= 0)
-    {
-      for (unsigned int i = 0; i < master->faces()[face].n_nodes(); ++i)
-        for (const auto dof :
-             master->nodes()[master->faces()[face].node(i)].dofs)
-          dofs.push_back(dof);
-      if (smoothed)
-        for (const int m : master->faces()[face].beyond)
-          if (m >= 0)
-            for (const auto dof : master->nodes()[m].dofs)
-              dofs.push_back(dof);
-    }
-    const unsigned int n = enforcement->n_node_unknowns();
-    for (unsigned int d = 0; d < n; ++d)
-      dofs.push_back(first_unknown + n * k + d);
-  }
 
 
 
@@ -332,34 +213,11 @@ namespace tribos
           E_m = std::min(E_m, youngs_modulus(body));
         pair.contact_modulus = E_s * E_m / (E_s + E_m);
         pair.area_factor     = parameters.two_pass ? 0.5 : 1.;
-        pair.smoothed =
-          dim == 2 && parameters.smoothing != Parameters::MasterSmoothing::none;
-        pair.mortar =
-          description.discretization == Parameters::Discretization::mortar;
-        pair.dual_basis =
-          parameters.mortar_basis == Parameters::MortarBasis::dual;
       }
       else
         pair.rigid = rigid_surfaces.at(description.rigid_surface);
-      // On Q2 the surface's middle nodes need the quadratic segments of the
-      // mortar element; node to segment (to a body or a rigid surface)
-      // knows the vertices and straight faces of Q1 only.
-      AssertThrow(!pair.slave->quadratic() || pair.mortar,
-                  ExcMessage("Contact pair <" + description.text +
-                             ">: Finite element/Polynomial degree = 2 needs "
-                             "Contact/Discretization = mortar and a "
-                             "deformable master; node-to-segment contact "
-                             "(and contact with rigid surfaces) works on the "
-                             "linear faces of Polynomial degree = 1."));
-      // The standard quadratic functions of the vertex on the axis
-      // integrate to zero against 2 pi r: that node carries no multiplier,
-      // the others then miss a partition of unity and Newton does not
-      // converge even on the patch test. The dual basis has no such node.
-      AssertThrow(!pair.slave->quadratic() || !axisymmetric || pair.dual_basis,
-                  ExcMessage("Contact pair <" + description.text +
-                             ">: Contact/Mortar basis = standard is not "
-                             "available with Polynomial degree = 2 and "
-                             "Axisymmetric = true; use Mortar basis = dual."));
+      pair.discretization =
+        create_discretization<dim>(description, parameters, axisymmetric);
 
       const auto        &nodes    = pair.slave->nodes();
       const unsigned int n_slaves = nodes.size();
@@ -376,45 +234,16 @@ namespace tribos
         pair.current[k].point = nodes[k].reference;
         pair.slave_positions.push_back(nodes[k].reference);
       }
-      pair.axisymmetric = axisymmetric;
-      if (pair.mortar)
-        pair.mortar_faces.resize(n_slaves);
-      // With unknowns, every dependent node; a mortar penalty passes its
-      // hanging nodes' functions to their parents too (a node of its own
-      // there would weigh the gap differently from its neighbours and
-      // break the patch test: 1.4 % spread of a uniform pressure).
+      // With unknowns, every dependent node; where the discretization has
+      // the parents carry their hanging nodes' functions (mortar), those
+      // too (a node of its own there would weigh the gap differently from
+      // its neighbours and break the patch test: 1.4 % spread of a
+      // uniform pressure).
       if (pair.enforcement->n_node_unknowns() > 0)
         exclude_dependent_nodes(pair, &pairs, hanging);
-      else if (pair.mortar)
+      else if (pair.discretization->parents_carry_hanging_nodes())
         exclude_dependent_nodes<dim>(pair, nullptr, hanging);
-      if (pair.mortar)
-      {
-        // A hanging node's multiplier function goes to its parents (3D Q1
-        // elements only: a 2D surface has no hanging nodes, Q2 contact is
-        // 2D); a node shared with another pair has no parents to take it.
-        std::vector<bool> is_carried(n_slaves, false);
-        for (unsigned int k = 0; k < n_slaves; ++k)
-          for (const auto &[h, weight] : pair.carried[k])
-            is_carried[h] = !pair.excluded[k];
-        for (unsigned int k = 0; k < n_slaves; ++k)
-        {
-          if (!pair.excluded[k] || (dim == 3 && is_carried[k]))
-            continue;
-          std::string at;
-          for (unsigned int d = 0; d < dim; ++d)
-            at += (d > 0 ? ", " : "") + std::to_string(nodes[k].reference[d]);
-          AssertThrow(false,
-                      ExcMessage(
-                        "Contact pair <" + description.text +
-                        ">: mortar with multipliers needs every slave node "
-                        "to carry its own multiplier or to hang on nodes "
-                        "that carry it; the slave node at (" +
-                        at +
-                        ") is shared with another pair's slave surface. "
-                        "Write both surfaces as one slave ('3, 4 : 5'), or "
-                        "use node to segment."));
-        }
-      }
+      pair.discretization->initialize(pair);
       // The slave positions this process reads: its own nodes and the
       // stencils of the elements it evaluates.
       {
@@ -424,9 +253,9 @@ namespace tribos
           if (pair.owned[k])
           {
             read[k] = true;
-            if (pair.mortar && !pair.excluded[k])
+            if (!pair.excluded[k])
             {
-              pair.mortar_stencil(k, stencil);
+              pair.discretization->stencil(pair, k, stencil);
               for (const unsigned int m : stencil)
                 read[m] = true;
             }

@@ -167,38 +167,23 @@ namespace tribos
 
 
   template <int dim>
-  unsigned int
-  ContactHandler<dim>::track_status_changes(const unsigned int limit,
-                                            const bool         count)
+  void
+  ContactHandler<dim>::watch_iteration(
+    const unsigned int                              iteration,
+    const double                                    residual,
+    const std::function<void(const std::string &)> &say)
   {
-    return monitor.track(contact_pairs, limit, count);
+    monitor.after_iteration(contact_pairs, iteration, residual, say);
   }
 
 
 
   template <int dim>
-  unsigned int
-  ContactHandler<dim>::freeze_chattering(const unsigned int limit)
+  bool
+  ContactHandler<dim>::accept_iterate(
+    const std::function<void(const std::string &)> &say)
   {
-    return monitor.freeze(contact_pairs, limit);
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  ContactHandler<dim>::n_frozen_inadmissible() const
-  {
-    return monitor.n_frozen_inadmissible(contact_pairs);
-  }
-
-
-
-  template <int dim>
-  unsigned int
-  ContactHandler<dim>::release_frozen_inadmissible()
-  {
-    return monitor.release_inadmissible(contact_pairs);
+    return monitor.accept(contact_pairs, say);
   }
 
 
@@ -237,24 +222,9 @@ namespace tribos
       pair.committed            = pair.current;
       pair.old_slave_positions  = pair.slave_positions;
       pair.old_master_positions = pair.master_positions;
-      if (pair.rigid)
-        continue;
-      std::vector<unsigned int> faces;
       for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-      {
-        const int face = pair.current[k].face;
-        if (pair.owned[k] && !pair.excluded[k] && face >= 0)
-        {
-          if (pair.mortar)
-          {
-            pair.mortar_master_faces(k, faces);
-            for (const unsigned int f : faces)
-              pair.insert_couplings(k, f, used[p]);
-          }
-          else
-            pair.insert_couplings(k, face, used[p]);
-        }
-      }
+        if (pair.owned[k] && !pair.excluded[k] && pair.current[k].face >= 0)
+          pair.discretization->used_couplings(pair, k, used[p]);
       n_kept += used[p].size();
       n_stale += pair.couplings.size() - used[p].size();
     }
@@ -263,8 +233,7 @@ namespace tribos
     if (n_stale > 0 && 3 * n_stale >= n_kept)
     {
       for (unsigned int p = 0; p < contact_pairs.size(); ++p)
-        if (!contact_pairs[p].rigid)
-          contact_pairs[p].couplings.swap(used[p]);
+        contact_pairs[p].couplings.swap(used[p]);
       outdated = true;
     }
     committed_time = time;
@@ -294,30 +263,38 @@ namespace tribos
 
   template <int dim>
   bool
-  ContactHandler<dim>::augmented() const
+  ContactHandler<dim>::outer_update(unsigned int &n_augmentations)
   {
-    for (const auto &pair : contact_pairs)
-      if (pair.enforcement->has_outer_update())
-        return true;
-    return false;
-  }
-
-
-
-  template <int dim>
-  double
-  ContactHandler<dim>::augment(const double tolerance)
-  {
+    bool   any       = false;
     double violation = 0;
     for (const auto &pair : contact_pairs)
       if (pair.enforcement->has_outer_update())
-        violation = std::max(violation, pair.enforcement->violation(pair));
-    violation = Utilities::MPI::max(violation, mpi_communicator);
-    if (violation > tolerance)
-      for (auto &pair : contact_pairs)
-        if (pair.enforcement->has_outer_update())
-          pair.enforcement->outer_update(pair);
-    return violation;
+      {
+        any = true;
+        for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+          if (pair.owned[k])
+            violation = std::max(
+              violation,
+              pair.enforcement->violation(pair.current[k],
+                                          pair.slave->nodes()[k].size));
+      }
+    if (!any)
+      return false;
+    violation              = Utilities::MPI::max(violation, mpi_communicator);
+    const double tolerance = parameters.augmentation_tolerance;
+    if (violation <= tolerance)
+      return false;
+    for (auto &pair : contact_pairs)
+      if (pair.enforcement->has_outer_update())
+        for (auto &state : pair.current)
+          pair.enforcement->outer_update(state);
+    if (n_augmentations >= parameters.max_augmentations)
+      throw NonConvergence("penetration " + to_scientific(violation) +
+                           " of the element size after " +
+                           std::to_string(n_augmentations) +
+                           " augmentations (Contact/Maximum augmentations)");
+    ++n_augmentations;
+    return true;
   }
 
 

@@ -56,29 +56,14 @@ namespace tribos
                             position(faces[f].node(i))));
     }
 
-    // The box of the slave nodes this process reads, and h, from all. A
-    // mortar element integrates every master face that overlaps its slave
-    // faces and faces them, however far, once one is within the search
-    // distance: over a slave face of size L (Q2: plus a quarter), a master
-    // that rises at up to 75 degrees to it (the steepest it takes, tan 75 =
-    // 3.7) stays within 3.7 * 1.25 L < 5 L of the closest face. Mortar
-    // boxes ask 5 L more (the largest L of their faces).
+    // The box of the slave nodes this process reads, and h, from all; the
+    // box asks for the reach of the elements beyond it too (mortar: 5 slave
+    // face sizes, ContactDiscretization::exchange_reach()).
     Box box = {{inf, inf, inf, -inf, -inf, -inf, h, 0}};
     for (const unsigned int k : pair.read_slave_nodes)
     {
       extend(box, pair.slave_positions[k]);
-      if (pair.mortar)
-        for (const unsigned int f : pair.slave->nodes()[k].faces)
-          for (unsigned int i = 0; i < pair.slave->faces()[f].n_nodes(); ++i)
-          {
-            const unsigned int m = pair.slave->faces()[f].node(i);
-            if (std::binary_search(pair.read_slave_nodes.begin(),
-                                   pair.read_slave_nodes.end(),
-                                   m))
-              box[7] = std::max(box[7],
-                                5 * norm(pair.slave_positions[k] -
-                                         pair.slave_positions[m]));
-          }
+      box[7] = std::max(box[7], pair.discretization->exchange_reach(pair, k));
     }
     const auto boxes = Utilities::MPI::all_gather(communicator, box);
     for (const auto &other : boxes)
@@ -147,7 +132,7 @@ namespace tribos
       bool known = true;
       for (unsigned int i = 0; i < faces[f].n_nodes() && known; ++i)
         known = pair.master_known[faces[f].node(i)];
-      if (pair.smoothed)
+      if (pair.discretization->needs_nodes_beyond())
         for (const int m : faces[f].beyond)
           known = known && (m < 0 || pair.master_known[m]);
       pair.face_known[f] = known;

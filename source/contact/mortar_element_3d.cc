@@ -1,5 +1,4 @@
 #include <tribos/base/exceptions.h>
-#include <tribos/contact/contact_pair.h>
 #include <tribos/contact/mortar_element.h>
 #include <tribos/contact/mortar_element_3d.h>
 
@@ -562,90 +561,5 @@ namespace tribos
                                       K,
                                       paired,
                                       weighted_point);
-  }
-
-
-
-  bool
-  mortar_input(const ContactPair<3>                 &pair,
-               const unsigned int                    k,
-               MortarInput3D                        &mortar,
-               std::vector<unsigned int>            &stencil,
-               std::vector<unsigned int>            &master_nodes,
-               std::vector<types::global_dof_index> &dofs,
-               std::string                          &too_large)
-  {
-    master_nodes.clear();
-    const auto local  = internal::local_number;
-    const auto refuse = [&](const std::string &what)
-    {
-      const Vec3<double> &x = pair.slave_positions[k];
-      if (too_large.empty())
-        too_large = "contact pair <" + pair.description.text +
-                    ">: the mortar element of the slave node at (" +
-                    to_scientific(x[0]) + ", " + to_scientific(x[1]) + ", " +
-                    to_scientific(x[2]) + ") " + what +
-                    " (an iterate gone astray, or a master much finer than "
-                    "the slave: make the finer side the slave)";
-      return false;
-    };
-    // The faces of node k and of the hanging nodes it carries, each with
-    // the nodes whose functions the element integrates on it.
-    pair.mortar_stencil(k, stencil);
-    std::vector<unsigned int> faces;
-    pair.mortar_slave_faces(k, faces);
-    if (stencil.size() > MortarInput3D::max_slave_nodes ||
-        faces.size() > MortarInput3D::max_slave_faces)
-      return refuse("has more than " +
-                    std::to_string(MortarInput3D::max_slave_faces) +
-                    " slave faces");
-    for (const unsigned int f : faces)
-    {
-      const unsigned int i    = mortar.n_slave_faces++;
-      mortar.slave_face_id[i] = f;
-      mortar.n_carriers[i]    = 0;
-      for (unsigned int v = 0; v < 4; ++v)
-      {
-        const unsigned int node = pair.slave->faces()[f].nodes[v];
-        mortar.slave_face[i][v] = local(stencil, node);
-        if (node == k)
-          mortar.carriers[i][mortar.n_carriers[i]++] = {v, 1.};
-        for (const auto &[h, weight] : pair.carried[k])
-          if (node == h)
-            mortar.carriers[i][mortar.n_carriers[i]++] = {v, weight};
-      }
-    }
-
-    // The master faces of node k and of its hanging nodes.
-    std::vector<unsigned int> master_faces;
-    pair.mortar_master_faces(k, master_faces);
-    if (master_faces.size() > max_mortar_master_nodes_3d)
-      return refuse("overlaps more than " +
-                    std::to_string(max_mortar_master_nodes_3d) +
-                    " master faces");
-    for (const unsigned int f : master_faces)
-    {
-      std::array<unsigned int, 4> face;
-      for (unsigned int v = 0; v < 4; ++v)
-        face[v] = local(master_nodes, pair.master->faces()[f].nodes[v]);
-      if (master_nodes.size() > max_mortar_master_nodes_3d)
-        return refuse("overlaps more than " +
-                      std::to_string(max_mortar_master_nodes_3d) +
-                      " master nodes");
-      mortar.master_face_id[mortar.n_master_faces] = f;
-      mortar.master_face[mortar.n_master_faces++]  = face;
-    }
-    // The AD number holds the coordinates of every node and the unknowns.
-    const unsigned int n_derivatives =
-      3 * (stencil.size() + master_nodes.size()) +
-      pair.enforcement->n_node_unknowns();
-    if (n_derivatives > max_contact_derivatives)
-      return refuse("couples " + std::to_string(n_derivatives) +
-                    " unknowns, more than the " +
-                    std::to_string(max_contact_derivatives) +
-                    " its derivatives hold");
-
-    internal::mortar_positions(pair, k, stencil, master_nodes, mortar, dofs);
-    return true;
   }
 } // namespace tribos

@@ -1,7 +1,5 @@
-#include <tribos/contact/augmented_lagrangian.h>
 #include <tribos/contact/contact_pair.h>
-
-#include <deal.II/base/mpi.h>
+#include <tribos/contact/penalty.h>
 
 #include <cmath>
 
@@ -79,49 +77,6 @@ namespace tribos
 
 
 
-  template <int dim>
-  ContactLaw
-  AugmentedLagrangian<dim>::law(
-    const ContactPair<dim>          &pair,
-    const unsigned int               k,
-    const NodeState                 &state,
-    const AffineConstraints<double> &homogeneous) const
-  {
-    ContactLaw law = Penalty<dim>::law(pair, k, state, homogeneous);
-    law.multiplier = state.multiplier;
-    return law;
-  }
-
-
-
-  template <int dim>
-  double
-  AugmentedLagrangian<dim>::violation(const ContactPair<dim> &pair) const
-  {
-    double violation = 0;
-    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-      if (pair.owned[k] && pair.current[k].closed())
-        // Closed nodes must touch: a gap of either sign is a violation (a
-        // positive one means the warm-started multiplier of an unloading
-        // node is too large).
-        violation = std::max(violation,
-                             std::abs(pair.current[k].result.gap) /
-                               pair.slave->nodes()[k].size);
-    return violation;
-  }
-
-
-
-  template <int dim>
-  void
-  AugmentedLagrangian<dim>::outer_update(ContactPair<dim> &pair) const
-  {
-    for (auto &state : pair.current)
-      state.multiplier = state.result.pressure;
-  }
-
   template class Penalty<2>;
   template class Penalty<3>;
-  template class AugmentedLagrangian<2>;
-  template class AugmentedLagrangian<3>;
 } // namespace tribos

@@ -42,10 +42,6 @@ namespace tribos
       owned_solution.add(1., *predictor);
       solution_changed();
     }
-    n_chattering  = 0;
-    best_residual = std::numeric_limits<double>::infinity();
-    n_frozen      = 0;
-    released      = false;
     n_relaxations = 0;
     if (contact)
       contact->begin_increment();
@@ -119,39 +115,11 @@ namespace tribos
   Problem<dim>::after_assembly(const unsigned int iteration,
                                const double       residual)
   {
-    if (!contact)
-      return;
-    // Chattering detector: status changes of each slave node between the
-    // iterations of this increment, counted only while Newton makes no
-    // progress (the residual not below half the best one of the increment
-    // so far). While the residual falls, status changes are the active set
-    // converging, not chattering: an inexact (iterative) solve, a coarse
-    // first iterate or a wide contact zone change many statuses on the way
-    // (3D Hertz with GMRES: 104 nodes counted as chattering and 4 cutbacks,
-    // none once only stalled iterations count).
-    const bool stalled = iteration >= 2 && residual >= 0.5 * best_residual;
-    if (iteration >= 1)
-      best_residual = std::min(best_residual, residual);
-    const auto &cp = parameters.contact;
-    const auto  n = contact->track_status_changes(cp.chattering_flips, stalled);
-    n_chattering  = std::max(n_chattering, n);
-    const std::string what =
-      "chattering: " + std::to_string(n) +
-      " slave node(s) changed contact status or reversed their slip more "
-      "than " +
-      std::to_string(cp.chattering_flips) +
-      " times in this increment (Contact/Chattering flips)";
-    if (n > 0 && cp.chattering_remedy == Parameters::ChatteringRemedy::cutback)
-      throw NonConvergence(what + "; remedy: cut the increment "
-                                  "(Contact/Chattering remedy = cutback)");
-    if (n > 0 && cp.chattering_remedy == Parameters::ChatteringRemedy::freeze &&
-        n > n_frozen)
-    {
-      n_frozen = contact->freeze_chattering(cp.chattering_flips);
-      message("  " + what +
-              ": held closed (reversing slip: in stick) for the rest of "
-              "the increment (Contact/Chattering remedy = freeze)");
-    }
+    if (contact)
+      contact->watch_iteration(iteration,
+                               residual,
+                               [this](const std::string &text)
+                               { message(text); });
   }
 
 
@@ -161,32 +129,10 @@ namespace tribos
   Problem<dim>::at_convergence(IncrementReport &report)
   {
     const auto &p = parameters.nonlinear_solver;
-    if (n_frozen > 0)
-    {
-      const unsigned int n_inadmissible = contact->n_frozen_inadmissible();
-      // Once per increment the held nodes in tension (held in stick: beyond
-      // the Coulomb cone) are let go and Newton goes on from this iterate: the
-      // freeze only had to get Newton out of its cycle (load-controlled 3D
-      // Hertz: a converged iterate with 4 held nodes in tension; cutting back
-      // cost 20.5 s and 43 iterations, releasing them 12.1 s and 25). A second
-      // time the increment is cut.
-      if (n_inadmissible > 0 && !released)
-      {
-        released = true;
-        n_frozen -= contact->release_frozen_inadmissible();
-        message("  chattering: " + std::to_string(n_inadmissible) +
-                " held node(s) ended in tension, off the master or (held in "
-                "stick) beyond the Coulomb cone: released, Newton goes on");
-        return Verdict::iterate;
-      }
-      if (n_inadmissible > 0)
-        throw NonConvergence(
-          std::to_string(n_inadmissible) +
-          " chattering node(s) held ended in tension, off the master or "
-          "beyond the Coulomb cone (Contact/Chattering remedy = freeze): "
-          "cutting the increment");
-    }
-    report.n_chattering  = n_chattering;
+    if (contact && !contact->accept_iterate([this](const std::string &text)
+                                            { message(text); }))
+      return Verdict::iterate;
+    report.n_chattering  = contact ? contact->n_chattering() : 0;
     report.n_relaxations = n_relaxations;
     if (p.stabilization > 0)
     {
@@ -385,19 +331,7 @@ namespace tribos
   {
     // Augmented Lagrangian: a Uzawa update of the multipliers, then the
     // same increment again, until the penetration is below the tolerance.
-    if (!contact || !contact->augmented())
-      return false;
-    const auto  &cp        = parameters.contact;
-    const double violation = contact->augment(cp.augmentation_tolerance);
-    if (violation <= cp.augmentation_tolerance)
-      return false;
-    if (report.n_augmentations >= cp.max_augmentations)
-      throw NonConvergence("penetration " + to_scientific(violation) +
-                           " of the element size after " +
-                           std::to_string(report.n_augmentations) +
-                           " augmentations (Contact/Maximum augmentations)");
-    ++report.n_augmentations;
-    return true;
+    return contact && contact->outer_update(report.n_augmentations);
   }
 
 

@@ -35,10 +35,10 @@ namespace tribos
     }
 
     double
-    violation(const ContactPair<dim> &pair) const override;
+    violation(const NodeState &state, const double size) const override;
 
     void
-    outer_update(ContactPair<dim> &pair) const override;
+    outer_update(NodeState &state) const override;
   };
 } // namespace tribos
 

@@ -2,9 +2,12 @@
 #define tribos_contact_chattering_monitor_h
 
 #include <tribos/contact/contact_pair.h>
+#include <tribos/parameters/contact.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace tribos
@@ -25,16 +28,55 @@ namespace tribos
    * edge node of the contact zone with a small pressure). The remedy holds
    * it in stick; the result is accepted only if its traction is within the
    * Coulomb cone (else it is released once, as above).
+   *
+   * The policy (Contact/Chattering flips and Chattering remedy) acts
+   * through after_iteration() and accept(), which Newton's hooks call;
+   * track(), freeze() and the rest are its parts.
    */
   template <int dim>
   class ChatteringMonitor
   {
   public:
-    explicit ChatteringMonitor(const MPI_Comm mpi_communicator);
+    ChatteringMonitor(const Parameters::Contact &parameters,
+                      const MPI_Comm             mpi_communicator);
 
     /** Start counting for a new increment of @p pairs. */
     void
     begin_increment(const std::vector<ContactPair<dim>> &pairs);
+
+    /**
+     * After the assembly of Newton iteration @p iteration, whose free
+     * residual is @p residual: count the status changes of @p pairs'
+     * nodes while Newton makes no progress (the residual not below half
+     * the best one of the increment after its first iteration: while the
+     * residual falls, status changes are the active set converging) and
+     * apply the remedy to the nodes past Contact/Chattering flips: cut the
+     * increment (throws NonConvergence) or hold them (freeze; @p say tells
+     * the user).
+     */
+    void
+    after_iteration(const std::vector<ContactPair<dim>>            &pairs,
+                    const unsigned int                              iteration,
+                    const double                                    residual,
+                    const std::function<void(const std::string &)> &say);
+
+    /**
+     * At an iterate that passed Newton's tests: whether it may be
+     * accepted. Held nodes that ended in tension, off the master or beyond
+     * the Coulomb cone are released once (false: Newton goes on from this
+     * iterate); a second time the increment is cut (throws
+     * NonConvergence).
+     */
+    bool
+    accept(const std::vector<ContactPair<dim>>            &pairs,
+           const std::function<void(const std::string &)> &say);
+
+    /** The most chattering nodes seen in an iteration of the increment. */
+    unsigned int
+    most_chattering() const
+    {
+      return n_chattering_seen;
+    }
 
     /**
      * Compare every owned slave node's status at the last evaluation with
@@ -100,7 +142,15 @@ namespace tribos
               norm(state.result.traction) > limit * (1. + 1e-6));
     }
 
-    MPI_Comm mpi_communicator;
+    const Parameters::Contact &parameters;
+    MPI_Comm                   mpi_communicator;
+    /** The increment so far: the most chattering nodes of an iteration,
+     * the smallest residual after the first iteration, the nodes held, and
+     * whether held nodes were released. */
+    unsigned int n_chattering_seen = 0;
+    double       best_residual     = 0;
+    unsigned int n_frozen          = 0;
+    bool         released          = false;
     /** Per pair and node: status at the last evaluation (-1: none yet),
      * changes in the increment, held closed; the direction of the
      * tangential traction at the last evaluation if the node slipped

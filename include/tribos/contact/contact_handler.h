@@ -176,28 +176,36 @@ namespace tribos
     void
     load_committed_state(const std::vector<char> &state, const double time);
 
-    /** Start an increment (the chattering monitor). */
+    /** Start an increment (the chattering remedy's counts). */
     void
     begin_increment();
 
-    /** Nodes (all processes) with more than @p limit open/closed changes
-     * in this increment, counting the last evaluation. */
-    unsigned int
-    track_status_changes(const unsigned int limit, const bool count);
+    /**
+     * After the assembly of Newton iteration @p iteration (free residual
+     * @p residual): the chattering detector and its remedy
+     * (ChatteringMonitor::after_iteration()); @p say tells the user. May
+     * throw NonConvergence (Contact/Chattering remedy = cutback).
+     */
+    void
+    watch_iteration(const unsigned int                              iteration,
+                    const double                                    residual,
+                    const std::function<void(const std::string &)> &say);
 
-    /** Hold the chattering nodes closed until the increment ends; returns
-     * how many are held. */
-    unsigned int
-    freeze_chattering(const unsigned int limit);
+    /**
+     * At an iterate that passed Newton's tests: whether the contact accepts
+     * it (false: held nodes were released and Newton goes on;
+     * ChatteringMonitor::accept()). May throw NonConvergence.
+     */
+    bool
+    accept_iterate(const std::function<void(const std::string &)> &say);
 
-    /** Held nodes whose state the remedy may not keep: tensile or off the
-     * master, held in stick beyond the Coulomb cone (all processes). */
+    /** The most chattering slave nodes seen in an iteration of this
+     * increment. */
     unsigned int
-    n_frozen_inadmissible() const;
-
-    /** Release those nodes; returns how many. */
-    unsigned int
-    release_frozen_inadmissible();
+    n_chattering() const
+    {
+      return monitor.most_chattering();
+    }
 
     /** The last evaluated state becomes the converged history. */
     void
@@ -246,18 +254,17 @@ namespace tribos
     void
     restore();
 
-    /** Whether some pair's enforcement has an outer update (Uzawa). */
-    bool
-    augmented() const;
-
     /**
-     * The outer update at the last evaluated (converged) state: returns the
-     * largest violation (|g_N| of a closed node over its element size); if
-     * it exceeds @p tolerance the enforcements update (the increment must
-     * then be solved again).
+     * The outer update of the enforcements at the last evaluated
+     * (converged) state (the augmented Lagrangian's Uzawa step): if the
+     * largest violation (|g_N| of a closed node over its element size)
+     * exceeds Contact/Augmentation tolerance, the enforcements update and
+     * the increment must be solved again (true); @p n_augmentations counts
+     * the updates of the increment. Throws NonConvergence after Contact/
+     * Maximum augmentations. Collective.
      */
-    double
-    augment(const double tolerance);
+    bool
+    outer_update(unsigned int &n_augmentations);
 
     /** See penalty_warnings(). */
     std::vector<std::string>
@@ -287,8 +294,10 @@ namespace tribos
     IndexSet                      all_contact_dofs;
     IndexSet                      slave_read_dofs;
     ExchangeVolume                exchange;
-    double                        force_weight           = 1;
-    types::global_dof_index       n_enforcement_unknowns = 0;
+    double                        force_weight = 1;
+    /** The buffers of an element's residual and tangent (assemble()). */
+    std::vector<double>     element_residual, element_matrix;
+    types::global_dof_index n_enforcement_unknowns = 0;
     /** Unknowns below this number are displacements. */
     types::global_dof_index n_displacement_dofs;
     /** This process's slave nodes paired across processes at the last

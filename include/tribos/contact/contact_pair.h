@@ -1,6 +1,7 @@
 #ifndef tribos_contact_contact_pair_h
 #define tribos_contact_contact_pair_h
 
+#include <tribos/contact/contact_discretization.h>
 #include <tribos/contact/contact_search.h>
 #include <tribos/contact/contact_surface.h>
 #include <tribos/contact/enforcement.h>
@@ -23,11 +24,12 @@ namespace tribos
   using namespace dealii;
 
   /**
-   * One contact pair: a slave surface, its master (a deformable surface or
-   * a rigid one), its enforcement, and per slave node its tributary area,
-   * its state (current and committed) and positions. Built once by
-   * make_contact_pairs(); the search (Pairing), the elements, the
-   * enforcement and the output all work on it.
+   * One contact pair: its identity and geometry (a slave surface, its
+   * master: a deformable surface or a rigid one), its discretization and
+   * enforcement, and per slave node its tributary area, its state (current
+   * and committed) and positions. Built once by make_contact_pairs(); the
+   * discretization (search and elements) writes the node states, the
+   * enforcement only reads the pair, the output reads the states.
    */
   template <int dim>
   struct ContactPair
@@ -37,6 +39,8 @@ namespace tribos
     std::shared_ptr<ContactSurface<dim>>    master;
     std::shared_ptr<RigidSurface<dim>>      rigid;
     std::shared_ptr<const Enforcement<dim>> enforcement;
+    /** The search and the elements (create_discretization()). */
+    std::shared_ptr<ContactDiscretization<dim>> discretization;
     /**
      * The contact modulus E of the penalties 'k*E/h': the series modulus
      * E_s E_m / (E_s + E_m) of the two sides, E_s against a rigid surface
@@ -48,14 +52,6 @@ namespace tribos
     double contact_modulus = 0;
     /** 1/2 with two passes (each pass carries half the area), else 1. */
     double area_factor = 1;
-    /** The master is smoothed by averaged normals (2D). */
-    bool smoothed = false;
-    /** Contact/Discretization = mortar (2D, deformable master). */
-    bool mortar = false;
-    /** Mortar basis = dual. */
-    bool dual_basis = true;
-    /** Areas and mortar integrals over the surface of revolution. */
-    bool axisymmetric = false;
     /** The number of the first of the enforcement's unknowns (if any):
      * node k's are first_unknown + n_node_unknowns k + d. */
     types::global_dof_index first_unknown = 0;
@@ -85,10 +81,6 @@ namespace tribos
     /** Per slave node: the state at the last evaluation and at the last
      * converged increment. */
     std::vector<NodeState> current, committed;
-    /** Mortar: per slave node, the master faces that overlap its slave
-     * faces at the last search (the first one is also NodeState::face). */
-    std::vector<std::vector<unsigned int>> mortar_faces;
-
     /** Node positions, now and at the last converged increment. */
     std::vector<Vec3<double>> slave_positions, old_slave_positions;
     std::vector<Vec3<double>> master_positions, old_master_positions;
@@ -128,56 +120,16 @@ namespace tribos
       return owned.size();
     }
 
-    /**
-     * Mortar: the slave nodes of slave node @p k's element, @p k first,
-     * then the other nodes of its slave faces.
-     */
+    /** Append the dofs of slave node @p k's unknowns (the enforcement's,
+     * if any) to @p dofs. */
     void
-    slave_stencil(const unsigned int k, std::vector<unsigned int> &nodes) const;
-
-    /**
-     * Mortar: the slave nodes of slave node @p k's element, slave_stencil()
-     * and those of the hanging nodes it carries (ContactPair::carried).
-     */
-    void
-    mortar_stencil(const unsigned int         k,
-                   std::vector<unsigned int> &nodes) const;
-
-    /**
-     * Mortar: the slave faces of slave node @p k's element, its own and
-     * those of the hanging nodes it carries, each once.
-     */
-    void
-    mortar_slave_faces(const unsigned int         k,
-                       std::vector<unsigned int> &faces) const;
-
-    /**
-     * Mortar: the master faces of slave node @p k's element, its own
-     * (mortar_faces) and those of the hanging nodes it carries, each once.
-     */
-    void
-    mortar_master_faces(const unsigned int         k,
-                        std::vector<unsigned int> &faces) const;
-
-    /**
-     * The dofs of the element of slave node @p k against master @p face
-     * (-1: none): the slave's (mortar: of slave_stencil()), then the
-     * face's nodes' (with a smoothed master also the segment's neighbour
-     * nodes), then the node's unknowns.
-     */
-    void
-    element_dofs(const unsigned int                    k,
-                 const int                             face,
-                 std::vector<types::global_dof_index> &dofs) const;
-
-    /** Add to @p into the couplings slave node @p k needs on master
-     * @p face: the face and its neighbours (the node may slide onto them
-     * within an increment). */
-    void
-    insert_couplings(
-      const unsigned int                               k,
-      const unsigned int                               face,
-      std::set<std::pair<unsigned int, unsigned int>> &into) const;
+    append_unknown_dofs(const unsigned int                    k,
+                        std::vector<types::global_dof_index> &dofs) const
+    {
+      const unsigned int n = enforcement->n_node_unknowns();
+      for (unsigned int d = 0; d < n; ++d)
+        dofs.push_back(first_unknown + n * k + d);
+    }
   };
 
 

@@ -112,19 +112,19 @@ namespace tribos
     }
 
     /**
-     * The outer update's measure at the converged state of the owned nodes
-     * of @p pair: the largest violation (|g_N| of a closed node over its
-     * element size).
+     * The outer update's measure at the converged @p state of a slave node
+     * whose element size is @p size: its violation (|g_N| of a closed node
+     * over the element size).
      */
     virtual double
-    violation(const ContactPair<dim> & /*pair*/) const
+    violation(const NodeState & /*state*/, const double /*size*/) const
     {
       return 0;
     }
 
-    /** The outer update of @p pair's nodes (lambda <- t_N). */
+    /** The outer update of a slave node's @p state (lambda <- t_N). */
     virtual void
-    outer_update(ContactPair<dim> & /*pair*/) const
+    outer_update(NodeState & /*state*/) const
     {
     }
   };

@@ -12,9 +12,6 @@
 
 namespace tribos
 {
-  template <int dim>
-  struct ContactPair;
-
   /**
    * What the 2D mortar element of one slave node j needs: the slave nodes
    * of its segments (j first, then its neighbours), now and at the last
@@ -150,25 +147,6 @@ namespace tribos
              Vec3<double>         &weighted_point);
   };
 
-  /**
-   * The input of slave node @p k's mortar element in @p pair: its slave
-   * stencil and segments, the master nodes and segments the search found
-   * (ContactPair::mortar_faces), now and at the last converged step;
-   * @p dofs gets the element's dofs (slave stencil, master nodes, the
-   * node's unknowns). @p stencil and @p master_nodes are buffers reused
-   * between nodes. Returns false, with the reason in @p too_large (the
-   * first one met), if the element couples more master nodes than the AD
-   * number holds.
-   */
-  bool
-  mortar_input(const ContactPair<2>                         &pair,
-               const unsigned int                            k,
-               MortarInput                                  &mortar,
-               std::vector<unsigned int>                    &stencil,
-               std::vector<unsigned int>                    &master_nodes,
-               std::vector<dealii::types::global_dof_index> &dofs,
-               std::string                                  &too_large);
-
   namespace internal
   {
     /**
@@ -235,23 +213,6 @@ namespace tribos
       list.push_back(node);
       return static_cast<unsigned int>(list.size() - 1);
     }
-
-    /**
-     * The positions (now and at the last converged step) of the slave
-     * @p stencil and the @p master_nodes of slave node @p k's mortar
-     * element in @p pair into @p mortar (MortarInput or MortarInput3D),
-     * with the basis and the weight below which the node has no master;
-     * @p dofs gets the element's dofs (slave stencil, master nodes, the
-     * node's unknowns).
-     */
-    template <int dim, typename Input>
-    void
-    mortar_positions(const ContactPair<dim>                       &pair,
-                     const unsigned int                            k,
-                     const std::vector<unsigned int>              &stencil,
-                     const std::vector<unsigned int>              &master_nodes,
-                     Input                                        &mortar,
-                     std::vector<dealii::types::global_dof_index> &dofs);
 
     /**
      * The end of every mortar element (2D and 3D): from the node's weights

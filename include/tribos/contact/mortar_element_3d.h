@@ -13,9 +13,6 @@
 
 namespace tribos
 {
-  template <int dim>
-  struct ContactPair;
-
   /**
    * The overlaps of (slave face, master face) pairs integrated so far in
    * one assembly: each overlap is needed by the elements of the 4 nodes of
@@ -139,21 +136,6 @@ namespace tribos
              bool                 &paired,
              Vec3<double>         &weighted_point);
   };
-
-  /**
-   * The input of slave node @p k's 3D mortar element in @p pair, as
-   * mortar_input() in 2D. Returns false, with the reason in @p too_large,
-   * if the element couples more master nodes or faces than the AD number
-   * holds.
-   */
-  bool
-  mortar_input(const ContactPair<3>                         &pair,
-               const unsigned int                            k,
-               MortarInput3D                                &mortar,
-               std::vector<unsigned int>                    &stencil,
-               std::vector<unsigned int>                    &master_nodes,
-               std::vector<dealii::types::global_dof_index> &dofs,
-               std::string                                  &too_large);
 
   namespace internal
   {

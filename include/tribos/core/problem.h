@@ -440,14 +440,7 @@ namespace tribos
     unsigned int              current_increment = 0;
     double                    time              = 0;
     AffineConstraints<double> increment_constraints;
-    /** Contact and stabilization bookkeeping of the current increment. */
-    unsigned int n_chattering = 0;
-    /** The smallest residual of this increment's iterations after the
-     * first (whether Newton is still making progress). */
-    double       best_residual = 0;
-    unsigned int n_frozen      = 0;
-    /** Held nodes in tension were released in this increment. */
-    bool         released      = false;
+    /** Re-anchorings of the stabilization springs in this increment. */
     unsigned int n_relaxations = 0;
     /** The stabilization forces of the last assembly. */
     Vector stabilization_forces;

@@ -1,0 +1,76 @@
+#ifndef tribos_contact_rigid_surface_discretization_h
+#define tribos_contact_rigid_surface_discretization_h
+
+#include <tribos/contact/contact_discretization.h>
+#include <tribos/parameters/contact.h>
+
+namespace tribos
+{
+  /**
+   * Node to surface against a rigid analytic master (plane, sphere,
+   * cylinder, moving in time; NodeToRigid): every slave node is paired
+   * with the surface's closest point, which needs no search, and its
+   * element has the node's dofs only.
+   */
+  template <int dim>
+  class RigidSurfaceDiscretization : public ContactDiscretization<dim>
+  {
+  public:
+    explicit RigidSurfaceDiscretization(const Parameters::Contact &parameters);
+
+    std::string
+    name() const override
+    {
+      return "node to rigid surface";
+    }
+
+    void
+    initialize(const ContactPair<dim> &pair) override;
+
+    bool
+    pair_node(ContactPair<dim> &pair, const unsigned int k) override;
+
+    void
+    add_couplings(const ContactPair<dim> &,
+                  const AffineConstraints<double> &,
+                  DynamicSparsityPattern &) const override
+    {
+    }
+
+    void
+    used_couplings(
+      const ContactPair<dim> &,
+      const unsigned int,
+      std::set<std::pair<unsigned int, unsigned int>> &) const override
+    {
+    }
+
+    void
+    begin_assembly(const ContactPair<dim> &pair,
+                   const double            time,
+                   const double            committed_time) override;
+
+    ElementOutcome
+    evaluate(ContactPair<dim>                     &pair,
+             const unsigned int                    k,
+             const SlaveInput                     &slave,
+             double                               *R,
+             double                               *K,
+             std::vector<types::global_dof_index> &dofs,
+             std::string                          &refusal) override;
+
+    unsigned int
+    max_element_dofs() const override
+    {
+      return NodeToRigid<dim>::n_dofs + dim;
+    }
+
+  private:
+    const Parameters::Contact &parameters;
+    /** The surface and its translation now and at the last converged
+     * step (begin_assembly()). */
+    RigidInput<dim> rigid;
+  };
+} // namespace tribos
+
+#endif

@@ -1,0 +1,249 @@
+#include <tribos/contact/contact_pair.h>
+#include <tribos/contact/mortar_discretization.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+// The search of MortarDiscretization: which master faces each slave node's
+// element integrates.
+namespace tribos
+{
+  template <int dim>
+  bool
+  MortarDiscretization<dim>::pair_node(ContactPair<dim>  &pair,
+                                       const unsigned int k)
+  {
+    find_faces(pair, k);
+    // The faces of the hanging nodes whose functions this node carries are
+    // its element's too. A hanging node has no element of its own (it
+    // stays unpaired); its owner may be another process.
+    for (const auto &[h, weight] : pair.carried[k])
+    {
+      find_faces(pair, h);
+      pair.current[h].paired = false;
+      pair.current[h].face   = -1;
+      auto &state            = pair.current[k];
+      if (!state.paired && !faces_of_node[h].empty())
+      {
+        state.paired   = true;
+        state.face     = faces_of_node[h][0];
+        state.distance = pair.current[h].distance;
+      }
+    }
+    // A smoothed master's element also reads the faces beyond its faces
+    // (their normals): a face first coupled as a neighbour needs its own
+    // neighbours once it is the element's.
+    bool                      new_coupling = false;
+    std::vector<unsigned int> faces;
+    element_master_faces(pair, k, faces);
+    for (const unsigned int face : faces)
+      if (pair.couplings.count({k, face}) == 0 ||
+          (smoothed_master &&
+           std::any_of(pair.master->faces()[face].neighbours.begin(),
+                       pair.master->faces()[face].neighbours.end(),
+                       [&](const unsigned int g) {
+                         return pair.couplings.count({k, g}) == 0;
+                       })))
+      {
+        new_coupling = true;
+        this->insert_couplings(pair, k, face, pair.couplings);
+      }
+    return new_coupling;
+  }
+
+
+
+  template <int dim>
+  void
+  MortarDiscretization<dim>::find_faces(ContactPair<dim>  &pair,
+                                        const unsigned int k)
+  {
+    NodeState &state = pair.current[k];
+    auto      &found = faces_of_node[k];
+    found.clear();
+    state.paired        = false;
+    state.face          = -1;
+    state.distance      = std::numeric_limits<double>::quiet_NaN();
+    const auto &faces   = pair.master->faces();
+    double      closest = std::numeric_limits<double>::max();
+    // Whether one of the faces found lies within reach along the normal.
+    // The reach decides whether the node pairs, not which faces its
+    // element integrates: a face dropped or taken by its distance while
+    // it overlaps would change the weighted gap by its whole share, and
+    // Newton cycles where that happens (issue 18).
+    bool reached = false;
+    // From the master faces closest to the slave points @p starts through
+    // their neighbours, as long as they overlap the slave face or segment
+    // in its projection; @p classify(m) is 0 for a face that does not
+    // overlap, 1 for one that overlaps but is not taken (it faces away, or
+    // lies too deep behind), 2 for one taken. The walk goes on through
+    // faces not taken, so that faces beyond them are found however the
+    // closest faces lie. False if the search found no face at all.
+    const auto walk = [&](const std::initializer_list<Vec3<double>> starts,
+                          const auto                               &classify)
+    {
+      std::vector<unsigned int> queue;
+      for (const Vec3<double> &point : starts)
+      {
+        unsigned int face;
+        double       squared_distance;
+        if (!pair.search.closest_face(point, face, squared_distance))
+          return false;
+        closest = std::min(closest, std::sqrt(squared_distance));
+        if (std::find(queue.begin(), queue.end(), face) == queue.end())
+          queue.push_back(face);
+      }
+      const unsigned int n_start = queue.size();
+      for (unsigned int i = 0; i < queue.size(); ++i)
+      {
+        const unsigned int m       = queue[i];
+        const int          class_m = classify(m);
+        if (class_m == 2 &&
+            std::find(found.begin(), found.end(), m) == found.end())
+          found.push_back(m);
+        if (class_m > 0 || i < n_start)
+          for (const unsigned int g : faces[m].neighbours)
+            if (pair.face_known[g] &&
+                std::find(queue.begin(), queue.end(), g) == queue.end())
+              queue.push_back(g);
+      }
+      return true;
+    };
+    if constexpr (dim == 2)
+    {
+      const auto        &slave_faces = pair.slave->faces();
+      const Vec3<double> ez{{0., 0., 1.}};
+      // A node closed at the last converged step keeps faces however deep
+      // an iterate pushes it (it must meet the contact force, not lose the
+      // master); an open one only sees faces less than a segment length
+      // behind it (steep slave segments would otherwise pair with faces
+      // beside them).
+      const bool was_closed = pair.committed[k].closed();
+      const bool quadratic  = pair.slave->quadratic();
+      for (const unsigned int f : pair.slave->nodes()[k].faces)
+      {
+        const Vec3<double> &x_a = pair.slave_positions[slave_faces[f].nodes[0]];
+        const Vec3<double> &x_b = pair.slave_positions[slave_faces[f].nodes[1]];
+        const Vec3<double>  e   = x_b - x_a;
+        const double        length_squared = dot(e, e);
+        const Vec3<double>  n_s =
+          scale(1. / std::sqrt(length_squared), cross(ez, e));
+
+        // Whether master face m overlaps this slave segment in the
+        // projection onto its line, faces it and is not too deep behind
+        // it (walk's classes).
+        const auto classify = [&](const unsigned int m)
+        {
+          const Vec3<double> &y_c = pair.master_positions[faces[m].nodes[0]];
+          const Vec3<double> &y_d = pair.master_positions[faces[m].nodes[1]];
+          const double        s_c = dot(y_c - x_a, e) / length_squared;
+          const double        s_d = dot(y_d - x_a, e) / length_squared;
+          if (std::abs(s_c - s_d) < 1e-12)
+            return 0;
+          // Quadratic segments are curves, the chords only approximate
+          // where they overlap: a face found late (or lost) would change
+          // the element's weights by a jump. Faces a quarter of the
+          // segment beyond its chord are taken as well; the element skips
+          // those that do not overlap.
+          const double margin = quadratic ? 0.25 : 0.;
+          const double lo     = std::max(-margin, std::min(s_c, s_d));
+          const double hi     = std::min(1. + margin, std::max(s_c, s_d));
+          if (hi <= lo)
+            return 0;
+          // Faces steeper than 75 degrees to the slave segment cannot
+          // carry its contact (the sides of a body above the slave).
+          const Vec3<double> n_m = cross(ez, y_d - y_c);
+          if (dot(n_m, n_s) >= -0.25 * norm(n_m))
+            return 1;
+          // Within reach: closer than the search distance and the
+          // segment's length (a node whose faces are all farther cannot
+          // close within an increment; it is paired again when it comes
+          // near). Not wholly more than that behind the slave (the far
+          // side of a thin master).
+          double gap_min = std::numeric_limits<double>::max(),
+                 gap_max = -gap_min;
+          for (const double t : {lo, hi})
+          {
+            const Vec3<double> y =
+              y_c + scale((t - s_c) / (s_d - s_c), y_d - y_c);
+            const double gap = dot(y - (x_a + scale(t, e)), n_s);
+            gap_min          = std::min(gap_min, gap);
+            gap_max          = std::max(gap_max, gap);
+          }
+          const double length = std::sqrt(length_squared);
+          if (gap_max < -length && !was_closed)
+            return 1;
+          reached |= gap_min <= std::min(parameters.search_distance, length);
+          return 2;
+        };
+
+        // From the faces closest to the segment's ends and middle through
+        // their neighbours, as long as they overlap.
+        if (!walk({x_a, x_b, scale(0.5, x_a + x_b)}, classify))
+          return;
+      }
+    }
+    else
+    {
+      const auto &slave_faces = pair.slave->faces();
+      const bool  was_closed  = pair.committed[k].closed();
+      for (const unsigned int f : pair.slave->nodes()[k].faces)
+      {
+        // The face's auxiliary plane, as in the element (Mortar3D).
+        Vec3<double> x[4];
+        for (unsigned int v = 0; v < 4; ++v)
+          x[v] = pair.slave_positions[slave_faces[f].nodes[v]];
+        const internal::AuxiliaryPlane<double> plane =
+          internal::auxiliary_plane(x);
+        double height_min = std::numeric_limits<double>::max(),
+               height_max = -height_min;
+        for (unsigned int v = 0; v < 4; ++v)
+        {
+          height_min = std::min(height_min, dot(x[v] - plane.x0, plane.n0));
+          height_max = std::max(height_max, dot(x[v] - plane.x0, plane.n0));
+        }
+        const double length = std::sqrt(std::abs(plane.area));
+
+        // Whether master face m overlaps this slave face in the plane and
+        // is not too deep behind it (as in 2D).
+        const auto classify = [&](const unsigned int m)
+        {
+          Vec3<double> y[4];
+          double       gap_min = std::numeric_limits<double>::max(),
+                 gap_max       = -gap_min;
+          for (unsigned int v = 0; v < 4; ++v)
+          {
+            y[v]               = pair.master_positions[faces[m].nodes[v]];
+            const double above = dot(y[v] - plane.x0, plane.n0);
+            gap_min            = std::min(gap_min, above - height_max);
+            gap_max            = std::max(gap_max, above - height_min);
+          }
+          if (!internal::overlaps_in_plane(plane, y))
+            return 0;
+          if (gap_max < -length && !was_closed)
+            return 1;
+          reached |= gap_min <= std::min(parameters.search_distance, length);
+          return 2;
+        };
+
+        if (!walk({x[0], x[1], x[2], x[3], plane.x0}, classify))
+          return;
+      }
+    }
+    // Beyond the search distance no gap is known (see candidate_faces()).
+    state.distance = closest <= parameters.search_distance ?
+                       closest :
+                       std::numeric_limits<double>::quiet_NaN();
+    if (!reached)
+      found.clear();
+    if (!found.empty())
+    {
+      state.paired = true;
+      state.face   = found[0];
+    }
+  }
+
+  template class MortarDiscretization<2>;
+  template class MortarDiscretization<3>;
+} // namespace tribos

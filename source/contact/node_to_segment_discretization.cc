@@ -1,0 +1,182 @@
+#include <tribos/contact/contact_pair.h>
+#include <tribos/contact/node_to_segment_discretization.h>
+
+#include <cmath>
+#include <limits>
+
+namespace tribos
+{
+  template <int dim>
+  NodeToSegmentDiscretization<dim>::NodeToSegmentDiscretization(
+    const Parameters::Contact &parameters)
+    : parameters(parameters)
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  NodeToSegmentDiscretization<dim>::initialize(const ContactPair<dim> &pair)
+  {
+    require_linear_slave_faces(pair);
+  }
+
+
+
+  template <int dim>
+  bool
+  NodeToSegmentDiscretization<dim>::couple_face(ContactPair<dim>  &pair,
+                                                const unsigned int k)
+  {
+    const int face = pair.current[k].face;
+    if (face < 0 || pair.couplings.count({k, face}) == 1)
+      return false;
+    ContactDiscretization<dim>::insert_couplings(pair, k, face, pair.couplings);
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  NodeToSegmentDiscretization<dim>::pair_node(ContactPair<dim>  &pair,
+                                              const unsigned int k)
+  {
+    NodeState          &state = pair.current[k];
+    const Vec3<double> &x     = pair.slave_positions[k];
+    const auto         &faces = pair.master->faces();
+    const auto project_onto   = [&](const unsigned int f, const bool clamp)
+    {
+      Vec3<double> xm[4];
+      for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+        xm[v] = pair.master_positions[faces[f].nodes[v]];
+      return project<dim>(x, xm, clamp);
+    };
+
+    // Keep the face of the last evaluation while the node projects onto it
+    // or onto its extension within the edge band (see the class).
+    // A face that is not known lies beyond the search distance.
+    if (state.paired && pair.face_known[state.face])
+    {
+      const Projection kept = project_onto(state.face, false);
+      bool             near = kept.distance <= parameters.search_distance;
+      for (unsigned int c = 0; c < dim - 1; ++c)
+        near = near && std::abs(kept.xi[c]) <= 1. + edge_band;
+      if (near)
+      {
+        state.projection = kept;
+        return couple_face(pair, k);
+      }
+    }
+    state.paired   = false;
+    state.face     = -1;
+    state.distance = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<unsigned int> candidates =
+      candidate_faces(pair, x, state);
+    if (candidates.empty())
+      return false;
+
+    // Exact projection on the candidate and its neighbours: prefer a
+    // projection inside a face (the closest such), else the closest clamped
+    // one.
+    bool   best_inside   = false;
+    double best_distance = std::numeric_limits<double>::max();
+    for (const unsigned int f : candidates)
+    {
+      const Projection p      = project_onto(f, true);
+      const bool       inside = p.inside();
+      if ((inside && !best_inside) ||
+          (inside == best_inside && p.distance < best_distance))
+      {
+        best_inside      = inside;
+        best_distance    = p.distance;
+        state.face       = f;
+        state.projection = p;
+      }
+    }
+    // A projection clamped at an edge where the master surface ends: within
+    // a small band beyond the edge the node sees the face's extension (a
+    // smooth residual for nodes flush with the end of the master); farther
+    // out it has slid off: no contact.
+    state.paired = true;
+    bool at_end  = false;
+    for (unsigned int c = 0; c < dim - 1; ++c)
+      if (state.projection.clamped[c] != 0 &&
+          !faces[state.face].continues[c][state.projection.clamped[c] > 0])
+        at_end = true;
+    if (at_end)
+    {
+      const Projection extended = project_onto(state.face, false);
+      for (unsigned int c = 0; c < dim - 1; ++c)
+        if (std::abs(extended.xi[c]) > 1. + edge_band)
+          state.paired = false;
+      state.projection = extended;
+    }
+    return couple_face(pair, k);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  NodeToSegmentDiscretization<dim>::candidate_faces(
+    const ContactPair<dim> &pair,
+    const Vec3<double>     &x,
+    NodeState              &state) const
+  {
+    unsigned int closest;
+    double       squared_distance;
+    if (!pair.search.closest_face(x, closest, squared_distance))
+      return {};
+    // Beyond the search distance the master is not looked for (the faces
+    // there are not all known under MPI): no gap either.
+    state.distance = std::sqrt(squared_distance);
+    if (state.distance > parameters.search_distance)
+    {
+      state.distance = std::numeric_limits<double>::quiet_NaN();
+      return {};
+    }
+    std::vector<unsigned int> candidates(1, closest);
+    for (const unsigned int g : pair.master->faces()[closest].neighbours)
+      if (pair.face_known[g])
+        candidates.push_back(g);
+    return candidates;
+  }
+
+
+
+  template <int dim>
+  ElementOutcome
+  NodeToSegmentDiscretization<dim>::evaluate(
+    ContactPair<dim>                     &pair,
+    const unsigned int                    k,
+    const SlaveInput                     &slave,
+    double                               *R,
+    double                               *K,
+    std::vector<types::global_dof_index> &dofs,
+    std::string &)
+  {
+    NodeState     &state = pair.current[k];
+    const int      face  = state.face;
+    FaceInput<dim> input;
+    const auto    &nodes = pair.master->faces()[face].nodes;
+    for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+    {
+      input.x[v]     = pair.master_positions[nodes[v]];
+      input.x_old[v] = pair.old_master_positions[nodes[v]];
+    }
+    input.projection = state.projection;
+    input.same_face  = pair.committed[k].face == face;
+    state.result =
+      NodeToSegment<dim>::evaluate(slave, input, *pair.enforcement, R, K);
+    state.point = slave.position - scale(state.result.gap, state.result.normal);
+    this->element_dofs(pair, k, face, dofs);
+    return {ElementOutcome::Kind::element, true};
+  }
+
+
+
+  template class NodeToSegmentDiscretization<2>;
+  template class NodeToSegmentDiscretization<3>;
+} // namespace tribos
