@@ -8,8 +8,8 @@
  */
 
 #include <tribos/base/exceptions.h>
-#include <tribos/core/problem.h>
 #include <tribos/parameters/all_parameters.h>
+#include <tribos/run/simulation.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -166,16 +166,18 @@ namespace
     tribos::Rebalance rebalance;
     for (;;)
     {
-      // Let the problem (and its TimerOutput) be destroyed before a failure
-      // propagates, so that its destructor runs outside of stack unwinding.
+      // Let the simulation (and its TimerOutput) be destroyed before a
+      // failure propagates, so that its destructor runs outside of stack
+      // unwinding.
       std::exception_ptr failure;
       bool               again = false;
       {
-        tribos::Problem<dim> problem(parameters, MPI_COMM_WORLD);
-        problem.set_rebalance(rebalance);
+        tribos::Simulation<dim> simulation(parameters,
+                                           MPI_COMM_WORLD,
+                                           rebalance);
         try
         {
-          problem.run();
+          simulation.run();
         }
         catch (tribos::Rebalance &next)
         {

@@ -29,7 +29,154 @@
 #include <random>
 #include <vector>
 
+#include "mortar_check.h"
+
 using namespace tribos;
+
+/**
+ * A random mortar element input of @p sample (its kinds: quadratic,
+ * smoothed master, axisymmetric, ... by the sample number); @p quadratic,
+ * @p smoothed and the slave's segment length @p h_slave are set.
+ */
+MortarInput
+random_input(std::mt19937                           &random,
+             std::uniform_real_distribution<double> &u,
+             const unsigned int                      sample,
+             bool                                   &quadratic,
+             bool                                   &smoothed,
+             double                                 &h_slave)
+{
+  // Slave: node j at the origin, neighbours left and right (slave body
+  // above, so the segments run right to left for an outward normal
+  // pointing down); sometimes only one segment (an end of the slave).
+  // Every other pair of samples is quadratic (Q2): curved segments with
+  // middle nodes, node j a vertex of two segments, of one, or a middle.
+  MortarInput input;
+  quadratic                 = (sample / 2) % 2 == 1;
+  h_slave                   = 0.5 + 0.3 * u(random);
+  input.xs[0]               = {{0.05 * u(random), 0.02 * u(random), 0}};
+  input.xs[1]               = {{h_slave, 0.1 * h_slave + 0.05 * u(random), 0}};
+  input.xs[2]               = {{-h_slave + 0.05 * u(random), 0.1 * h_slave, 0}};
+  const bool one_segment    = sample % 7 == 0;
+  input.n_slave_nodes       = one_segment ? 2 : 3;
+  input.n_slave_segments    = one_segment ? 1 : 2;
+  input.slave_segment[0][0] = 1;
+  input.slave_segment[0][1] = 0;
+  input.slave_segment[1][0] = 0;
+  input.slave_segment[1][1] = 2;
+  // A middle node between a and b, off the chord by up to 5 % of it.
+  const auto middle = [&](const Vec3<double> &a, const Vec3<double> &b)
+  {
+    const Vec3<double> chord = b - a;
+    const Vec3<double> off{{-chord[1], chord[0], 0}};
+    return scale(0.5, a + b) + scale(0.05 * u(random), off) +
+           scale(0.03 * u(random), chord);
+  };
+  if (quadratic)
+  {
+    input.n_segment_nodes   = 3;
+    const unsigned int kind = (sample / 4) % 3;
+    if (kind == 0 && !one_segment)
+    {
+      input.xs[3]               = middle(input.xs[1], input.xs[0]);
+      input.xs[4]               = middle(input.xs[0], input.xs[2]);
+      input.n_slave_nodes       = 5;
+      input.slave_segment[0][2] = 3;
+      input.slave_segment[1][2] = 4;
+    }
+    else if (kind == 1 || one_segment)
+    {
+      input.xs[2]               = middle(input.xs[1], input.xs[0]);
+      input.n_slave_nodes       = 3;
+      input.n_slave_segments    = 1;
+      input.slave_segment[0][2] = 2;
+    }
+    else
+    {
+      // j is the middle of the segment from node 1 to node 2.
+      input.xs[0]               = middle(input.xs[1], input.xs[2]);
+      input.n_slave_nodes       = 3;
+      input.n_slave_segments    = 1;
+      input.slave_segment[0][0] = 1;
+      input.slave_segment[0][1] = 2;
+      input.slave_segment[0][2] = 0;
+    }
+  }
+
+  // Master: a polyline below, left to right (body below, normal up),
+  // spacing finer or coarser than the slave; sometimes ending under
+  // the slave segment (partial coverage). Quadratic: a middle node on
+  // each segment, after the vertices.
+  const unsigned int n_master = 3 + sample % 2;
+  const double       h_master = (sample % 3 == 0 ? 0.4 : 1.0) * h_slave;
+  const double start = -0.5 * n_master * h_master + 0.3 * h_master * u(random);
+  const bool   short_master = sample % 5 == 0;
+  input.n_master_nodes      = n_master + 1;
+  input.n_master_segments   = n_master;
+  for (unsigned int l = 0; l <= n_master; ++l)
+    input.xm[l] = {{start + l * h_master * (short_master ? 0.6 : 1.),
+                    0.01 * u(random) - 0.02 * std::abs(u(random)),
+                    0}};
+  for (unsigned int m = 0; m < n_master; ++m)
+    input.master_segment[m] = {{m, m + 1}};
+  if (quadratic)
+    for (unsigned int m = 0; m < n_master; ++m)
+    {
+      input.xm[n_master + 1 + m] = middle(input.xm[m], input.xm[m + 1]);
+      input.master_segment[m][2] = n_master + 1 + m;
+      ++input.n_master_nodes;
+    }
+  // Three Q1 samples in seven: the master's averaged normals (Master
+  // smoothing), with a bent segment beyond each end of the polyline.
+  smoothed = !quadratic && sample % 7 < 3;
+  if (smoothed)
+  {
+    const unsigned int left = n_master + 1, right = n_master + 2;
+    input.xm[left] = {
+      {input.xm[0][0] - h_master, 0.2 * h_master * u(random), 0}};
+    input.xm[right] = {
+      {input.xm[n_master][0] + h_master, 0.2 * h_master * u(random), 0}};
+    input.n_master_nodes += 2;
+    input.smoothed_master = true;
+    for (unsigned int m = 0; m < n_master; ++m)
+    {
+      input.master_beyond[m][0] = m == 0 ? left : m - 1;
+      input.master_beyond[m][1] = m + 1 == n_master ? right : m + 2;
+    }
+  }
+  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    for (unsigned int d = 0; d < 2; ++d)
+      input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
+  for (unsigned int l = 0; l < input.n_master_nodes; ++l)
+    for (unsigned int d = 0; d < 2; ++d)
+      input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
+  input.dual = sample % 3 != 2;
+  // Every fourth: axisymmetric (x = r > 0), weight 2 pi r in every
+  // integral and in the dual functions.
+  input.axisymmetric = sample % 4 == 1;
+  if (input.axisymmetric)
+  {
+    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    {
+      input.xs[i][0] += 3.;
+      input.xs_old[i][0] += 3.;
+    }
+    for (unsigned int l = 0; l < input.n_master_nodes; ++l)
+    {
+      input.xm[l][0] += 3.;
+      input.xm_old[l][0] += 3.;
+    }
+  }
+  input.min_weight = 0;
+  // Shift the slave up or down: open or closed.
+  const double lift = -0.03 + 0.04 * u(random);
+  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    input.xs[i][1] += lift;
+
+  return input;
+}
+
+
 
 int
 main()
@@ -51,134 +198,10 @@ main()
       with_multipliers ? static_cast<const Enforcement<2> &>(multipliers) :
                          static_cast<const Enforcement<2> &>(penalty);
 
-    // Slave: node j at the origin, neighbours left and right (slave body
-    // above, so the segments run right to left for an outward normal
-    // pointing down); sometimes only one segment (an end of the slave).
-    // Every other pair of samples is quadratic (Q2): curved segments with
-    // middle nodes, node j a vertex of two segments, of one, or a middle.
-    MortarInput  input;
-    const bool   quadratic = (sample / 2) % 2 == 1;
-    const double h_slave   = 0.5 + 0.3 * u(random);
-    input.xs[0]            = {{0.05 * u(random), 0.02 * u(random), 0}};
-    input.xs[1]            = {{h_slave, 0.1 * h_slave + 0.05 * u(random), 0}};
-    input.xs[2]            = {{-h_slave + 0.05 * u(random), 0.1 * h_slave, 0}};
-    const bool one_segment = sample % 7 == 0;
-    input.n_slave_nodes    = one_segment ? 2 : 3;
-    input.n_slave_segments = one_segment ? 1 : 2;
-    input.slave_segment[0][0] = 1;
-    input.slave_segment[0][1] = 0;
-    input.slave_segment[1][0] = 0;
-    input.slave_segment[1][1] = 2;
-    // A middle node between a and b, off the chord by up to 5 % of it.
-    const auto middle = [&](const Vec3<double> &a, const Vec3<double> &b)
-    {
-      const Vec3<double> chord = b - a;
-      const Vec3<double> off{{-chord[1], chord[0], 0}};
-      return scale(0.5, a + b) + scale(0.05 * u(random), off) +
-             scale(0.03 * u(random), chord);
-    };
-    if (quadratic)
-    {
-      input.n_segment_nodes   = 3;
-      const unsigned int kind = (sample / 4) % 3;
-      if (kind == 0 && !one_segment)
-      {
-        input.xs[3]               = middle(input.xs[1], input.xs[0]);
-        input.xs[4]               = middle(input.xs[0], input.xs[2]);
-        input.n_slave_nodes       = 5;
-        input.slave_segment[0][2] = 3;
-        input.slave_segment[1][2] = 4;
-      }
-      else if (kind == 1 || one_segment)
-      {
-        input.xs[2]               = middle(input.xs[1], input.xs[0]);
-        input.n_slave_nodes       = 3;
-        input.n_slave_segments    = 1;
-        input.slave_segment[0][2] = 2;
-      }
-      else
-      {
-        // j is the middle of the segment from node 1 to node 2.
-        input.xs[0]               = middle(input.xs[1], input.xs[2]);
-        input.n_slave_nodes       = 3;
-        input.n_slave_segments    = 1;
-        input.slave_segment[0][0] = 1;
-        input.slave_segment[0][1] = 2;
-        input.slave_segment[0][2] = 0;
-      }
-    }
-
-    // Master: a polyline below, left to right (body below, normal up),
-    // spacing finer or coarser than the slave; sometimes ending under
-    // the slave segment (partial coverage). Quadratic: a middle node on
-    // each segment, after the vertices.
-    const unsigned int n_master = 3 + sample % 2;
-    const double       h_master = (sample % 3 == 0 ? 0.4 : 1.0) * h_slave;
-    const double       start =
-      -0.5 * n_master * h_master + 0.3 * h_master * u(random);
-    const bool short_master = sample % 5 == 0;
-    input.n_master_nodes    = n_master + 1;
-    input.n_master_segments = n_master;
-    for (unsigned int l = 0; l <= n_master; ++l)
-      input.xm[l] = {{start + l * h_master * (short_master ? 0.6 : 1.),
-                      0.01 * u(random) - 0.02 * std::abs(u(random)),
-                      0}};
-    for (unsigned int m = 0; m < n_master; ++m)
-      input.master_segment[m] = {{m, m + 1}};
-    if (quadratic)
-      for (unsigned int m = 0; m < n_master; ++m)
-      {
-        input.xm[n_master + 1 + m] = middle(input.xm[m], input.xm[m + 1]);
-        input.master_segment[m][2] = n_master + 1 + m;
-        ++input.n_master_nodes;
-      }
-    // Three Q1 samples in seven: the master's averaged normals (Master
-    // smoothing), with a bent segment beyond each end of the polyline.
-    const bool smoothed = !quadratic && sample % 7 < 3;
-    if (smoothed)
-    {
-      const unsigned int left = n_master + 1, right = n_master + 2;
-      input.xm[left] = {
-        {input.xm[0][0] - h_master, 0.2 * h_master * u(random), 0}};
-      input.xm[right] = {
-        {input.xm[n_master][0] + h_master, 0.2 * h_master * u(random), 0}};
-      input.n_master_nodes += 2;
-      input.smoothed_master = true;
-      for (unsigned int m = 0; m < n_master; ++m)
-      {
-        input.master_beyond[m][0] = m == 0 ? left : m - 1;
-        input.master_beyond[m][1] = m + 1 == n_master ? right : m + 2;
-      }
-    }
-    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-      for (unsigned int d = 0; d < 2; ++d)
-        input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
-    for (unsigned int l = 0; l < input.n_master_nodes; ++l)
-      for (unsigned int d = 0; d < 2; ++d)
-        input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
-    input.dual = sample % 3 != 2;
-    // Every fourth: axisymmetric (x = r > 0), weight 2 pi r in every
-    // integral and in the dual functions.
-    input.axisymmetric = sample % 4 == 1;
-    if (input.axisymmetric)
-    {
-      for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-      {
-        input.xs[i][0] += 3.;
-        input.xs_old[i][0] += 3.;
-      }
-      for (unsigned int l = 0; l < input.n_master_nodes; ++l)
-      {
-        input.xm[l][0] += 3.;
-        input.xm_old[l][0] += 3.;
-      }
-    }
-    input.min_weight = 0;
-    // Shift the slave up or down: open or closed.
-    const double lift = -0.03 + 0.04 * u(random);
-    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-      input.xs[i][1] += lift;
-
+    bool              quadratic, smoothed;
+    double            h_slave;
+    const MortarInput input =
+      random_input(random, u, sample, quadratic, smoothed, h_slave);
     ContactLaw law;
     law.normal_penalty       = 1e3;
     law.tangential_penalty   = (sample % 4 == 0 ? 1e5 : 1e2);
@@ -199,111 +222,31 @@ main()
     slave.consistent = true;
     slave.unknowns   = with_multipliers ? &lambda : nullptr;
 
-    const unsigned int n_displacements =
-      2 * (input.n_slave_nodes + input.n_master_nodes);
-    const unsigned int       n = n_displacements + (with_multipliers ? 2 : 0);
-    std::vector<double>      R(n), K(n * n), Rp(n), Rm(n);
-    bool                     paired;
-    Vec3<double>             point;
-    const ContactPointResult result = Mortar2D::evaluate(slave,
-                                                         input,
-                                                         enforcement,
-                                                         R.data(),
-                                                         K.data(),
-                                                         paired,
-                                                         point);
-    if (!paired)
+    const MortarCheck check =
+      check_mortar_element<2, Mortar2D>(input,
+                                        slave,
+                                        lambda,
+                                        with_multipliers,
+                                        enforcement);
+    if (!check.paired)
       continue;
-    ++n_status[static_cast<int>(result.status)];
-
-    // Force balance: the forces on all nodes sum to zero (sum D = sum M).
-    if (!with_multipliers || result.status != ContactStatus::open)
-      for (unsigned int d = 0; d < 2; ++d)
-      {
-        double sum = 0, scale = 0;
-        for (unsigned int i = d; i < n_displacements; i += 2)
-        {
-          sum += R[i];
-          scale = std::max(scale, std::abs(R[i]));
-        }
-        if (scale > 0)
-          worst_balance = std::max(worst_balance, std::abs(sum) / scale);
-      }
-
-    // Central differences, the same branches.
-    const double step  = 1e-7;
-    double       error = 0, scale = 0;
-    bool         same_branch = true;
-    for (unsigned int j = 0; j < n; ++j)
-    {
-      MortarInput  plus = input, minus = input;
-      Vec3<double> lambda_plus = lambda, lambda_minus = lambda;
-      if (j < 2 * input.n_slave_nodes)
-      {
-        plus.xs[j / 2][j % 2] += step;
-        minus.xs[j / 2][j % 2] -= step;
-      }
-      else if (j < n_displacements)
-      {
-        const unsigned int l = (j - 2 * input.n_slave_nodes) / 2;
-        plus.xm[l][j % 2] += step;
-        minus.xm[l][j % 2] -= step;
-      }
-      else
-      {
-        lambda_plus[j - n_displacements] += step;
-        lambda_minus[j - n_displacements] -= step;
-      }
-      SlaveInput s_plus = slave, s_minus = slave;
-      s_plus.position  = plus.xs[0];
-      s_minus.position = minus.xs[0];
-      if (with_multipliers)
-      {
-        s_plus.unknowns  = &lambda_plus;
-        s_minus.unknowns = &lambda_minus;
-      }
-      bool       paired_p, paired_m;
-      const auto r_p = Mortar2D::evaluate(s_plus,
-                                          plus,
-                                          enforcement,
-                                          Rp.data(),
-                                          nullptr,
-                                          paired_p,
-                                          point);
-      const auto r_m = Mortar2D::evaluate(s_minus,
-                                          minus,
-                                          enforcement,
-                                          Rm.data(),
-                                          nullptr,
-                                          paired_m,
-                                          point);
-      if (!paired_p || !paired_m || r_p.status != result.status ||
-          r_m.status != result.status)
-      {
-        same_branch = false;
-        break;
-      }
-      for (unsigned int i = 0; i < n; ++i)
-      {
-        const double fd = (Rp[i] - Rm[i]) / (2 * step);
-        error           = std::max(error, std::abs(fd - K[i * n + j]));
-        scale           = std::max(scale, std::abs(K[i * n + j]));
-      }
-    }
-    if (!same_branch || scale == 0)
+    const ContactStatus status = check.status;
+    ++n_status[static_cast<int>(status)];
+    worst_balance = std::max(worst_balance, check.balance);
+    if (!check.checked)
       continue;
     ++n_checked;
     if (quadratic)
       ++n_quadratic;
     if (smoothed)
       ++n_smoothed;
-    const double relative = error / scale;
+    const double relative = check.relative_error;
     worst_error           = std::max(worst_error, relative);
     if (relative > 1e-6)
     {
       ok = false;
       std::cout << "sample " << sample << ": tangent error " << relative
-                << " (status " << static_cast<int>(result.status)
+                << " (status " << static_cast<int>(status)
                 << (with_multipliers ? ", multipliers" : ", penalty")
                 << (input.dual ? ", dual" : ", standard")
                 << (quadratic ? ", quadratic" : "")

@@ -22,7 +22,103 @@
 #include <random>
 #include <vector>
 
+#include "mortar_check.h"
+
 using namespace tribos;
+
+/**
+ * A random 3D mortar element input of @p sample (its kinds by the sample
+ * number); @p carries (node j carries half of a neighbour's function),
+ * @p short_master (the master ends under the slave patch) and the slave's
+ * face size @p h_slave are set.
+ */
+MortarInput3D
+random_input(std::mt19937                           &random,
+             std::uniform_real_distribution<double> &u,
+             const unsigned int                      sample,
+             bool                                   &carries,
+             bool                                   &short_master,
+             double                                 &h_slave)
+{
+  // Slave: a 3 x 3 patch of nodes, node j in the middle (local 0), the
+  // body above: vertex order (y before x) so that the faces' normal
+  // points down, out of the slave.
+  MortarInput3D input;
+  h_slave = 0.5 + 0.2 * u(random);
+  unsigned int local[3][3], next = 1;
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+    {
+      const unsigned int n = (i == 1 && j == 1) ? 0 : next++;
+      local[i][j]          = n;
+      input.xs[n]          = {{(i - 1.) * h_slave + 0.05 * h_slave * u(random),
+                               (j - 1.) * h_slave + 0.05 * h_slave * u(random),
+                               0.03 * h_slave * u(random)}};
+    }
+  input.n_slave_nodes = 9;
+  input.n_slave_faces = 4;
+  for (unsigned int i = 0; i < 2; ++i)
+    for (unsigned int j = 0; j < 2; ++j)
+      input.slave_face[2 * i + j] = {
+        {local[i][j], local[i][j + 1], local[i + 1][j], local[i + 1][j + 1]}};
+  // Node j's multiplier function; in some samples plus half of a
+  // neighbour's, as when j carries a hanging node (Phi_j + 0.5 Phi_h).
+  carries                    = sample % 7 == 3;
+  const unsigned int hanging = local[1][2];
+  for (unsigned int f = 0; f < input.n_slave_faces; ++f)
+  {
+    input.n_carriers[f] = 0;
+    for (unsigned int v = 0; v < 4; ++v)
+    {
+      if (input.slave_face[f][v] == 0)
+        input.carriers[f][input.n_carriers[f]++] = {v, 1.};
+      if (carries && input.slave_face[f][v] == hanging)
+        input.carriers[f][input.n_carriers[f]++] = {v, 0.5};
+    }
+  }
+
+  // Master: n x n faces below, lexicographic (normal up), finer or
+  // coarser than the slave, sometimes shorter than the slave patch.
+  const unsigned int n_master = 3 + sample % 2;
+  const double       h_master = (sample % 3 == 0 ? 0.55 : 0.9) * h_slave;
+  short_master                = sample % 5 == 0;
+  const double reach          = short_master ? 0.6 : 1.;
+  const double start_x =
+    -0.5 * n_master * h_master * reach + 0.2 * h_master * u(random);
+  const double start_y =
+    -0.5 * n_master * h_master + 0.2 * h_master * u(random);
+  input.n_master_nodes = (n_master + 1) * (n_master + 1);
+  for (unsigned int b = 0; b <= n_master; ++b)
+    for (unsigned int a = 0; a <= n_master; ++a)
+      input.xm[b * (n_master + 1) + a] = {
+        {start_x + a * h_master * reach + 0.05 * h_master * u(random),
+         start_y + b * h_master + 0.05 * h_master * u(random),
+         0.01 * u(random) - 0.02 * std::abs(u(random))}};
+  input.n_master_faces = n_master * n_master;
+  for (unsigned int b = 0; b < n_master; ++b)
+    for (unsigned int a = 0; a < n_master; ++a)
+    {
+      const unsigned int c                = b * (n_master + 1) + a;
+      input.master_face[b * n_master + a] = {
+        {c, c + 1, c + n_master + 1, c + n_master + 2}};
+    }
+  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    for (unsigned int d = 0; d < 3; ++d)
+      input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
+  for (unsigned int l = 0; l < input.n_master_nodes; ++l)
+    for (unsigned int d = 0; d < 3; ++d)
+      input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
+  input.dual       = sample % 3 != 2;
+  input.min_weight = 0;
+  // Shift the slave up or down: open or closed.
+  const double lift = -0.03 + 0.04 * u(random);
+  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    input.xs[i][2] += lift;
+
+  return input;
+}
+
+
 
 int
 main()
@@ -44,83 +140,12 @@ main()
       with_multipliers ? static_cast<const Enforcement<3> &>(multipliers) :
                          static_cast<const Enforcement<3> &>(penalty);
 
-    // Slave: a 3 x 3 patch of nodes, node j in the middle (local 0), the
-    // body above: vertex order (y before x) so that the faces' normal
-    // points down, out of the slave.
-    MortarInput3D input;
-    const double  h_slave = 0.5 + 0.2 * u(random);
-    unsigned int  local[3][3], next = 1;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-      {
-        const unsigned int n = (i == 1 && j == 1) ? 0 : next++;
-        local[i][j]          = n;
-        input.xs[n] = {{(i - 1.) * h_slave + 0.05 * h_slave * u(random),
-                        (j - 1.) * h_slave + 0.05 * h_slave * u(random),
-                        0.03 * h_slave * u(random)}};
-      }
-    input.n_slave_nodes = 9;
-    input.n_slave_faces = 4;
-    for (unsigned int i = 0; i < 2; ++i)
-      for (unsigned int j = 0; j < 2; ++j)
-        input.slave_face[2 * i + j] = {
-          {local[i][j], local[i][j + 1], local[i + 1][j], local[i + 1][j + 1]}};
-    // Node j's multiplier function; in some samples plus half of a
-    // neighbour's, as when j carries a hanging node (Phi_j + 0.5 Phi_h).
-    const bool         carries = sample % 7 == 3;
-    const unsigned int hanging = local[1][2];
+    bool                carries, short_master;
+    double              h_slave;
+    const MortarInput3D input =
+      random_input(random, u, sample, carries, short_master, h_slave);
     n_carrying += carries;
-    for (unsigned int f = 0; f < input.n_slave_faces; ++f)
-    {
-      input.n_carriers[f] = 0;
-      for (unsigned int v = 0; v < 4; ++v)
-      {
-        if (input.slave_face[f][v] == 0)
-          input.carriers[f][input.n_carriers[f]++] = {v, 1.};
-        if (carries && input.slave_face[f][v] == hanging)
-          input.carriers[f][input.n_carriers[f]++] = {v, 0.5};
-      }
-    }
-
-    // Master: n x n faces below, lexicographic (normal up), finer or
-    // coarser than the slave, sometimes shorter than the slave patch.
-    const unsigned int n_master     = 3 + sample % 2;
-    const double       h_master     = (sample % 3 == 0 ? 0.55 : 0.9) * h_slave;
-    const bool         short_master = sample % 5 == 0;
-    const double       reach        = short_master ? 0.6 : 1.;
-    const double       start_x =
-      -0.5 * n_master * h_master * reach + 0.2 * h_master * u(random);
-    const double start_y =
-      -0.5 * n_master * h_master + 0.2 * h_master * u(random);
-    input.n_master_nodes = (n_master + 1) * (n_master + 1);
-    for (unsigned int b = 0; b <= n_master; ++b)
-      for (unsigned int a = 0; a <= n_master; ++a)
-        input.xm[b * (n_master + 1) + a] = {
-          {start_x + a * h_master * reach + 0.05 * h_master * u(random),
-           start_y + b * h_master + 0.05 * h_master * u(random),
-           0.01 * u(random) - 0.02 * std::abs(u(random))}};
-    input.n_master_faces = n_master * n_master;
-    for (unsigned int b = 0; b < n_master; ++b)
-      for (unsigned int a = 0; a < n_master; ++a)
-      {
-        const unsigned int c                = b * (n_master + 1) + a;
-        input.master_face[b * n_master + a] = {
-          {c, c + 1, c + n_master + 1, c + n_master + 2}};
-      }
     n_partial += short_master;
-    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-      for (unsigned int d = 0; d < 3; ++d)
-        input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
-    for (unsigned int l = 0; l < input.n_master_nodes; ++l)
-      for (unsigned int d = 0; d < 3; ++d)
-        input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
-    input.dual       = sample % 3 != 2;
-    input.min_weight = 0;
-    // Shift the slave up or down: open or closed.
-    const double lift = -0.03 + 0.04 * u(random);
-    for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-      input.xs[i][2] += lift;
-
     ContactLaw law;
     law.normal_penalty       = 1e3;
     law.tangential_penalty   = (sample % 4 == 0 ? 1e5 : 1e2);
@@ -143,107 +168,27 @@ main()
     slave.consistent = true;
     slave.unknowns   = with_multipliers ? &lambda : nullptr;
 
-    const unsigned int n_displacements =
-      3 * (input.n_slave_nodes + input.n_master_nodes);
-    const unsigned int       n = n_displacements + (with_multipliers ? 3 : 0);
-    std::vector<double>      R(n), K(n * n), Rp(n), Rm(n);
-    bool                     paired;
-    Vec3<double>             point;
-    const ContactPointResult result = Mortar3D::evaluate(slave,
-                                                         input,
-                                                         enforcement,
-                                                         R.data(),
-                                                         K.data(),
-                                                         paired,
-                                                         point);
-    if (!paired)
+    const MortarCheck check =
+      check_mortar_element<3, Mortar3D>(input,
+                                        slave,
+                                        lambda,
+                                        with_multipliers,
+                                        enforcement);
+    if (!check.paired)
       continue;
-    ++n_status[static_cast<int>(result.status)];
-
-    // Force balance: the forces on all nodes sum to zero (sum D = sum M).
-    if (!with_multipliers || result.status != ContactStatus::open)
-      for (unsigned int d = 0; d < 3; ++d)
-      {
-        double sum = 0, scale = 0;
-        for (unsigned int i = d; i < n_displacements; i += 3)
-        {
-          sum += R[i];
-          scale = std::max(scale, std::abs(R[i]));
-        }
-        if (scale > 0)
-          worst_balance = std::max(worst_balance, std::abs(sum) / scale);
-      }
-
-    // Central differences, the same branches.
-    const double step  = 1e-7;
-    double       error = 0, scale = 0;
-    bool         same_branch = true;
-    for (unsigned int j = 0; j < n; ++j)
-    {
-      MortarInput3D plus = input, minus = input;
-      Vec3<double>  lambda_plus = lambda, lambda_minus = lambda;
-      if (j < 3 * input.n_slave_nodes)
-      {
-        plus.xs[j / 3][j % 3] += step;
-        minus.xs[j / 3][j % 3] -= step;
-      }
-      else if (j < n_displacements)
-      {
-        const unsigned int l = (j - 3 * input.n_slave_nodes) / 3;
-        plus.xm[l][j % 3] += step;
-        minus.xm[l][j % 3] -= step;
-      }
-      else
-      {
-        lambda_plus[j - n_displacements] += step;
-        lambda_minus[j - n_displacements] -= step;
-      }
-      SlaveInput s_plus = slave, s_minus = slave;
-      s_plus.position  = plus.xs[0];
-      s_minus.position = minus.xs[0];
-      if (with_multipliers)
-      {
-        s_plus.unknowns  = &lambda_plus;
-        s_minus.unknowns = &lambda_minus;
-      }
-      bool       paired_p, paired_m;
-      const auto r_p = Mortar3D::evaluate(s_plus,
-                                          plus,
-                                          enforcement,
-                                          Rp.data(),
-                                          nullptr,
-                                          paired_p,
-                                          point);
-      const auto r_m = Mortar3D::evaluate(s_minus,
-                                          minus,
-                                          enforcement,
-                                          Rm.data(),
-                                          nullptr,
-                                          paired_m,
-                                          point);
-      if (!paired_p || !paired_m || r_p.status != result.status ||
-          r_m.status != result.status)
-      {
-        same_branch = false;
-        break;
-      }
-      for (unsigned int i = 0; i < n; ++i)
-      {
-        const double fd = (Rp[i] - Rm[i]) / (2 * step);
-        error           = std::max(error, std::abs(fd - K[i * n + j]));
-        scale           = std::max(scale, std::abs(K[i * n + j]));
-      }
-    }
-    if (!same_branch || scale == 0)
+    const ContactStatus status = check.status;
+    ++n_status[static_cast<int>(status)];
+    worst_balance = std::max(worst_balance, check.balance);
+    if (!check.checked)
       continue;
     ++n_checked;
-    const double relative = error / scale;
+    const double relative = check.relative_error;
     worst_error           = std::max(worst_error, relative);
     if (relative > 1e-6)
     {
       ok = false;
       std::cout << "sample " << sample << ": tangent error " << relative
-                << " (status " << static_cast<int>(result.status)
+                << " (status " << static_cast<int>(status)
                 << (with_multipliers ? ", multipliers" : ", penalty")
                 << (input.dual ? ", dual" : ", standard")
                 << (short_master ? ", partial" : "")

@@ -88,5 +88,45 @@ namespace tribos
       }
       return values;
     }
+
+
+
+    double
+    positive(dealii::ParameterHandler &prm, const std::string &entry)
+    {
+      const double v = prm.get_double(entry);
+      AssertThrow(v > 0,
+                  dealii::ExcMessage("Parameter <" + entry + "> = <" +
+                                     prm.get(entry) + ">: must be > 0."));
+      return v;
+    }
+
+
+
+    std::vector<double>
+    positive_list(dealii::ParameterHandler &prm, const std::string &entry)
+    {
+      const auto values = parse_doubles(prm.get(entry), entry);
+      for (const double v : values)
+        AssertThrow(v > 0,
+                    dealii::ExcMessage("Parameter <" + entry + "> = <" +
+                                       prm.get(entry) +
+                                       ">: every value must be > 0."));
+      return values;
+    }
+
+
+
+    std::vector<unsigned int>
+    cell_counts(dealii::ParameterHandler &prm, const std::string &entry)
+    {
+      const auto values = parse_unsigned(prm.get(entry), entry);
+      for (const unsigned int v : values)
+        AssertThrow(v > 0,
+                    dealii::ExcMessage("Parameter <" + entry + "> = <" +
+                                       prm.get(entry) +
+                                       ">: every cell count must be >= 1."));
+      return values;
+    }
   } // namespace Text
 } // namespace tribos

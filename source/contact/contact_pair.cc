@@ -92,6 +92,106 @@ namespace tribos
         }
       }
     }
+
+
+
+    /**
+     * The hanging node constraints of @p dof_handler on the locally
+     * relevant dofs and the contact surfaces' @p surface_dofs: those of
+     * every process (their cells may be elsewhere on a distributed mesh).
+     */
+    template <int dim>
+    AffineConstraints<double>
+    hanging_constraints(const DoFHandler<dim> &dof_handler,
+                        const IndexSet        &surface_dofs,
+                        const IndexSet        &locally_owned_dofs)
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+      relevant.add_indices(surface_dofs);
+      AffineConstraints<double> hanging(relevant);
+      DoFTools::make_hanging_node_constraints(dof_handler, hanging);
+      import_constraints(hanging,
+                         Utilities::MPI::all_gather(
+                           dof_handler.get_triangulation().get_communicator(),
+                           locally_owned_dofs),
+                         relevant,
+                         dof_handler.get_triangulation().get_communicator());
+      hanging.close();
+
+      return hanging;
+    }
+
+
+
+    /**
+     * The slave nodes of @p pair: which this process owns, their areas
+     * and states, the dependent ones excluded (the pairs made before it:
+     * @p earlier; @p hanging constraints), the nodes this process reads,
+     * and the master nodes it owns.
+     */
+    template <int dim>
+    void
+    set_up_nodes(ContactPair<dim>                &pair,
+                 std::vector<ContactPair<dim>>   &earlier,
+                 const AffineConstraints<double> &hanging,
+                 const IndexSet                  &locally_owned_dofs)
+    {
+      const auto        &nodes    = pair.slave->nodes();
+      const unsigned int n_slaves = nodes.size();
+      pair.owned.resize(n_slaves);
+      pair.work.assign(n_slaves, 0.);
+      pair.area.resize(n_slaves);
+      pair.excluded.assign(n_slaves, false);
+      pair.carried.assign(n_slaves, {});
+      pair.current.resize(n_slaves);
+      for (unsigned int k = 0; k < n_slaves; ++k)
+      {
+        pair.owned[k]         = locally_owned_dofs.is_element(nodes[k].dofs[0]);
+        pair.area[k]          = nodes[k].area * pair.area_factor;
+        pair.current[k].point = nodes[k].reference;
+        pair.slave_positions.push_back(nodes[k].reference);
+      }
+      // With unknowns, every dependent node; where the discretization has
+      // the parents carry their hanging nodes' functions (mortar), those
+      // too (a node of its own there would weigh the gap differently from
+      // its neighbours and break the patch test: 1.4 % spread of a
+      // uniform pressure).
+      if (pair.enforcement->n_node_unknowns() > 0)
+        exclude_dependent_nodes(pair, &earlier, hanging);
+      else if (pair.discretization->parents_carry_hanging_nodes())
+        exclude_dependent_nodes<dim>(pair, nullptr, hanging);
+      pair.discretization->initialize(pair);
+      // The slave positions this process reads: its own nodes and the
+      // stencils of the elements it evaluates.
+      {
+        std::vector<bool>         read(n_slaves, false);
+        std::vector<unsigned int> stencil;
+        for (unsigned int k = 0; k < n_slaves; ++k)
+          if (pair.owned[k])
+          {
+            read[k] = true;
+            if (!pair.excluded[k])
+            {
+              pair.discretization->stencil(pair, k, stencil);
+              for (const unsigned int m : stencil)
+                read[m] = true;
+            }
+          }
+        for (unsigned int k = 0; k < n_slaves; ++k)
+          if (read[k])
+            pair.read_slave_nodes.push_back(k);
+      }
+      if (pair.master)
+      {
+        const auto &master_nodes = pair.master->nodes();
+        for (unsigned int n = 0; n < master_nodes.size(); ++n)
+          if (locally_owned_dofs.is_element(master_nodes[n].dofs[0]))
+            pair.owned_master_nodes.push_back(n);
+        pair.master_known.assign(master_nodes.size(), false);
+        pair.face_known.assign(pair.master->faces().size(), false);
+      }
+    }
   } // namespace
 
 
@@ -173,18 +273,8 @@ namespace tribos
       for (const auto &node : s->nodes())
         for (const auto dof : node.dofs)
           surface_dofs.add_index(dof);
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    relevant.add_indices(surface_dofs);
-    AffineConstraints<double> hanging(relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, hanging);
-    import_constraints(hanging,
-                       Utilities::MPI::all_gather(
-                         dof_handler.get_triangulation().get_communicator(),
-                         locally_owned_dofs),
-                       relevant,
-                       dof_handler.get_triangulation().get_communicator());
-    hanging.close();
+    const AffineConstraints<double> hanging =
+      hanging_constraints(dof_handler, surface_dofs, locally_owned_dofs);
 
     std::vector<ContactPair<dim>> pairs;
     n_unknowns = 0;
@@ -219,62 +309,9 @@ namespace tribos
       pair.discretization =
         create_discretization<dim>(description, parameters, axisymmetric);
 
-      const auto        &nodes    = pair.slave->nodes();
-      const unsigned int n_slaves = nodes.size();
-      pair.owned.resize(n_slaves);
-      pair.work.assign(n_slaves, 0.);
-      pair.area.resize(n_slaves);
-      pair.excluded.assign(n_slaves, false);
-      pair.carried.assign(n_slaves, {});
-      pair.current.resize(n_slaves);
-      for (unsigned int k = 0; k < n_slaves; ++k)
-      {
-        pair.owned[k]         = locally_owned_dofs.is_element(nodes[k].dofs[0]);
-        pair.area[k]          = nodes[k].area * pair.area_factor;
-        pair.current[k].point = nodes[k].reference;
-        pair.slave_positions.push_back(nodes[k].reference);
-      }
-      // With unknowns, every dependent node; where the discretization has
-      // the parents carry their hanging nodes' functions (mortar), those
-      // too (a node of its own there would weigh the gap differently from
-      // its neighbours and break the patch test: 1.4 % spread of a
-      // uniform pressure).
-      if (pair.enforcement->n_node_unknowns() > 0)
-        exclude_dependent_nodes(pair, &pairs, hanging);
-      else if (pair.discretization->parents_carry_hanging_nodes())
-        exclude_dependent_nodes<dim>(pair, nullptr, hanging);
-      pair.discretization->initialize(pair);
-      // The slave positions this process reads: its own nodes and the
-      // stencils of the elements it evaluates.
-      {
-        std::vector<bool>         read(n_slaves, false);
-        std::vector<unsigned int> stencil;
-        for (unsigned int k = 0; k < n_slaves; ++k)
-          if (pair.owned[k])
-          {
-            read[k] = true;
-            if (!pair.excluded[k])
-            {
-              pair.discretization->stencil(pair, k, stencil);
-              for (const unsigned int m : stencil)
-                read[m] = true;
-            }
-          }
-        for (unsigned int k = 0; k < n_slaves; ++k)
-          if (read[k])
-            pair.read_slave_nodes.push_back(k);
-      }
-      if (pair.master)
-      {
-        const auto &master_nodes = pair.master->nodes();
-        for (unsigned int n = 0; n < master_nodes.size(); ++n)
-          if (locally_owned_dofs.is_element(master_nodes[n].dofs[0]))
-            pair.owned_master_nodes.push_back(n);
-        pair.master_known.assign(master_nodes.size(), false);
-        pair.face_known.assign(pair.master->faces().size(), false);
-      }
+      set_up_nodes(pair, pairs, hanging, locally_owned_dofs);
       pair.first_unknown = dof_handler.n_dofs() + n_unknowns;
-      n_unknowns += pair.enforcement->n_node_unknowns() * n_slaves;
+      n_unknowns += pair.enforcement->n_node_unknowns() * pair.n_nodes();
       pair.committed           = pair.current;
       pair.old_slave_positions = pair.slave_positions;
       if (pair.master)

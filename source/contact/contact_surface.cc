@@ -30,6 +30,18 @@ namespace tribos
                            std::to_string(degree) + " in " +
                            std::to_string(dim) + "D."));
     is_quadratic = (degree == 2);
+    number_nodes(gather_faces(dof_handler));
+    integrate_areas(axisymmetric);
+    find_neighbours();
+  }
+
+
+
+  template <int dim>
+  std::vector<typename ContactSurface<dim>::FaceRecord>
+  ContactSurface<dim>::gather_faces(const DoFHandler<dim> &dof_handler) const
+  {
+    const auto                          &fe = dof_handler.get_fe();
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
 
     std::vector<FaceRecord> own;
@@ -102,7 +114,15 @@ namespace tribos
                 const CellId ca(a.cell), cb(b.cell);
                 return ca < cb || (ca == cb && a.face < b.face);
               });
+    return records;
+  }
 
+
+
+  template <int dim>
+  void
+  ContactSurface<dim>::number_nodes(const std::vector<FaceRecord> &records)
+  {
     // A node is its vertex's dofs (the first one names it).
     std::map<types::global_dof_index, unsigned int> node_of_dof;
     for (const auto &record : records)
@@ -143,7 +163,14 @@ namespace tribos
       }
       face_list.push_back(contact_face);
     }
+  }
 
+
+
+  template <int dim>
+  void
+  ContactSurface<dim>::integrate_areas(const bool axisymmetric)
+  {
     // Adjacency and tributary areas (of the faces' shape functions, the
     // quadratic ones on Q2: h/6, 2h/3, h/6 on a straight face).
     const QGauss<dim - 1> quadrature(is_quadratic ? 3 : 2);
@@ -195,7 +222,14 @@ namespace tribos
       if (dim == 3)
         node.size = std::sqrt(node.size);
     }
+  }
 
+
+
+  template <int dim>
+  void
+  ContactSurface<dim>::find_neighbours()
+  {
     // Local node numbers along each edge: 2D ends; 3D edges of xi_1 = -+1
     // (nodes 0,2 / 1,3) and xi_2 = -+1 (nodes 0,1 / 2,3).
     const std::vector<std::vector<unsigned int>> edge_nodes[2] = {

@@ -1,6 +1,5 @@
 #include <tribos/base/exceptions.h>
-#include <tribos/contact/mortar_element.h>
-#include <tribos/contact/mortar_element_3d.h>
+#include <tribos/contact/mortar_integrals.h>
 #include <tribos/contact/smoothed_segment.h>
 
 #include <algorithm>
@@ -14,32 +13,31 @@ namespace tribos
     ContactPointResult
     finish_mortar(const SlaveInput       &slave,
                   const Enforcement<dim> &enforcement,
-                  const ContactAD        *D,
-                  const Vec3<ContactAD>  *xs,
-                  const Vec3<double>     *xs_old,
-                  const unsigned int      n_s,
-                  const ContactAD        *M,
-                  const Vec3<ContactAD>  *xm,
-                  const Vec3<double>     *xm_old,
-                  const unsigned int      n_m,
-                  Vec3<ContactAD>         normal_j,
-                  const double            min_weight,
-                  const unsigned int      n_displacements,
+                  MortarIntegrals<dim>   &integrals,
                   double                 *R,
                   double                 *K,
                   bool                   &paired,
                   Vec3<double>           &weighted_point)
     {
-      using AD = ContactAD;
-      ContactPointResult result;
-      const AD           zero(0.);
+      using AD                     = ContactAD;
+      const unsigned int  n_s      = integrals.n_s;
+      const unsigned int  n_m      = integrals.n_m;
+      const ContactAD    *D        = integrals.D;
+      const ContactAD    *M        = integrals.M;
+      const auto         *xs       = integrals.xs;
+      const auto         *xm       = integrals.xm;
+      const Vec3<double> *xs_old   = integrals.input.xs_old;
+      const Vec3<double> *xm_old   = integrals.input.xm_old;
+      Vec3<ContactAD>    &normal_j = integrals.normal_j;
+      ContactPointResult  result;
+      const AD            zero(0.);
       if (norm(normal_j).val() > 0)
         normal_j = scale(1. / norm(normal_j), normal_j);
 
       AD w = zero;
       for (unsigned int i = 0; i < n_s; ++i)
         w += D[i];
-      paired = w.val() >= min_weight && w.val() > 0;
+      paired = w.val() >= integrals.input.min_weight && w.val() > 0;
       if (!paired)
         return result;
 
@@ -72,7 +70,7 @@ namespace tribos
       finish_weighted<dim>(kinematics,
                            weights,
                            n_s + n_m,
-                           n_displacements,
+                           integrals.n_displacements,
                            w,
                            slave,
                            enforcement,
@@ -88,17 +86,7 @@ namespace tribos
     template ContactPointResult
     finish_mortar<2>(const SlaveInput &,
                      const Enforcement<2> &,
-                     const ContactAD *,
-                     const Vec3<ContactAD> *,
-                     const Vec3<double> *,
-                     const unsigned int,
-                     const ContactAD *,
-                     const Vec3<ContactAD> *,
-                     const Vec3<double> *,
-                     const unsigned int,
-                     Vec3<ContactAD>,
-                     const double,
-                     const unsigned int,
+                     MortarIntegrals<2> &,
                      double *,
                      double *,
                      bool &,
@@ -106,17 +94,7 @@ namespace tribos
     template ContactPointResult
     finish_mortar<3>(const SlaveInput &,
                      const Enforcement<3> &,
-                     const ContactAD *,
-                     const Vec3<ContactAD> *,
-                     const Vec3<double> *,
-                     const unsigned int,
-                     const ContactAD *,
-                     const Vec3<ContactAD> *,
-                     const Vec3<double> *,
-                     const unsigned int,
-                     Vec3<ContactAD>,
-                     const double,
-                     const unsigned int,
+                     MortarIntegrals<3> &,
                      double *,
                      double *,
                      bool &,
@@ -288,43 +266,24 @@ namespace tribos
                      bool                 &paired,
                      Vec3<double>         &weighted_point)
   {
-    using AD                           = ContactAD;
-    const unsigned int n_s             = input.n_slave_nodes;
-    const unsigned int n_m             = input.n_master_nodes;
-    const unsigned int n_displacements = 2 * (n_s + n_m);
-    const unsigned int n_out = n_displacements + enforcement.n_node_unknowns();
-
-    Vec3<AD> xs[MortarInput::max_slave_nodes], xm[max_mortar_master_nodes];
-    for (unsigned int i = 0; i < n_s; ++i)
-      xs[i] = internal::seed<2>(input.xs[i], 2 * i, n_out);
-    for (unsigned int l = 0; l < n_m; ++l)
-      xm[l] = internal::seed<2>(input.xm[l], 2 * (n_s + l), n_out);
-
-    const AD zero(0.);
-    AD       D[MortarInput::max_slave_nodes], M[max_mortar_master_nodes];
-    for (unsigned int i = 0; i < n_s; ++i)
-      D[i] = zero;
-    for (unsigned int l = 0; l < n_m; ++l)
-      M[l] = zero;
-    Vec3<AD> normal_j = {{zero, zero, zero}};
+    MortarIntegrals<2> integrals(input, enforcement.n_node_unknowns());
     if (input.n_segment_nodes == 3)
-      internal::integrate_quadratic(input, xs, xm, D, M, normal_j);
+      internal::integrate_quadratic(input,
+                                    integrals.xs,
+                                    integrals.xm,
+                                    integrals.D,
+                                    integrals.M,
+                                    integrals.normal_j);
     else
-      integrate_linear(input, xs, xm, D, M, normal_j);
-
+      integrate_linear(input,
+                       integrals.xs,
+                       integrals.xm,
+                       integrals.D,
+                       integrals.M,
+                       integrals.normal_j);
     return internal::finish_mortar<2>(slave,
                                       enforcement,
-                                      D,
-                                      xs,
-                                      input.xs_old,
-                                      n_s,
-                                      M,
-                                      xm,
-                                      input.xm_old,
-                                      n_m,
-                                      normal_j,
-                                      input.min_weight,
-                                      n_displacements,
+                                      integrals,
                                       R,
                                       K,
                                       paired,

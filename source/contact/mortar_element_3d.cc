@@ -1,6 +1,5 @@
 #include <tribos/base/exceptions.h>
-#include <tribos/contact/mortar_element.h>
-#include <tribos/contact/mortar_element_3d.h>
+#include <tribos/contact/mortar_integrals.h>
 
 #include <algorithm>
 #include <cmath>
@@ -322,81 +321,54 @@ namespace tribos
       unsigned int face;
       AD           area, slave[4][4], master[4][4];
     };
-  } // namespace
 
 
 
-  ContactPointResult
-  Mortar3D::evaluate(const SlaveInput     &slave,
-                     const MortarInput3D  &input,
-                     const Enforcement<3> &enforcement,
-                     double               *R,
-                     double               *K,
-                     bool                 &paired,
-                     Vec3<double>         &weighted_point)
-  {
-    const unsigned int n_s             = input.n_slave_nodes;
-    const unsigned int n_m             = input.n_master_nodes;
-    const unsigned int n_displacements = 3 * (n_s + n_m);
-    const unsigned int n_out = n_displacements + enforcement.n_node_unknowns();
-
-    Vec3<AD> xs[MortarInput3D::max_slave_nodes], xm[max_mortar_master_nodes_3d];
-    for (unsigned int i = 0; i < n_s; ++i)
-      xs[i] = internal::seed<3>(input.xs[i], 3 * i, n_out);
-    for (unsigned int l = 0; l < n_m; ++l)
-      xm[l] = internal::seed<3>(input.xm[l], 3 * (n_s + l), n_out);
-
-    const AD zero(0.);
-    AD       D[MortarInput3D::max_slave_nodes], M[max_mortar_master_nodes_3d];
-    for (unsigned int i = 0; i < n_s; ++i)
-      D[i] = zero;
-    for (unsigned int l = 0; l < n_m; ++l)
-      M[l] = zero;
-    Vec3<AD> normal_j = {{zero, zero, zero}};
-
-    // An overlap's integrals in the node's numbers: the face's 12 slave
-    // and the master face's 12 coordinates go to their places among the
-    // node's unknowns.
-    const auto carry = [&](const FaceAD                      &x,
-                           const std::array<unsigned int, 4> &q,
-                           const std::array<unsigned int, 4> &c)
+    /**
+     * An overlap's integral @p x (in its own 24 coordinates: slave face
+     * @p q's, then master face @p c's, by their local numbers) in the
+     * node's numbers of @p integrals.
+     */
+    AD
+    carry(const FaceAD                      &x,
+          const MortarIntegrals<3>          &integrals,
+          const std::array<unsigned int, 4> &q,
+          const std::array<unsigned int, 4> &c)
     {
-      AD y(n_out, x.val());
+      AD y(integrals.n_out, x.val());
       if (x.size() > 0)
         for (unsigned int t = 0; t < 12; ++t)
         {
-          y.fastAccessDx(3 * q[t / 3] + t % 3)         = x.dx(t);
-          y.fastAccessDx(3 * (n_s + c[t / 3]) + t % 3) = x.dx(12 + t);
+          y.fastAccessDx(3 * q[t / 3] + t % 3)                   = x.dx(t);
+          y.fastAccessDx(3 * (integrals.n_s + c[t / 3]) + t % 3) = x.dx(12 + t);
         }
       return y;
-    };
+    }
 
-    static thread_local std::vector<Overlap> overlaps;
-    for (unsigned int f = 0; f < input.n_slave_faces; ++f)
+
+
+    /**
+     * The master faces of @p integrals' input that overlap its slave face
+     * @p f (auxiliary plane @p plane_value at the values), with their
+     * integrals in the node's numbers, into @p overlaps; returns the area
+     * they cover. From the cache if another node of this face has looked
+     * at them in this assembly; otherwise the test on the values first
+     * (most faces of the node's list miss this slave face), then the
+     * integrals in the overlap's own AD number.
+     */
+    AD
+    find_overlaps(const MortarIntegrals<3> &integrals,
+                  const unsigned int        f,
+                  const Plane<double>      &plane_value,
+                  std::vector<Overlap>     &overlaps)
     {
-      const auto &q = input.slave_face[f];
-
-      Vec3<AD>     X[4];
-      Vec3<double> X_value[4];
-      for (unsigned int k = 0; k < 4; ++k)
-      {
-        X[k]       = xs[q[k]];
-        X_value[k] = input.xs[q[k]];
-      }
-      const Plane<AD> plane = internal::auxiliary_plane(X);
-      if (plane.area.val() <= 0)
-        continue;
-      const Plane<double> plane_value = internal::auxiliary_plane(X_value);
+      const MortarInput3D &input = integrals.input;
+      const auto          &q     = input.slave_face[f];
       // In the overlap's own AD number, built when an overlap is first
       // integrated.
       std::optional<Plane<FaceAD>> plane_face;
-
-      // The master faces that overlap this slave face and their integrals:
-      // from the cache if another node of this face has looked at them in
-      // this assembly; otherwise the test on the values first (most faces
-      // of the node's list miss this slave face), then the integrals.
       overlaps.clear();
-      AD covered = zero;
+      AD covered(0.);
       for (unsigned int m = 0; m < input.n_master_faces; ++m)
       {
         const auto                &c = input.master_face[m];
@@ -425,7 +397,7 @@ namespace tribos
               Vec3<FaceAD> X_face[4];
               for (unsigned int k = 0; k < 4; ++k)
                 for (unsigned int d = 0; d < 3; ++d)
-                  X_face[k][d] = FaceAD(24, 3 * k + d, X_value[k][d]);
+                  X_face[k][d] = FaceAD(24, 3 * k + d, input.xs[q[k]][d]);
               plane_face = internal::auxiliary_plane(X_face);
             }
             Vec3<FaceAD> Y[4];
@@ -444,85 +416,137 @@ namespace tribos
         overlaps.emplace_back();
         Overlap &o = overlaps.back();
         o.face     = m;
-        o.area     = carry(entry->area, q, c);
+        o.area     = carry(entry->area, integrals, q, c);
         for (unsigned int i = 0; i < 4; ++i)
           for (unsigned int k = 0; k < 4; ++k)
           {
-            o.slave[i][k]  = carry(entry->slave[i][k], q, c);
-            o.master[i][k] = carry(entry->master[i][k], q, c);
+            o.slave[i][k]  = carry(entry->slave[i][k], integrals, q, c);
+            o.master[i][k] = carry(entry->master[i][k], integrals, q, c);
           }
         covered += o.area;
       }
+      return covered;
+    }
+
+
+
+    /**
+     * The row @p a of the functions slave face @p f of @p input carries in
+     * Phi = A N (A = D_e M_e^-1 of the face's mass matrix in the plane
+     * @p plane, blended with the identity by @p theta as in 2D), summed
+     * with their weights: node j's row, and those of the hanging nodes it
+     * carries.
+     */
+    void
+    carried_row(const MortarInput3D &input,
+                const unsigned int   f,
+                const Plane<AD>     &plane,
+                const AD            &theta,
+                AD                  *a)
+    {
+      const AD zero(0.);
+      if (theta.val() <= 0)
+      {
+        for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
+          a[input.carriers[f][c].first] += input.carriers[f][c].second;
+        return;
+      }
+      AD           mass[4][4];
+      const double g = 1. / std::sqrt(3.);
+      for (unsigned int i = 0; i < 4; ++i)
+        for (unsigned int k = 0; k < 4; ++k)
+          mass[i][k] = zero;
+      for (const double g_1 : {-g, g})
+        for (const double g_2 : {-g, g})
+        {
+          const double xi[2] = {g_1, g_2};
+          double       N[4], dN[4][2];
+          MasterFace<3>::shape(xi, N, dN);
+          AD J[2][2] = {{zero, zero}, {zero, zero}};
+          for (unsigned int k = 0; k < 4; ++k)
+            for (unsigned int r = 0; r < 2; ++r)
+              for (unsigned int s = 0; s < 2; ++s)
+                J[r][s] += dN[k][s] * plane.P[k][r];
+          const AD det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+          for (unsigned int i = 0; i < 4; ++i)
+            for (unsigned int k = 0; k < 4; ++k)
+              mass[i][k] += (N[i] * N[k]) * det;
+        }
+      AD row_sum[4];
+      for (unsigned int i = 0; i < 4; ++i)
+      {
+        row_sum[i] = zero;
+        for (unsigned int k = 0; k < 4; ++k)
+          row_sum[i] += mass[i][k];
+      }
+      // M_e = L U (symmetric positive definite: no pivoting).
+      AD lower[4][4];
+      for (unsigned int p = 0; p < 4; ++p)
+        for (unsigned int i = p + 1; i < 4; ++i)
+        {
+          lower[i][p] = mass[i][p] / mass[p][p];
+          for (unsigned int k = p; k < 4; ++k)
+            mass[i][k] -= lower[i][p] * mass[p][k];
+        }
+      for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
+      {
+        const auto [j_local, weight] = input.carriers[f][c];
+        // y = M_e^-1 e_j.
+        AD y[4]    = {zero, zero, zero, zero};
+        y[j_local] = 1.;
+        for (unsigned int p = 0; p < 4; ++p)
+          for (unsigned int i = p + 1; i < 4; ++i)
+            y[i] -= lower[i][p] * y[p];
+        for (unsigned int p = 4; p-- > 0;)
+        {
+          for (unsigned int k = p + 1; k < 4; ++k)
+            y[p] -= mass[p][k] * y[k];
+          y[p] /= mass[p][p];
+        }
+        for (unsigned int k = 0; k < 4; ++k)
+          a[k] += weight * (theta * row_sum[j_local] * y[k] +
+                            (k == j_local ? 1. - theta : zero));
+      }
+    }
+  } // namespace
+
+
+
+  ContactPointResult
+  Mortar3D::evaluate(const SlaveInput     &slave,
+                     const MortarInput3D  &input,
+                     const Enforcement<3> &enforcement,
+                     double               *R,
+                     double               *K,
+                     bool                 &paired,
+                     Vec3<double>         &weighted_point)
+  {
+    MortarIntegrals<3> integrals(input, enforcement.n_node_unknowns());
+    const AD           zero(0.);
+    static thread_local std::vector<Overlap> overlaps;
+    for (unsigned int f = 0; f < input.n_slave_faces; ++f)
+    {
+      const auto  &q = input.slave_face[f];
+      Vec3<AD>     X[4];
+      Vec3<double> X_value[4];
+      for (unsigned int k = 0; k < 4; ++k)
+      {
+        X[k]       = integrals.xs[q[k]];
+        X_value[k] = input.xs[q[k]];
+      }
+      const Plane<AD> plane = internal::auxiliary_plane(X);
+      if (plane.area.val() <= 0)
+        continue;
+      const AD covered = find_overlaps(integrals,
+                                       f,
+                                       internal::auxiliary_plane(X_value),
+                                       overlaps);
       if (overlaps.empty())
         continue;
 
-      // The rows of the carried nodes in Phi = A N (A = D_e M_e^-1, blended
-      // with the identity by theta as in 2D), summed with their weights:
-      // node j's row, and those of the hanging nodes it carries.
       const AD theta = internal::dual_weight(input.dual, covered / plane.area);
       AD       a[4]  = {zero, zero, zero, zero};
-      if (theta.val() > 0)
-      {
-        AD           mass[4][4];
-        const double g = 1. / std::sqrt(3.);
-        for (unsigned int i = 0; i < 4; ++i)
-          for (unsigned int k = 0; k < 4; ++k)
-            mass[i][k] = zero;
-        for (const double g_1 : {-g, g})
-          for (const double g_2 : {-g, g})
-          {
-            const double xi[2] = {g_1, g_2};
-            double       N[4], dN[4][2];
-            MasterFace<3>::shape(xi, N, dN);
-            AD J[2][2] = {{zero, zero}, {zero, zero}};
-            for (unsigned int k = 0; k < 4; ++k)
-              for (unsigned int r = 0; r < 2; ++r)
-                for (unsigned int s = 0; s < 2; ++s)
-                  J[r][s] += dN[k][s] * plane.P[k][r];
-            const AD det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-            for (unsigned int i = 0; i < 4; ++i)
-              for (unsigned int k = 0; k < 4; ++k)
-                mass[i][k] += (N[i] * N[k]) * det;
-          }
-        AD row_sum[4];
-        for (unsigned int i = 0; i < 4; ++i)
-        {
-          row_sum[i] = zero;
-          for (unsigned int k = 0; k < 4; ++k)
-            row_sum[i] += mass[i][k];
-        }
-        // M_e = L U (symmetric positive definite: no pivoting).
-        AD lower[4][4];
-        for (unsigned int p = 0; p < 4; ++p)
-          for (unsigned int i = p + 1; i < 4; ++i)
-          {
-            lower[i][p] = mass[i][p] / mass[p][p];
-            for (unsigned int k = p; k < 4; ++k)
-              mass[i][k] -= lower[i][p] * mass[p][k];
-          }
-        for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
-        {
-          const auto [j_local, weight] = input.carriers[f][c];
-          // y = M_e^-1 e_j.
-          AD y[4]    = {zero, zero, zero, zero};
-          y[j_local] = 1.;
-          for (unsigned int p = 0; p < 4; ++p)
-            for (unsigned int i = p + 1; i < 4; ++i)
-              y[i] -= lower[i][p] * y[p];
-          for (unsigned int p = 4; p-- > 0;)
-          {
-            for (unsigned int k = p + 1; k < 4; ++k)
-              y[p] -= mass[p][k] * y[k];
-            y[p] /= mass[p][p];
-          }
-          for (unsigned int k = 0; k < 4; ++k)
-            a[k] += weight * (theta * row_sum[j_local] * y[k] +
-                              (k == j_local ? 1. - theta : zero));
-        }
-      }
-      else
-        for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
-          a[input.carriers[f][c].first] += input.carriers[f][c].second;
+      carried_row(input, f, plane, theta, a);
 
       AD face_weight = zero;
       for (const Overlap &o : overlaps)
@@ -535,28 +559,17 @@ namespace tribos
           for (unsigned int k = 0; k < 4; ++k)
           {
             const AD w_s = a[i] * o.slave[i][k];
-            D[q[k]] += w_s;
-            M[c[k]] += a[i] * o.master[i][k];
+            integrals.D[q[k]] += w_s;
+            integrals.M[c[k]] += a[i] * o.master[i][k];
             face_weight += w_s;
           }
         }
       }
-      normal_j = normal_j + scale(face_weight, plane.n0);
+      integrals.normal_j = integrals.normal_j + scale(face_weight, plane.n0);
     }
-
     return internal::finish_mortar<3>(slave,
                                       enforcement,
-                                      D,
-                                      xs,
-                                      input.xs_old,
-                                      n_s,
-                                      M,
-                                      xm,
-                                      input.xm_old,
-                                      n_m,
-                                      normal_j,
-                                      input.min_weight,
-                                      n_displacements,
+                                      integrals,
                                       R,
                                       K,
                                       paired,

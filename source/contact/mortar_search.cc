@@ -54,66 +54,87 @@ namespace tribos
 
 
 
-  template <int dim>
-  void
-  MortarDiscretization<dim>::find_faces(ContactPair<dim>  &pair,
-                                        const unsigned int k)
+  namespace
   {
-    NodeState &state = pair.current[k];
-    auto      &found = faces_of_node[k];
-    found.clear();
-    state.paired        = false;
-    state.face          = -1;
-    state.distance      = std::numeric_limits<double>::quiet_NaN();
-    const auto &faces   = pair.master->faces();
-    double      closest = std::numeric_limits<double>::max();
-    // Whether one of the faces found lies within reach along the normal.
-    // The reach decides whether the node pairs, not which faces its
-    // element integrates: a face dropped or taken by its distance while
-    // it overlaps would change the weighted gap by its whole share, and
-    // Newton cycles where that happens (issue 18).
-    bool reached = false;
-    // From the master faces closest to the slave points @p starts through
-    // their neighbours, as long as they overlap the slave face or segment
-    // in its projection; @p classify(m) is 0 for a face that does not
-    // overlap, 1 for one that overlaps but is not taken (it faces away, or
-    // lies too deep behind), 2 for one taken. The walk goes on through
-    // faces not taken, so that faces beyond them are found however the
-    // closest faces lie. False if the search found no face at all.
-    const auto walk = [&](const std::initializer_list<Vec3<double>> starts,
-                          const auto                               &classify)
+    /**
+     * The walk over the master faces of one slave node's element: from the
+     * master faces closest to given slave points through their neighbours,
+     * as long as they overlap the slave face or segment in its projection
+     * (walk()). Collects the faces taken in @p found, the smallest distance
+     * of a start, and whether one of the faces taken lies within reach
+     * along the normal. The reach decides whether the node pairs, not
+     * which faces its element integrates: a face dropped or taken by its
+     * distance while it overlaps would change the weighted gap by its
+     * whole share, and Newton cycles where that happens (issue 18).
+     */
+    template <int dim>
+    struct FaceWalk
     {
-      std::vector<unsigned int> queue;
-      for (const Vec3<double> &point : starts)
+      const ContactPair<dim>    &pair;
+      std::vector<unsigned int> &found;
+      double                     closest = std::numeric_limits<double>::max();
+      bool                       reached = false;
+
+      /**
+       * From the faces closest to @p starts; @p classify(m) is 0 for a
+       * face that does not overlap, 1 for one that overlaps but is not
+       * taken (it faces away, or lies too deep behind), 2 for one taken.
+       * The walk goes on through faces not taken, so that faces beyond
+       * them are found however the closest faces lie. False if the search
+       * found no face at all.
+       */
+      template <class Classify>
+      bool
+      walk(const std::initializer_list<Vec3<double>> starts,
+           const Classify                           &classify)
       {
-        unsigned int face;
-        double       squared_distance;
-        if (!pair.search.closest_face(point, face, squared_distance))
-          return false;
-        closest = std::min(closest, std::sqrt(squared_distance));
-        if (std::find(queue.begin(), queue.end(), face) == queue.end())
-          queue.push_back(face);
+        const auto               &faces = pair.master->faces();
+        std::vector<unsigned int> queue;
+        for (const Vec3<double> &point : starts)
+        {
+          unsigned int face;
+          double       squared_distance;
+          if (!pair.search.closest_face(point, face, squared_distance))
+            return false;
+          closest = std::min(closest, std::sqrt(squared_distance));
+          if (std::find(queue.begin(), queue.end(), face) == queue.end())
+            queue.push_back(face);
+        }
+        const unsigned int n_start = queue.size();
+        for (unsigned int i = 0; i < queue.size(); ++i)
+        {
+          const unsigned int m       = queue[i];
+          const int          class_m = classify(m);
+          if (class_m == 2 &&
+              std::find(found.begin(), found.end(), m) == found.end())
+            found.push_back(m);
+          if (class_m > 0 || i < n_start)
+            for (const unsigned int g : faces[m].neighbours)
+              if (pair.face_known[g] &&
+                  std::find(queue.begin(), queue.end(), g) == queue.end())
+                queue.push_back(g);
+        }
+        return true;
       }
-      const unsigned int n_start = queue.size();
-      for (unsigned int i = 0; i < queue.size(); ++i)
-      {
-        const unsigned int m       = queue[i];
-        const int          class_m = classify(m);
-        if (class_m == 2 &&
-            std::find(found.begin(), found.end(), m) == found.end())
-          found.push_back(m);
-        if (class_m > 0 || i < n_start)
-          for (const unsigned int g : faces[m].neighbours)
-            if (pair.face_known[g] &&
-                std::find(queue.begin(), queue.end(), g) == queue.end())
-              queue.push_back(g);
-      }
-      return true;
     };
-    if constexpr (dim == 2)
+
+
+
+    /**
+     * 2D: the master segments that overlap slave node @p k's segments in
+     * the projection onto their lines, face them and are not too deep
+     * behind them (within @p search_distance: reached). False if the
+     * search found no face.
+     */
+    bool
+    walk_segments(FaceWalk<2>       &walker,
+                  const unsigned int k,
+                  const double       search_distance)
     {
-      const auto        &slave_faces = pair.slave->faces();
-      const Vec3<double> ez{{0., 0., 1.}};
+      const ContactPair<2> &pair        = walker.pair;
+      const auto           &faces       = pair.master->faces();
+      const auto           &slave_faces = pair.slave->faces();
+      const Vec3<double>    ez{{0., 0., 1.}};
       // A node closed at the last converged step keeps faces however deep
       // an iterate pushes it (it must meet the contact force, not lose the
       // master); an open one only sees faces less than a segment length
@@ -174,23 +195,33 @@ namespace tribos
           const double length = std::sqrt(length_squared);
           if (gap_max < -length && !was_closed)
             return 1;
-          reached |= gap_min <= std::min(parameters.search_distance, length);
+          walker.reached |= gap_min <= std::min(search_distance, length);
           return 2;
         };
 
         // From the faces closest to the segment's ends and middle through
         // their neighbours, as long as they overlap.
-        if (!walk({x_a, x_b, scale(0.5, x_a + x_b)}, classify))
-          return;
+        if (!walker.walk({x_a, x_b, scale(0.5, x_a + x_b)}, classify))
+          return false;
       }
+      return true;
     }
-    else
+
+
+
+    /** 3D: as walk_segments(), the overlaps clipped in each slave face's
+     * auxiliary plane (as in the element, Mortar3D). */
+    bool
+    walk_faces(FaceWalk<3>       &walker,
+               const unsigned int k,
+               const double       search_distance)
     {
-      const auto &slave_faces = pair.slave->faces();
-      const bool  was_closed  = pair.committed[k].closed();
+      const ContactPair<3> &pair        = walker.pair;
+      const auto           &faces       = pair.master->faces();
+      const auto           &slave_faces = pair.slave->faces();
+      const bool            was_closed  = pair.committed[k].closed();
       for (const unsigned int f : pair.slave->nodes()[k].faces)
       {
-        // The face's auxiliary plane, as in the element (Mortar3D).
         Vec3<double> x[4];
         for (unsigned int v = 0; v < 4; ++v)
           x[v] = pair.slave_positions[slave_faces[f].nodes[v]];
@@ -223,19 +254,43 @@ namespace tribos
             return 0;
           if (gap_max < -length && !was_closed)
             return 1;
-          reached |= gap_min <= std::min(parameters.search_distance, length);
+          walker.reached |= gap_min <= std::min(search_distance, length);
           return 2;
         };
 
-        if (!walk({x[0], x[1], x[2], x[3], plane.x0}, classify))
-          return;
+        if (!walker.walk({x[0], x[1], x[2], x[3], plane.x0}, classify))
+          return false;
       }
+      return true;
     }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  MortarDiscretization<dim>::find_faces(ContactPair<dim>  &pair,
+                                        const unsigned int k)
+  {
+    NodeState &state = pair.current[k];
+    auto      &found = faces_of_node[k];
+    found.clear();
+    state.paired   = false;
+    state.face     = -1;
+    state.distance = std::numeric_limits<double>::quiet_NaN();
+    FaceWalk<dim> walker{pair, found};
+    bool          searched;
+    if constexpr (dim == 2)
+      searched = walk_segments(walker, k, parameters.search_distance);
+    else
+      searched = walk_faces(walker, k, parameters.search_distance);
+    if (!searched)
+      return;
     // Beyond the search distance no gap is known (see candidate_faces()).
-    state.distance = closest <= parameters.search_distance ?
-                       closest :
+    state.distance = walker.closest <= parameters.search_distance ?
+                       walker.closest :
                        std::numeric_limits<double>::quiet_NaN();
-    if (!reached)
+    if (!walker.reached)
       found.clear();
     if (!found.empty())
     {
@@ -243,6 +298,8 @@ namespace tribos
       state.face   = found[0];
     }
   }
+
+
 
   template class MortarDiscretization<2>;
   template class MortarDiscretization<3>;

@@ -21,7 +21,7 @@ namespace tribos
     for (const auto i : locally_owned_dofs)
       owned[i] = owned_solution[i];
     owned.compress(VectorOperation::insert);
-    displacement = owned;
+    ghosted_displacement = owned;
   }
 
 
@@ -43,10 +43,10 @@ namespace tribos
       solution_changed();
     }
     n_relaxations = 0;
-    if (contact)
-      contact->begin_increment();
-    if (integrator)
-      integrator->set_step(time - committed_time);
+    if (contact_handler)
+      contact_handler->begin_increment();
+    if (dynamics_state)
+      dynamics_state->begin_increment(time);
     make_constraints(time, false, increment_constraints);
   }
 
@@ -64,9 +64,144 @@ namespace tribos
     r.force_scale = full_residual.l2_norm();
     // Dynamics: the inertia forces are forces of the balance too (a body
     // in free flight has no other).
-    if (integrator)
-      r.force_scale = std::max(r.force_scale, inertia_forces.l2_norm());
+    if (dynamics_state)
+      r.force_scale =
+        std::max(r.force_scale, dynamics_state->inertia_forces().l2_norm());
     return r;
+  }
+
+
+
+  namespace
+  {
+    /**
+     * Zero a vector that the assembly adds to, with what an interrupted
+     * assembly left in it: entries added for other processes wait in the
+     * Trilinos vector until compress() sends them, and zeroing does not
+     * drop them. An assembly that threw (an inverted cell, a mortar
+     * element too large: both on every process) never reached its
+     * compress(), and the next one added them to its residual (a cutback
+     * under MPI retried from a state 8.4 off equilibrium).
+     */
+    void
+    clear(TrilinosWrappers::MPI::Vector &v)
+    {
+      v.compress(VectorOperation::add);
+      v = 0;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  double
+  Problem<dim>::assemble_system(const bool                       with_matrix,
+                                const AffineConstraints<double> &constraints,
+                                const double                     time)
+  {
+    if (contact_handler)
+    {
+      TimerOutput::Scope search_timer(timer, "contact search");
+      contact_handler->update(ghosted_solution, time);
+      if (with_matrix && contact_handler->sparsity_outdated())
+        make_sparsity();
+    }
+
+    TimerOutput::Scope t(timer, "assembly");
+    const bool stabilized     = parameters.nonlinear_solver.stabilization > 0;
+    const bool track_external = stabilized || dynamics_state;
+    const bool dynamic = dynamics_state && dynamics_state->with_inertia();
+    typename BulkAssembler<dim>::Targets targets;
+    if (with_matrix)
+    {
+      matrix = 0;
+      clear(rhs);
+      targets.matrix = &matrix;
+      targets.rhs    = &rhs;
+    }
+    clear(free_residual);
+    clear(full_residual);
+    targets.free_residual = &free_residual;
+    targets.full_residual = &full_residual;
+    if (stabilized)
+    {
+      clear(stabilization_forces);
+      targets.stabilization = &stabilization_forces;
+    }
+    if (track_external)
+    {
+      clear(external_forces);
+      targets.external = &external_forces;
+    }
+    if (dynamic)
+    {
+      clear(dynamics_state->inertia_forces());
+      targets.inertia = &dynamics_state->inertia_forces();
+    }
+    bulk_assembler->assemble(displacement(),
+                             ghosted_solution,
+                             ghosted_anchors,
+                             time,
+                             constraints,
+                             homogeneous_constraints,
+                             dynamics_state.get(),
+                             targets);
+    t.stop();
+
+    if (contact_handler)
+    {
+      TimerOutput::Scope contact_timer(timer, "contact assembly");
+      clear(contact_force_vector);
+      contact_handler->assemble(with_matrix,
+                                constraints,
+                                homogeneous_constraints,
+                                matrix,
+                                rhs,
+                                free_residual,
+                                full_residual,
+                                contact_force_vector);
+      contact_force_vector.compress(VectorOperation::add);
+    }
+    if (dynamics_state)
+      dynamics_state->add_old_forces(homogeneous_constraints,
+                                     free_residual,
+                                     with_matrix ? &rhs : nullptr);
+
+    if (with_matrix)
+    {
+      matrix.compress(VectorOperation::add);
+      rhs.compress(VectorOperation::add);
+    }
+    free_residual.compress(VectorOperation::add);
+    full_residual.compress(VectorOperation::add);
+    if (stabilized)
+      stabilization_forces.compress(VectorOperation::add);
+    if (track_external)
+      external_forces.compress(VectorOperation::add);
+    if (dynamic)
+      dynamics_state->inertia_forces().compress(VectorOperation::add);
+    return free_residual.l2_norm();
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Problem<dim>::reaction_forces() const
+  {
+    std::vector<double> forces;
+    for (const auto &per_component : reaction_dofs)
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        double sum = 0;
+        for (const auto dof : per_component[d])
+          if (locally_owned_dofs.is_element(dof))
+            sum +=
+              full_residual[dof] +
+              (dynamics_state ? dynamics_state->inertia_forces()[dof] : 0.);
+        forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
+      }
+    return forces;
   }
 
 
@@ -115,11 +250,8 @@ namespace tribos
   Problem<dim>::after_assembly(const unsigned int iteration,
                                const double       residual)
   {
-    if (contact)
-      contact->watch_iteration(iteration,
-                               residual,
-                               [this](const std::string &text)
-                               { message(text); });
+    if (contact_handler)
+      contact_handler->watch_iteration(iteration, residual, log);
   }
 
 
@@ -129,10 +261,9 @@ namespace tribos
   Problem<dim>::at_convergence(IncrementReport &report)
   {
     const auto &p = parameters.nonlinear_solver;
-    if (contact && !contact->accept_iterate([this](const std::string &text)
-                                            { message(text); }))
+    if (contact_handler && !contact_handler->accept_iterate(log))
       return Verdict::iterate;
-    report.n_chattering  = contact ? contact->n_chattering() : 0;
+    report.n_chattering = contact_handler ? contact_handler->n_chattering() : 0;
     report.n_relaxations = n_relaxations;
     if (p.stabilization > 0)
     {
@@ -167,7 +298,7 @@ namespace tribos
     // Axisymmetric: radial resultants cancel around the ring; only the
     // axial component is a force.
     const unsigned int first = parameters.finite_element.axisymmetric ? 1 : 0;
-    std::vector<Tensor<1, dim>> per_body(materials.size());
+    std::vector<Tensor<1, dim>> per_body(material_state->n_materials());
     Tensor<1, dim>              applied;
     for (const auto i : locally_owned_dofs)
     {
@@ -226,8 +357,8 @@ namespace tribos
     std::vector<types::global_dof_index> columns;
     for (types::global_dof_index j = 0; j < n_system; ++j)
       if (!homogeneous_constraints.is_constrained(j) &&
-          ((contact && j < dof_handler.n_dofs() &&
-            contact->contact_dofs().is_element(j)) ||
+          ((contact_handler && j < dof_handler.n_dofs() &&
+            contact_handler->contact_dofs().is_element(j)) ||
            j >= dof_handler.n_dofs() || j % 7 == 0))
         columns.push_back(j);
 
@@ -272,44 +403,20 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::log_iteration(const unsigned int iteration,
-                              const double       residual,
-                              const double       relative_residual,
-                              const double       update_norm,
-                              const double       step_length,
-                              const double       order)
-  {
-    convergence_csv->add_row({double(current_step),
-                              double(current_increment),
-                              time,
-                              double(iteration),
-                              residual,
-                              relative_residual,
-                              update_norm,
-                              step_length,
-                              order});
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::message(const std::string &text)
-  {
-    pcout << text << std::endl;
-  }
-
-
-
-  template <int dim>
-  void
   Problem<dim>::commit(const double)
   {
-    history_old = history_new;
-    if (integrator)
-      commit_dynamics();
-    if (contact)
-      contact->commit();
+    material_state->commit();
+    if (dynamics_state)
+      dynamics_state->commit(
+        displacement(),
+        full_residual,
+        &contact_force_vector,
+        external_forces,
+        contact_handler ? contact_handler->frictional_dissipation() : 0.,
+        time,
+        [this]() { return bulk_assembler->stored_energy(displacement()); });
+    if (contact_handler)
+      contact_handler->commit();
   }
 
 
@@ -318,9 +425,9 @@ namespace tribos
   void
   Problem<dim>::restore()
   {
-    history_new = history_old;
-    if (contact)
-      contact->restore();
+    material_state->restore();
+    if (contact_handler)
+      contact_handler->restore();
   }
 
 
@@ -331,49 +438,11 @@ namespace tribos
   {
     // Augmented Lagrangian: a Uzawa update of the multipliers, then the
     // same increment again, until the penetration is below the tolerance.
-    return contact && contact->outer_update(report.n_augmentations);
+    return contact_handler &&
+           contact_handler->outer_update(report.n_augmentations);
   }
 
 
-
-  template <int dim>
-  std::string
-  Problem<dim>::step_status() const
-  {
-    if (!contact)
-      return "";
-    const ContactStatistics s = contact_output->statistics();
-    return "  active/stick/slip " + std::to_string(s.n_active) + "/" +
-           std::to_string(s.n_stick) + "/" + std::to_string(s.n_slip);
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::end_step(const unsigned int step, const double end_time)
-  {
-    if (parameters.output.is_output_step(step,
-                                         parameters.time_stepping.n_steps))
-      write_vtu(step, end_time);
-    const unsigned int every = parameters.output.checkpoint_every;
-    if (every > 0 &&
-        (step % every == 0 || step == parameters.time_stepping.n_steps))
-      write_checkpoint(step);
-    check_balance(step);
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::failed(const std::string &message)
-  {
-    if (contact)
-      for (const auto &w : contact->run_warnings())
-        warn(w);
-    write_summary("FAILED: " + message);
-  }
 
   template class Problem<2>;
   template class Problem<3>;

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <sstream>
 
 namespace tribos
 {
@@ -82,11 +83,12 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::set_from_cell_values(const std::vector<double> &values,
-                                     Vector                    &v) const
+  Problem<dim>::set_from_cell_values(
+    const std::vector<std::array<unsigned, 4>> &cells,
+    const std::vector<double>                  &values,
+    Vector                                     &v) const
   {
-    const auto                          &cells = restart->cells;
-    const unsigned int                   n     = fe->n_dofs_per_cell();
+    const unsigned int                   n = fe->n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     AssertThrow(values.size() == cells.size() * n,
                 ExcMessage("The checkpoint's vector does not fit the mesh."));
@@ -121,8 +123,11 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::write_checkpoint(const unsigned int step,
-                                 const std::string &directory)
+  Problem<dim>::write_checkpoint(
+    const StepperState                                &stepper,
+    const Vector                                      &change,
+    const std::vector<std::pair<double, std::string>> &pvd_records,
+    const std::string                                 &directory)
   {
     TimerOutput::Scope t(timer, "output");
     Checkpoint         c;
@@ -131,9 +136,7 @@ namespace tribos
     c.dofs_per_cell  = fe->n_dofs_per_cell();
     c.n_dofs         = dof_handler.n_dofs();
     c.n_multipliers  = n_multipliers;
-    c.stepper        = stepper->state();
-    AssertThrow(c.stepper.step == step,
-                ExcInternalError("checkpoint of another step"));
+    c.stepper        = stepper;
 
     // The multipliers of a system vector, each from its owner, summed over
     // the processes (only the owner has a node's multipliers).
@@ -159,7 +162,6 @@ namespace tribos
     // displacement part per cell, its multipliers.
     if (c.stepper.change_increment > 0)
     {
-      const Vector &change = stepper->last_change();
       for (const auto i : locally_owned_dofs)
         owned[i] = change[i];
       owned.compress(VectorOperation::insert);
@@ -169,46 +171,25 @@ namespace tribos
 
     // Plastic history of the owned cells, gathered in cell order.
     std::vector<std::pair<CellKey, std::vector<double>>> mine;
-    const unsigned int n_q = quadrature.size();
     for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          history_offset[cell->active_cell_index()] !=
-            numbers::invalid_unsigned_int)
-      {
-        const unsigned int n      = n_history_variables(cell->material_id());
-        const auto         offset = history_offset[cell->active_cell_index()];
+      if (cell->is_locally_owned() && material_state->has_history(cell))
         mine.emplace_back(cell->id().template to_binary<dim>(),
-                          std::vector<double>(history_old.begin() + offset,
-                                              history_old.begin() + offset +
-                                                n * n_q));
-      }
+                          material_state->cell_history(cell));
     c.history = gather_by_cell(mine, mpi_communicator);
 
-    if (contact)
-      c.contact = contact->committed_state();
+    if (contact_handler)
+      c.contact = contact_handler->committed_state();
 
-    if (integrator)
+    if (dynamics_state)
     {
-      c.cell_values["velocity"]           = cell_values(velocity);
-      c.cell_values["acceleration"]       = cell_values(acceleration);
-      c.cell_values["old_forces"]         = cell_values(old_forces);
-      c.cell_values["old_contact_forces"] = cell_values(old_contact_forces);
-      c.cell_values["old_external"]       = cell_values(old_external);
-      c.cell_values["old_internal"]       = cell_values(old_internal);
-      c.scalars                           = {{"kinetic_energy", kinetic_energy},
-                                             {"strain_energy", strain_energy},
-                                             {"internal_work", internal_work},
-                                             {"contact_work", contact_work},
-                                             {"friction_work", friction_work},
-                                             {"external_work", external_work},
-                                             {"initial_kinetic_energy", initial_kinetic_energy}};
+      for (const auto &[name, vector] : dynamics_state->checkpoint_vectors())
+        c.cell_values[name] = cell_values(*vector);
+      c.scalars = dynamics_state->scalars();
     }
     c.pvd_records = pvd_records;
 
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      c.save(!directory.empty() ? directory :
-                                  parameters.output.directory + "/checkpoint-" +
-                                    Utilities::int_to_string(step, 5));
+      c.save(directory);
     MPI_Barrier(mpi_communicator);
   }
 
@@ -216,9 +197,8 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::check_checkpoint() const
+  Problem<dim>::check_checkpoint(const Checkpoint &c) const
   {
-    const Checkpoint &c = *restart;
     const std::string where =
       "--restart <" + parameters.restart_directory + ">: ";
     const auto require = [&](const unsigned int stored,
@@ -245,7 +225,7 @@ namespace tribos
                            std::to_string(parameters.time_stepping.n_steps) +
                            " (Time stepping/Number of steps): nothing is "
                            "left to do."));
-    AssertThrow(c.cell_values.count("velocity") == (integrator ? 1 : 0),
+    AssertThrow(c.cell_values.count("velocity") == (dynamics_state ? 1 : 0),
                 ExcMessage(where +
                            "the checkpoint and this run disagree on "
                            "Time stepping/Integrator (static or dynamic)."));
@@ -254,13 +234,12 @@ namespace tribos
 
 
   template <int dim>
-  StepperState
-  Problem<dim>::read_checkpoint()
+  void
+  Problem<dim>::read_checkpoint(const Checkpoint &c)
   {
-    const Checkpoint &c = *restart;
     const std::string where =
       "--restart <" + parameters.restart_directory + ">: ";
-    set_from_cell_values(c.cell_values.at("solution"), owned_solution);
+    set_from_cell_values(c.cells, c.cell_values.at("solution"), owned_solution);
     for (types::global_dof_index i = 0; i < n_multipliers; ++i)
       if (system_owned.is_element(dof_handler.n_dofs() + i))
         owned_solution[dof_handler.n_dofs() + i] = c.multipliers[i];
@@ -268,78 +247,54 @@ namespace tribos
     solution_changed();
     if (c.stepper.change_increment > 0)
     {
-      restart_change.reinit(system_owned, mpi_communicator);
-      set_from_cell_values(c.cell_values.at("change"), restart_change);
+      change_of_restart.reinit(system_owned, mpi_communicator);
+      set_from_cell_values(c.cells,
+                           c.cell_values.at("change"),
+                           change_of_restart);
       for (types::global_dof_index i = 0; i < n_multipliers; ++i)
         if (system_owned.is_element(dof_handler.n_dofs() + i))
-          restart_change[dof_handler.n_dofs() + i] = c.multiplier_change[i];
-      restart_change.compress(VectorOperation::insert);
+          change_of_restart[dof_handler.n_dofs() + i] = c.multiplier_change[i];
+      change_of_restart.compress(VectorOperation::insert);
     }
 
     unsigned int                                   n_missing = 0;
     std::map<CellKey, const std::vector<double> *> by_cell;
     for (const auto &[cell, values] : c.history)
       by_cell[cell] = &values;
-    const unsigned int n_q = quadrature.size();
     for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          history_offset[cell->active_cell_index()] !=
-            numbers::invalid_unsigned_int)
+      if (cell->is_locally_owned() && material_state->has_history(cell))
       {
-        const unsigned int n = n_history_variables(cell->material_id());
         const auto it = by_cell.find(cell->id().template to_binary<dim>());
-        if (it == by_cell.end() || it->second->size() != n * n_q)
-        {
+        if (it == by_cell.end() ||
+            !material_state->set_cell_history(cell, *it->second))
           ++n_missing;
-          continue;
-        }
-        std::copy(it->second->begin(),
-                  it->second->end(),
-                  history_old.begin() +
-                    history_offset[cell->active_cell_index()]);
       }
     AssertThrow(Utilities::MPI::sum(n_missing, mpi_communicator) == 0,
                 ExcMessage(where + "the checkpoint has no plastic "
                                    "history for a cell that needs one: "
                                    "Materials must be those of the run "
                                    "that wrote it."));
-    history_new = history_old;
+    material_state->restore();
 
     time = c.stepper.time;
-    if (contact)
+    if (contact_handler)
     {
-      contact->update(ghosted_solution, time);
-      contact->load_committed_state(c.contact, time);
+      contact_handler->update(ghosted_solution, time);
+      contact_handler->load_committed_state(c.contact, time);
     }
 
-    if (integrator)
-    {
-      set_from_cell_values(c.cell_values.at("velocity"), velocity);
-      set_from_cell_values(c.cell_values.at("acceleration"), acceleration);
-      set_from_cell_values(c.cell_values.at("old_forces"), old_forces);
-      set_from_cell_values(c.cell_values.at("old_contact_forces"),
-                           old_contact_forces);
-      set_from_cell_values(c.cell_values.at("old_external"), old_external);
-      set_from_cell_values(c.cell_values.at("old_internal"), old_internal);
-      ghosted_velocity       = velocity;
-      ghosted_acceleration   = acceleration;
-      ghosted_start          = ghosted_displacement();
-      committed_time         = c.stepper.time;
-      kinetic_energy         = c.scalars.at("kinetic_energy");
-      strain_energy          = c.scalars.at("strain_energy");
-      internal_work          = c.scalars.at("internal_work");
-      contact_work           = c.scalars.at("contact_work");
-      friction_work          = c.scalars.at("friction_work");
-      external_work          = c.scalars.at("external_work");
-      initial_kinetic_energy = c.scalars.at("initial_kinetic_energy");
-      momentum               = energies().momentum;
-    }
-    pvd_records = c.pvd_records;
-    pcout << "  restarted from " << parameters.restart_directory
-          << " after step " << c.stepper.step << " (t = " << c.stepper.time
-          << ", " << c.stepper.totals.n_increments << " increments)"
-          << std::endl;
-    return c.stepper;
+    if (dynamics_state)
+      dynamics_state->restart(
+        [&](const std::string &name, Vector &v)
+        { set_from_cell_values(c.cells, c.cell_values.at(name), v); },
+        c.scalars,
+        displacement(),
+        c.stepper.time);
+    std::ostringstream line;
+    line << "  restarted from " << parameters.restart_directory
+         << " after step " << c.stepper.step << " (t = " << c.stepper.time
+         << ", " << c.stepper.totals.n_increments << " increments)";
+    log(line.str());
   }
 
   template class Problem<2>;

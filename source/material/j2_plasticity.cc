@@ -3,74 +3,22 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <array>
 #include <cmath>
 
 namespace tribos
 {
   namespace
   {
-    using Mat3 = std::array<std::array<double, 3>, 3>;
-    using Vec3 = std::array<double, 3>;
+    using Mat3 = Tensor<2, 3>;
+    using Vec3 = Tensor<1, 3>;
 
-    Mat3
-    identity()
-    {
-      Mat3 I{};
-      for (unsigned int i = 0; i < 3; ++i)
-        I[i][i] = 1.;
-      return I;
-    }
 
-    Mat3
-    operator*(const Mat3 &A, const Mat3 &B)
-    {
-      Mat3 C{};
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          for (unsigned int k = 0; k < 3; ++k)
-            C[i][j] += A[i][k] * B[k][j];
-      return C;
-    }
-
-    Mat3
-    transpose(const Mat3 &A)
-    {
-      Mat3 T;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          T[i][j] = A[j][i];
-      return T;
-    }
-
-    double
-    determinant(const Mat3 &A)
-    {
-      return A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
-             A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
-             A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
-    }
-
-    Mat3
-    inverse(const Mat3 &A)
-    {
-      const double det = determinant(A);
-      Mat3         B;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-        {
-          const unsigned int i1 = (j + 1) % 3, i2 = (j + 2) % 3;
-          const unsigned int j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-          B[i][j] = (A[i1][j1] * A[i2][j2] - A[i1][j2] * A[i2][j1]) / det;
-        }
-      return B;
-    }
 
     /** Q diag(d) Q^T. */
     Mat3
     spectral_sum(const Mat3 &Q, const Vec3 &d)
     {
-      Mat3 A{};
+      Mat3 A;
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = i; j < 3; ++j)
         {
@@ -135,7 +83,7 @@ namespace tribos
     Mat3
     embed(const Tensor<2, dim> &F_in)
     {
-      Mat3 F = identity();
+      Mat3 F = unit_symmetric_tensor<3>();
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = 0; j < dim; ++j)
           F[i][j] = F_in[i][j];
@@ -324,7 +272,7 @@ namespace tribos
     if (!(determinant(F_in) > 0))
       throw InvertedElement("J2 plasticity", determinant(F_in));
     const Mat3      F     = embed(F_in);
-    const Mat3      F_inv = inverse(F);
+    const Mat3      F_inv = invert(F);
     const ReturnMap r     = return_map(F,
                                    F_inv,
                                    old_history,
@@ -362,7 +310,7 @@ namespace tribos
     for (unsigned int b = 0; b < dim; ++b)
     {
       // Q^T m_b.
-      Vec3 m{};
+      Vec3 m;
       for (unsigned int k = 0; k < 3; ++k)
         for (unsigned int j = 0; j < 3; ++j)
           m[k] += Q[j][k] * FC[j][b];
@@ -403,7 +351,7 @@ namespace tribos
   {
     const Mat3            F = embed(F_in);
     const ReturnMap       r = return_map(F,
-                                   inverse(F),
+                                   invert(F),
                                    history,
                                    bulk_modulus,
                                    shear_modulus,

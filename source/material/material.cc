@@ -32,7 +32,9 @@ namespace tribos
       return std::make_unique<NeoHookean<dim>>(E, nu);
     AssertThrow(false,
                 ExcMessage("Parameter <Materials/Model>: unknown model <" +
-                           model + ">. Allowed: linear elastic, neo-Hookean."));
+                           model +
+                           ">. Allowed: linear elastic, neo-Hookean, J2 "
+                           "plasticity."));
     return nullptr;
   }
 

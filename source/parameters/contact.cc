@@ -9,102 +9,205 @@ namespace tribos
 {
   namespace Parameters
   {
-    std::string
-    to_string(const EnforcementMethod method)
+    namespace
     {
-      switch (method)
+      /** The entries of the pairs and their law: Pairs, Method, penalties,
+       * friction. */
+      void
+      declare_law_entries(dealii::ParameterHandler &prm)
       {
-        case EnforcementMethod::penalty:
-          return "penalty";
-        case EnforcementMethod::lagrange_multiplier:
-          return "lagrange multiplier";
-        case EnforcementMethod::augmented_lagrangian:
-          return "augmented lagrangian";
+        prm.declare_entry(
+          "Pairs",
+          "",
+          dealii::Patterns::Anything(),
+          "Contact pairs separated by ';': 'slave : master' or 'slave : master "
+          ": key=value, ...'. slave is a list of boundary ids whose nodes are "
+          "checked; master is a list of boundary ids (deformable master "
+          "faces) or the name of a rigid surface. A list (e.g. '10, 11, 12') "
+          "makes one connected surface: a node on the edge between two of its "
+          "parts is one node, and master faces continue across that edge. "
+          "Per-pair keys: method, penalty, tangential penalty, mu, "
+          "discretization (node to segment | mortar). Example: "
+          "'10 : 3 ; 4 : plate : mu=0.2 ; 3 : 10, 11, 12'.");
+        prm.declare_entry("Method",
+                          "penalty",
+                          dealii::Patterns::Selection(
+                            "penalty|lagrange multiplier|augmented lagrangian"),
+                          "Default enforcement of every pair. penalty: t_N = "
+                          "eps_N <-g_N>; augmented lagrangian: t_N = <lambda - "
+                          "eps_N g_N> with the multiplier lambda of each slave "
+                          "node updated (Uzawa) until the penetration is "
+                          "below Augmentation tolerance; lagrange multiplier: "
+                          "exact contact, the traction of every slave node is "
+                          "an unknown of the system (saddle point; direct or, "
+                          "the multipliers eliminated, iterative solves, on "
+                          "any number of MPI processes); the active set and "
+                          "stick/slip follow from lambda - eps_N g_N inside "
+                          "Newton, so eps_N then only affects the iterates.");
+        prm.declare_entry(
+          "Discretization",
+          "node to segment",
+          dealii::Patterns::Selection("node to segment|mortar"),
+          "Default discretization of every pair with a deformable master. "
+          "node to segment: each slave node is projected onto the master "
+          "(the paper's); mortar: the gap, slip and force of each slave "
+          "node are integrals over the overlap of its slave segments (faces "
+          "in 3D) with "
+          "the master segments, weighted by the node's multiplier function "
+          "(segment-to-segment; passes the contact patch test). Pairs with a "
+          "rigid master are always node to rigid surface. Mortar is "
+          "one-pass.");
+        prm.declare_entry(
+          "Mortar basis",
+          "dual",
+          dealii::Patterns::Selection("dual|standard"),
+          "Mortar: the functions that weight the gap and the traction of a "
+          "slave node. dual: biorthogonal to the slave's shape functions, so "
+          "each node's traction acts on that node alone (a diagonal slave "
+          "matrix D); on a slave segment only partly overlapped by the master "
+          "(at the master's end) they blend continuously into the standard "
+          "functions, whose weights stay positive. standard: the slave's shape functions "
+          "everywhere.");
+        prm.declare_entry(
+          "Penalty factor",
+          "100*E/h",
+          dealii::Patterns::Anything(),
+          "Normal penalty eps_N: 'k*E/h' (per slave node: k times the pair's "
+          "contact modulus E over the node's element size h, its tributary "
+          "length in 2D or the square root of its tributary area in 3D; "
+          "independent of the length unit) or an absolute value in stress per "
+          "length (model units; e.g. the paper's '10E' in mm is 10 x E "
+          "written out). E = E_s E_m / (E_s + E_m) for two deformable bodies "
+          "(the series modulus of the two sides, E/2 for equal materials) and "
+          "E_s against a rigid surface (the limit E_m -> infinity), E_s and "
+          "E_m the smallest Young's modulus of the bodies of each side. k is "
+          "the contact stiffness relative to the element's own: penetration "
+          "is about p h / (k E). 'k*E' without '/h' is refused.");
+        prm.declare_entry("Tangential penalty factor",
+                          "",
+                          dealii::Patterns::Anything(),
+                          "Tangential penalty eps_T (stick stiffness), same "
+                          "syntax; empty means equal to the normal penalty.");
+        prm.declare_entry(
+          "Friction complementarity parameter",
+          "E/h",
+          dealii::Patterns::Anything(),
+          "Lagrange multipliers only: c_T of the semismooth stick/slip "
+          "decision |T + c_T dg_T| <= mu max(0, t_N - c g_N) (a solver "
+          "parameter: it changes the iterates, never the converged solution). "
+          "Same syntax as the penalties; the default E/h is the scale of the "
+          "body's stiffness at the node. Much larger values (e.g. 1000*E/h) "
+          "let tiny slips flip the stick/slip state and can make Newton cycle "
+          "on 3D frictional contact.");
+        prm.declare_entry(
+          "Friction coefficient",
+          "0",
+          dealii::Patterns::Double(0),
+          "Coulomb coefficient mu (>= 0); 0 is frictionless and "
+          "stores no tangential state.");
       }
-      return "";
-    }
 
 
 
-    EnforcementMethod
-    parse_method(const std::string &text, const std::string &entry)
-    {
-      for (const auto method : {EnforcementMethod::penalty,
-                                EnforcementMethod::lagrange_multiplier,
-                                EnforcementMethod::augmented_lagrangian})
-        if (text == to_string(method))
-          return method;
-      AssertThrow(false,
-                  dealii::ExcMessage("Parameter <" + entry + ">: method <" +
-                                     text +
-                                     "> unknown. Allowed: penalty, lagrange "
-                                     "multiplier, augmented lagrangian."));
-      return EnforcementMethod::penalty;
-    }
-
-
-
-    PenaltyValue
-    PenaltyValue::parse(const std::string &input, const std::string &entry)
-    {
-      PenaltyValue      result;
-      const std::string text = Text::trim(input);
-      if (text.empty())
-        return result;
-      result.given = true;
-
-      // Without blanks: '100 * E / h' reads as '100*E/h'.
-      std::string compact;
-      for (const char c : text)
-        if (c != ' ' && c != '\t')
-          compact += c;
-      std::string number    = compact;
-      const auto  ends_with = [&compact](const std::string &tail)
+      /** The entries of the discretization and the search: Tangent,
+       * Passes, smoothing, Search distance, ... */
+      void
+      declare_search_entries(dealii::ParameterHandler &prm)
       {
-        return compact.size() >= tail.size() &&
-               compact.compare(compact.size() - tail.size(),
-                               tail.size(),
-                               tail) == 0;
-      };
-      const std::string allowed =
-        "Write 'k*E/h' (k times the pair's contact modulus E over the "
-        "slave node's element size h, free of the length unit; e.g. "
-        "'100*E/h') or an absolute value in stress per length (e.g. "
-        "'1e5').";
-      if (compact == "E/h")
-      {
-        result.per_node = true;
-        number          = "1";
+        prm.declare_entry("Tangent",
+                          "consistent",
+                          dealii::Patterns::Selection("consistent|paper"),
+                          "consistent: exact derivative of the assembled "
+                          "contact residual (projection, normal and metric "
+                          "variations included); paper: the small-deformation "
+                          "linearization (29)-(31) with those terms dropped.");
+        prm.declare_entry("Passes",
+                          "one-pass",
+                          dealii::Patterns::Selection("one-pass|two-pass"),
+                          "two-pass adds, for every deformable pair, the pair "
+                          "with slave and master swapped; both carry half the "
+                          "tributary area.");
+        prm.declare_entry(
+          "Master smoothing",
+          "none",
+          dealii::Patterns::Selection("none|averaged normals"),
+          "none: the master is its faces (piecewise linear in 2D, bilinear "
+          "in 3D). averaged normals (2D only): the normal field of each "
+          "deformable master is interpolated between averaged nodal normals, "
+          "so projection, gap and contact force stay continuous when a slave "
+          "node crosses a master vertex (no chattering between segments at "
+          "kinks of a coarse or strongly deformed master). With "
+          "Discretization = mortar (Q1) the integrals stay over the master's "
+          "segments and only the nodal normal changes: the smoothed master "
+          "normal averaged over the node's segments, instead of the slave's "
+          "own normal, which tilts at the edge of the contact zone on a "
+          "coarse curved slave.");
+        prm.declare_entry("Search distance",
+                          "0",
+                          dealii::Patterns::Double(0),
+                          "Slave nodes farther than this from every master "
+                          "face are not projected (open, no gap). 0: no "
+                          "limit. Under MPI each process receives the master "
+                          "nodes within this distance (plus three face "
+                          "sizes; mortar: and five slave face sizes) of its "
+                          "slave nodes at every search: with 0, the whole "
+                          "master surface.");
       }
-      else if (ends_with("*E/h"))
+
+
+
+      /** The entries of the solution's policies: augmentation, chattering,
+       * rigid surfaces. */
+      void
+      declare_policy_entries(dealii::ParameterHandler &prm)
       {
-        result.per_node = true;
-        number          = compact.substr(0, compact.size() - 4);
+        prm.declare_entry("Augmentation tolerance",
+                          "1e-4",
+                          dealii::Patterns::Double(0),
+                          "augmented lagrangian: Uzawa updates of the "
+                          "multipliers repeat an increment until every closed "
+                          "slave node penetrates less than this fraction of "
+                          "its local element size (sqrt or value of the "
+                          "tributary area).");
+        prm.declare_entry("Maximum augmentations",
+                          "20",
+                          dealii::Patterns::Integer(0),
+                          "augmented lagrangian: multiplier updates per "
+                          "increment at most; more are a non-convergence "
+                          "(cutback).");
+        prm.declare_entry("Chattering flips",
+                          "2",
+                          dealii::Patterns::Integer(1),
+                          "A slave node whose contact status (open or "
+                          "closed) changes more than this many times between "
+                          "the Newton iterations of one increment while Newton "
+                          "stalls (the residual not below half the best of "
+                          "the increment) is chattering; changes while the "
+                          "residual falls are the active set converging. "
+                          "history.csv counts such nodes per increment "
+                          "(chattering_nodes).");
+        prm.declare_entry("Chattering remedy",
+                          "freeze",
+                          dealii::Patterns::Selection("freeze|cutback|none"),
+                          "What happens when a node chatters (the log says "
+                          "so): freeze (the node is held closed for the rest "
+                          "of the increment; held nodes that end in tension "
+                          "are released once and Newton goes on, a second "
+                          "time the increment is cut back), cutback (the "
+                          "increment is "
+                          "abandoned and halved) or none (only counted).");
+        prm.declare_entry(
+          "Rigid surfaces",
+          "",
+          dealii::Patterns::Anything(),
+          "Rigid analytic surfaces separated by ';': 'name : plane : px, py, pz "
+          ": nx, ny, nz : motion', 'name : sphere : cx, cy, cz : R : motion', "
+          "'name : cylinder : cx, cy, cz : R : ax, ay, az : motion' (3D; in 2D "
+          "a cylinder is the circle 'cx, cy, 0 : R : motion'). The plane "
+          "normal points towards the deformable body. motion: dim expressions "
+          "in t, the translation of the surface.");
       }
-      else
-      {
-        // A bare number is absolute; anything else naming E lacks the h.
-        char        *end = nullptr;
-        const double v   = std::strtod(compact.c_str(), &end);
-        (void)v;
-        AssertThrow(*end == '\0' || compact.find('E') == std::string::npos,
-                    dealii::ExcMessage(
-                      "Parameter <" + entry + "> = <" + text +
-                      ">: a multiple of E without the element size depends "
-                      "on the length unit (the same model in metres gets a "
-                      "penalty 1000 times softer relative to its mesh than "
-                      "in millimetres) and is no longer accepted. " +
-                      allowed));
-      }
-      char *end    = nullptr;
-      result.value = std::strtod(number.c_str(), &end);
-      AssertThrow(!number.empty() && *end == '\0' && result.value > 0 &&
-                    std::isfinite(result.value),
-                  dealii::ExcMessage("Parameter <" + entry + "> = <" + text +
-                                     ">: expected a positive number. " +
-                                     allowed));
-      return result;
-    }
+    } // namespace
 
 
 
@@ -112,177 +215,9 @@ namespace tribos
     Contact::declare_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      prm.declare_entry(
-        "Pairs",
-        "",
-        dealii::Patterns::Anything(),
-        "Contact pairs separated by ';': 'slave : master' or 'slave : master "
-        ": key=value, ...'. slave is a list of boundary ids whose nodes are "
-        "checked; master is a list of boundary ids (deformable master "
-        "faces) or the name of a rigid surface. A list (e.g. '10, 11, 12') "
-        "makes one connected surface: a node on the edge between two of its "
-        "parts is one node, and master faces continue across that edge. "
-        "Per-pair keys: method, penalty, tangential penalty, mu, "
-        "discretization (node to segment | mortar). Example: "
-        "'10 : 3 ; 4 : plate : mu=0.2 ; 3 : 10, 11, 12'.");
-      prm.declare_entry("Method",
-                        "penalty",
-                        dealii::Patterns::Selection(
-                          "penalty|lagrange multiplier|augmented lagrangian"),
-                        "Default enforcement of every pair. penalty: t_N = "
-                        "eps_N <-g_N>; augmented lagrangian: t_N = <lambda - "
-                        "eps_N g_N> with the multiplier lambda of each slave "
-                        "node updated (Uzawa) until the penetration is "
-                        "below Augmentation tolerance; lagrange multiplier: "
-                        "exact contact, the traction of every slave node is "
-                        "an unknown of the system (saddle point; direct or, "
-                        "the multipliers eliminated, iterative solves, on "
-                        "any number of MPI processes); the active set and "
-                        "stick/slip follow from lambda - eps_N g_N inside "
-                        "Newton, so eps_N then only affects the iterates.");
-      prm.declare_entry(
-        "Discretization",
-        "node to segment",
-        dealii::Patterns::Selection("node to segment|mortar"),
-        "Default discretization of every pair with a deformable master. "
-        "node to segment: each slave node is projected onto the master "
-        "(the paper's); mortar: the gap, slip and force of each slave "
-        "node are integrals over the overlap of its slave segments (faces "
-        "in 3D) with "
-        "the master segments, weighted by the node's multiplier function "
-        "(segment-to-segment; passes the contact patch test). Pairs with a "
-        "rigid master are always node to rigid surface. Mortar is "
-        "one-pass.");
-      prm.declare_entry(
-        "Mortar basis",
-        "dual",
-        dealii::Patterns::Selection("dual|standard"),
-        "Mortar: the functions that weight the gap and the traction of a "
-        "slave node. dual: biorthogonal to the slave's shape functions, so "
-        "each node's traction acts on that node alone (a diagonal slave "
-        "matrix D); on a slave segment only partly overlapped by the master "
-        "(at the master's end) they blend continuously into the standard "
-        "functions, whose weights stay positive. standard: the slave's shape functions "
-        "everywhere.");
-      prm.declare_entry(
-        "Penalty factor",
-        "100*E/h",
-        dealii::Patterns::Anything(),
-        "Normal penalty eps_N: 'k*E/h' (per slave node: k times the pair's "
-        "contact modulus E over the node's element size h, its tributary "
-        "length in 2D or the square root of its tributary area in 3D; "
-        "independent of the length unit) or an absolute value in stress per "
-        "length (model units; e.g. the paper's '10E' in mm is 10 x E "
-        "written out). E = E_s E_m / (E_s + E_m) for two deformable bodies "
-        "(the series modulus of the two sides, E/2 for equal materials) and "
-        "E_s against a rigid surface (the limit E_m -> infinity), E_s and "
-        "E_m the smallest Young's modulus of the bodies of each side. k is "
-        "the contact stiffness relative to the element's own: penetration "
-        "is about p h / (k E). 'k*E' without '/h' is refused.");
-      prm.declare_entry("Tangential penalty factor",
-                        "",
-                        dealii::Patterns::Anything(),
-                        "Tangential penalty eps_T (stick stiffness), same "
-                        "syntax; empty means equal to the normal penalty.");
-      prm.declare_entry(
-        "Friction complementarity parameter",
-        "E/h",
-        dealii::Patterns::Anything(),
-        "Lagrange multipliers only: c_T of the semismooth stick/slip "
-        "decision |T + c_T dg_T| <= mu max(0, t_N - c g_N) (a solver "
-        "parameter: it changes the iterates, never the converged solution). "
-        "Same syntax as the penalties; the default E/h is the scale of the "
-        "body's stiffness at the node. Much larger values (e.g. 1000*E/h) "
-        "let tiny slips flip the stick/slip state and can make Newton cycle "
-        "on 3D frictional contact.");
-      prm.declare_entry("Friction coefficient",
-                        "0",
-                        dealii::Patterns::Double(0),
-                        "Coulomb coefficient mu (>= 0); 0 is frictionless and "
-                        "stores no tangential state.");
-      prm.declare_entry("Tangent",
-                        "consistent",
-                        dealii::Patterns::Selection("consistent|paper"),
-                        "consistent: exact derivative of the assembled "
-                        "contact residual (projection, normal and metric "
-                        "variations included); paper: the small-deformation "
-                        "linearization (29)-(31) with those terms dropped.");
-      prm.declare_entry("Passes",
-                        "one-pass",
-                        dealii::Patterns::Selection("one-pass|two-pass"),
-                        "two-pass adds, for every deformable pair, the pair "
-                        "with slave and master swapped; both carry half the "
-                        "tributary area.");
-      prm.declare_entry(
-        "Master smoothing",
-        "none",
-        dealii::Patterns::Selection("none|averaged normals"),
-        "none: the master is its faces (piecewise linear in 2D, bilinear "
-        "in 3D). averaged normals (2D only): the normal field of each "
-        "deformable master is interpolated between averaged nodal normals, "
-        "so projection, gap and contact force stay continuous when a slave "
-        "node crosses a master vertex (no chattering between segments at "
-        "kinks of a coarse or strongly deformed master). With "
-        "Discretization = mortar (Q1) the integrals stay over the master's "
-        "segments and only the nodal normal changes: the smoothed master "
-        "normal averaged over the node's segments, instead of the slave's "
-        "own normal, which tilts at the edge of the contact zone on a "
-        "coarse curved slave.");
-      prm.declare_entry("Search distance",
-                        "0",
-                        dealii::Patterns::Double(0),
-                        "Slave nodes farther than this from every master "
-                        "face are not projected (open, no gap). 0: no "
-                        "limit. Under MPI each process receives the master "
-                        "nodes within this distance (plus three face "
-                        "sizes; mortar: and five slave face sizes) of its "
-                        "slave nodes at every search: with 0, the whole "
-                        "master surface.");
-      prm.declare_entry("Augmentation tolerance",
-                        "1e-4",
-                        dealii::Patterns::Double(0),
-                        "augmented lagrangian: Uzawa updates of the "
-                        "multipliers repeat an increment until every closed "
-                        "slave node penetrates less than this fraction of "
-                        "its local element size (sqrt or value of the "
-                        "tributary area).");
-      prm.declare_entry("Maximum augmentations",
-                        "20",
-                        dealii::Patterns::Integer(0),
-                        "augmented lagrangian: multiplier updates per "
-                        "increment at most; more are a non-convergence "
-                        "(cutback).");
-      prm.declare_entry("Chattering flips",
-                        "2",
-                        dealii::Patterns::Integer(1),
-                        "A slave node whose contact status (open or "
-                        "closed) changes more than this many times between "
-                        "the Newton iterations of one increment while Newton "
-                        "stalls (the residual not below half the best of "
-                        "the increment) is chattering; changes while the "
-                        "residual falls are the active set converging. "
-                        "history.csv counts such nodes per increment "
-                        "(chattering_nodes).");
-      prm.declare_entry("Chattering remedy",
-                        "freeze",
-                        dealii::Patterns::Selection("freeze|cutback|none"),
-                        "What happens when a node chatters (the log says "
-                        "so): freeze (the node is held closed for the rest "
-                        "of the increment; held nodes that end in tension "
-                        "are released once and Newton goes on, a second "
-                        "time the increment is cut back), cutback (the "
-                        "increment is "
-                        "abandoned and halved) or none (only counted).");
-      prm.declare_entry(
-        "Rigid surfaces",
-        "",
-        dealii::Patterns::Anything(),
-        "Rigid analytic surfaces separated by ';': 'name : plane : px, py, pz "
-        ": nx, ny, nz : motion', 'name : sphere : cx, cy, cz : R : motion', "
-        "'name : cylinder : cx, cy, cz : R : ax, ay, az : motion' (3D; in 2D "
-        "a cylinder is the circle 'cx, cy, 0 : R : motion'). The plane "
-        "normal points towards the deformable body. motion: dim expressions "
-        "in t, the translation of the surface.");
+      declare_law_entries(prm);
+      declare_search_entries(prm);
+      declare_policy_entries(prm);
       prm.leave_subsection();
     }
 
@@ -332,17 +267,6 @@ namespace tribos
                                      "complementarity parameter> must not be "
                                      "empty (default: E/h)."));
 
-      const auto parse_discretization =
-        [](const std::string &text, const std::string &entry)
-      {
-        AssertThrow(text == "node to segment" || text == "mortar",
-                    dealii::ExcMessage("Parameter <" + entry +
-                                       ">: discretization <" + text +
-                                       "> is unknown. Allowed: node to "
-                                       "segment, mortar."));
-        return text == "mortar" ? Discretization::mortar :
-                                  Discretization::node_to_segment;
-      };
       const Discretization default_discretization =
         parse_discretization(prm.get("Discretization"),
                              "Contact/Discretization");
@@ -350,194 +274,18 @@ namespace tribos
                        MortarBasis::standard :
                        MortarBasis::dual;
 
-      rigid_surfaces.clear();
-      const std::string rigid_entry = "Contact/Rigid surfaces";
-      for (const auto &item :
-           Text::split_top_level(prm.get("Rigid surfaces"), ';'))
-      {
-        const auto parts = Text::split_top_level(item, ':');
-        AssertThrow(parts.size() >= 4,
-                    dealii::ExcMessage("Parameter <" + rigid_entry +
-                                       ">: item <" + item +
-                                       "> is incomplete; see the entry's "
-                                       "documentation."));
-        RigidSurface surface;
-        surface.name     = parts[0];
-        surface.type     = parts[1];
-        surface.point    = Text::parse_doubles(parts[2], rigid_entry);
-        std::size_t next = 3;
-        if (surface.type == "plane")
-          surface.direction = Text::parse_doubles(parts[next++], rigid_entry);
-        else if (surface.type == "sphere" || surface.type == "cylinder")
-        {
-          const auto r = Text::parse_doubles(parts[next++], rigid_entry);
-          AssertThrow(r.size() == 1 && r[0] > 0,
-                      dealii::ExcMessage("Parameter <" + rigid_entry +
-                                         ">: surface <" + surface.name +
-                                         "> needs one radius > 0."));
-          surface.radius = r[0];
-          if (surface.type == "cylinder" && parts.size() == 6)
-            surface.direction = Text::parse_doubles(parts[next++], rigid_entry);
-        }
-        else
-          AssertThrow(false,
-                      dealii::ExcMessage("Parameter <" + rigid_entry +
-                                         ">: surface <" + surface.name +
-                                         "> has unknown type <" + surface.type +
-                                         ">. Allowed: plane, sphere, "
-                                         "cylinder."));
-        AssertThrow(next + 1 == parts.size(),
-                    dealii::ExcMessage("Parameter <" + rigid_entry +
-                                       ">: item <" + item +
-                                       "> has the wrong number of ':' "
-                                       "fields for a " +
-                                       surface.type + "."));
-        surface.motion = Text::split_top_level(parts[next], ',');
-        AssertThrow(surface.point.size() == 3,
-                    dealii::ExcMessage("Parameter <" + rigid_entry +
-                                       ">: surface <" + surface.name +
-                                       "> needs a point with 3 "
-                                       "coordinates (z = 0 in 2D)."));
-        rigid_surfaces.push_back(surface);
-      }
-
+      rigid_surfaces = parse_rigid_surfaces(prm.get("Rigid surfaces"));
+      const PairDefaults defaults{
+        default_method,
+        default_normal,
+        default_tangential,
+        PenaltyValue::parse(prm.get("Tangential penalty factor"), "").given,
+        default_mu,
+        default_discretization};
       pairs.clear();
-      const std::string pair_entry = "Contact/Pairs";
       for (const auto &item : Text::split_top_level(prm.get("Pairs"), ';'))
-      {
-        const auto parts = Text::split_top_level(item, ':');
-        AssertThrow(parts.size() == 2 || parts.size() == 3,
-                    dealii::ExcMessage("Parameter <" + pair_entry +
-                                       ">: item <" + item +
-                                       "> must read 'slave : master' or "
-                                       "'slave : master : key=value, ...'."));
-        ContactPair pair;
-        for (const auto id : Text::parse_unsigned(parts[0], pair_entry))
-          pair.slave_boundary.insert(id);
-        bool is_rigid = false;
-        for (const auto &surface : rigid_surfaces)
-          if (surface.name == parts[1])
-            is_rigid = true;
-        if (is_rigid)
-          pair.rigid_surface = parts[1];
-        else
-        {
-          for (const auto &piece : Text::split_top_level(parts[1], ','))
-          {
-            char      *end = nullptr;
-            const long id  = std::strtol(piece.c_str(), &end, 10);
-            AssertThrow(!piece.empty() && *end == '\0' && id >= 0,
-                        dealii::ExcMessage(
-                          "Parameter <" + pair_entry + ">: master <" +
-                          parts[1] +
-                          "> is neither a list of boundary ids nor the name "
-                          "of a surface in <Contact/Rigid surfaces>."));
-            pair.master_boundary.insert(id);
-          }
-          for (const auto id : pair.master_boundary)
-            AssertThrow(pair.slave_boundary.count(id) == 0,
-                        dealii::ExcMessage(
-                          "Parameter <" + pair_entry + ">: item <" + item +
-                          ">: boundary id " + std::to_string(id) +
-                          " is both slave and master; a pair needs "
-                          "different slave and master boundaries."));
-        }
-        pair.method               = default_method;
-        pair.normal_penalty       = default_normal;
-        pair.tangential_penalty   = default_tangential;
-        pair.friction_coefficient = default_mu;
-        pair.discretization       = pair.rigid_surface.empty() ?
-                                      default_discretization :
-                                      Discretization::node_to_segment;
-        bool tangential_given     = false;
-        if (parts.size() == 3)
-          for (const auto &option : Text::split_top_level(parts[2], ','))
-          {
-            const auto equal = option.find('=');
-            AssertThrow(equal != std::string::npos,
-                        dealii::ExcMessage("Parameter <" + pair_entry +
-                                           ">: option <" + option +
-                                           "> must read key=value."));
-            const std::string key   = Text::trim(option.substr(0, equal));
-            const std::string value = Text::trim(option.substr(equal + 1));
-            if (key == "method")
-            {
-              pair.method = parse_method(value, pair_entry);
-            }
-            else if (key == "penalty")
-              pair.normal_penalty = PenaltyValue::parse(value, pair_entry);
-            else if (key == "tangential penalty")
-            {
-              pair.tangential_penalty = PenaltyValue::parse(value, pair_entry);
-              tangential_given        = true;
-            }
-            else if (key == "mu")
-            {
-              char *end                 = nullptr;
-              pair.friction_coefficient = std::strtod(value.c_str(), &end);
-              AssertThrow(*end == '\0' && pair.friction_coefficient >= 0,
-                          dealii::ExcMessage("Parameter <" + pair_entry +
-                                             ">: mu = <" + value +
-                                             "> must be a number >= 0."));
-            }
-            else if (key == "discretization")
-            {
-              pair.discretization = parse_discretization(value, pair_entry);
-              AssertThrow(pair.discretization ==
-                              Discretization::node_to_segment ||
-                            pair.rigid_surface.empty(),
-                          dealii::ExcMessage(
-                            "Parameter <" + pair_entry + ">: item <" + item +
-                            ">: discretization = mortar needs a deformable "
-                            "master; a rigid surface is always met node to "
-                            "surface."));
-            }
-            else
-              AssertThrow(false,
-                          dealii::ExcMessage("Parameter <" + pair_entry +
-                                             ">: unknown "
-                                             "option <" +
-                                             key +
-                                             ">. Allowed: method, "
-                                             "penalty, tangential penalty, mu, "
-                                             "discretization."));
-          }
-        if (!tangential_given && parts.size() == 3 &&
-            !PenaltyValue::parse(prm.get("Tangential penalty factor"), "")
-               .given)
-          pair.tangential_penalty = pair.normal_penalty;
-        pair.text = item;
-        pairs.push_back(pair);
-      }
-
-      // The same interface written twice with slave and master swapped:
-      // with multipliers both sets of node-to-segment constraints hold the
-      // same gap (a singular saddle-point system). Penalty may sum both.
-      const auto meet =
-        [](const std::set<unsigned int> &a, const std::set<unsigned int> &b)
-      {
-        for (const auto id : a)
-          if (b.count(id) > 0)
-            return true;
-        return false;
-      };
-      for (unsigned int i = 0; i < pairs.size(); ++i)
-        for (unsigned int j = i + 1; j < pairs.size(); ++j)
-          AssertThrow(
-            !(pairs[i].rigid_surface.empty() &&
-              pairs[j].rigid_surface.empty() &&
-              meet(pairs[i].slave_boundary, pairs[j].master_boundary) &&
-              meet(pairs[i].master_boundary, pairs[j].slave_boundary) &&
-              (pairs[i].method == EnforcementMethod::lagrange_multiplier ||
-               pairs[j].method == EnforcementMethod::lagrange_multiplier)),
-            dealii::ExcMessage(
-              "Parameter <" + pair_entry + ">: pairs <" + pairs[i].text +
-              "> and <" + pairs[j].text +
-              "> are the same interface with slave and master swapped. "
-              "With Lagrange multipliers both sets of constraints hold the "
-              "same gap and over-constrain it (singular system): keep one "
-              "of them (penalty may use both, like Contact/Passes = "
-              "two-pass)."));
+        pairs.push_back(parse_pair(item, defaults, rigid_surfaces));
+      check_interfaces(pairs);
       prm.leave_subsection();
     }
 

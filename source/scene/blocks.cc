@@ -2,6 +2,7 @@
  * Scenes "block" and "two blocks" (boxes; the README lists their ids).
  */
 
+#include <tribos/base/text.h>
 #include <tribos/scene/mesh_tools.h>
 #include <tribos/scene/scene.h>
 
@@ -9,6 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
+#include <memory>
 
 namespace tribos
 {
@@ -16,16 +18,198 @@ namespace tribos
 
   namespace
   {
+    /**
+     * Scene "block": one body, an axis-parallel box (subsection
+     * Scene/Block).
+     */
+    class BlockScene : public SceneInBothDimensions<BlockScene>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Block");
+        prm.declare_entry("Lower corner",
+                          "0, 0, 0",
+                          Patterns::Anything(),
+                          "Coordinates x, y(, z); the first dim are used.");
+        prm.declare_entry("Upper corner",
+                          "1, 1, 1",
+                          Patterns::Anything(),
+                          "Coordinates x, y(, z); the first dim are used.");
+        prm.declare_entry("Subdivisions",
+                          "4, 4, 4",
+                          Patterns::Anything(),
+                          "Cells per direction before refinement.");
+        prm.leave_subsection();
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        prm.enter_subsection("Block");
+        lower_corner = Text::parse_doubles(prm.get("Lower corner"),
+                                           "Scene/Block/Lower corner");
+        upper_corner = Text::parse_doubles(prm.get("Upper corner"),
+                                           "Scene/Block/Upper corner");
+        subdivisions = Text::cell_counts(prm, "Subdivisions");
+        prm.leave_subsection();
+      }
+
+      /** The scene in dim dimensions. */
+      template <int dim>
+      void
+      build(const unsigned int refinement, Triangulation<dim> &tria) const;
+
+    private:
+      std::vector<double>       lower_corner;
+      std::vector<double>       upper_corner;
+      std::vector<unsigned int> subdivisions;
+    };
+
+
+
+    /**
+     * Scene "two blocks": a lower and an upper box with independent
+     * (non-matching) meshes, the upper one above the lower one (subsection
+     * Scene/Two blocks).
+     */
+    class TwoBlocksScene : public SceneInBothDimensions<TwoBlocksScene>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Two blocks");
+        prm.declare_entry("Lower block size",
+                          "1, 0.5, 1",
+                          Patterns::Anything(),
+                          "Extent per direction; the last used one (y in 2D, "
+                          "z in 3D) is the height.");
+        prm.declare_entry("Upper block size",
+                          "1, 0.5, 1",
+                          Patterns::Anything(),
+                          "Extent per direction of the upper block.");
+        prm.declare_entry("Lower subdivisions",
+                          "4, 2, 4",
+                          Patterns::Anything(),
+                          "Cells per direction of the lower block.");
+        prm.declare_entry("Upper subdivisions",
+                          "3, 2, 3",
+                          Patterns::Anything(),
+                          "Cells per direction of the upper block; choose "
+                          "counts different from the lower block for "
+                          "non-matching interfaces.");
+        prm.declare_entry("Gap",
+                          "0",
+                          Patterns::Double(0),
+                          "Vertical distance between the blocks.");
+        prm.declare_entry("Upper block offset",
+                          "0",
+                          Patterns::Double(),
+                          "Shift of the upper block in x.");
+        prm.declare_entry("Upper bottom radius",
+                          "0",
+                          Patterns::Double(0),
+                          "0: flat. Otherwise the bottom of the upper block "
+                          "is a circular arc (a cylinder in 3D, axis along "
+                          "y) of this radius through the bottom corners, "
+                          "lowest in the middle (the ironing punch); the "
+                          "block keeps its height at the corners and the gap "
+                          "is measured at the lowest point.");
+        prm.declare_entry(
+          "Refinement box",
+          "",
+          Patterns::Anything(),
+          "Empty: none. Otherwise 'x0, y0(, z0) : x1, y1(, z1)', "
+          "the lower and upper corner of a box: the cells of "
+          "both blocks whose centre lies inside are refined "
+          "<Box refinements> times (hanging nodes where the "
+          "box ends).");
+        prm.declare_entry("Box refinements",
+                          "1",
+                          Patterns::Integer(0, 6),
+                          "Refinements of the cells in <Refinement box>.");
+        prm.leave_subsection();
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        prm.enter_subsection("Two blocks");
+        lower_size          = Text::positive_list(prm, "Lower block size");
+        upper_size          = Text::positive_list(prm, "Upper block size");
+        lower_subdivisions  = Text::cell_counts(prm, "Lower subdivisions");
+        upper_subdivisions  = Text::cell_counts(prm, "Upper subdivisions");
+        gap                 = prm.get_double("Gap");
+        upper_offset        = prm.get_double("Upper block offset");
+        upper_bottom_radius = prm.get_double("Upper bottom radius");
+        AssertThrow(upper_bottom_radius == 0 ||
+                      upper_bottom_radius > 0.5 * upper_size[0],
+                    dealii::ExcMessage(
+                      "Parameter <Scene/Two blocks/Upper bottom radius> = " +
+                      std::to_string(upper_bottom_radius) +
+                      " must be 0 or larger than half the upper block width."));
+        box_refinements = prm.get_integer("Box refinements");
+        const auto corners =
+          dealii::Utilities::split_string_list(prm.get("Refinement box"), ':');
+        AssertThrow(corners.empty() || corners.size() == 2,
+                    dealii::ExcMessage(
+                      "Parameter <Scene/Two blocks/Refinement box> = <" +
+                      prm.get("Refinement box") +
+                      ">: expected 'lower corner : upper corner', e.g. "
+                      "'0, 0, 0 : 0.5, 1, 1'."));
+        box_lower.clear();
+        box_upper.clear();
+        if (corners.size() == 2)
+        {
+          box_lower =
+            Text::parse_doubles(corners[0], "Scene/Two blocks/Refinement box");
+          box_upper =
+            Text::parse_doubles(corners[1], "Scene/Two blocks/Refinement box");
+          AssertThrow(
+            box_lower.size() == box_upper.size(),
+            dealii::ExcMessage(
+              "Parameter <Scene/Two blocks/Refinement box> = <" +
+              prm.get("Refinement box") +
+              ">: both corners need the same number of coordinates."));
+        }
+        prm.leave_subsection();
+      }
+
+
+      std::vector<double>       lower_size;
+      std::vector<double>       upper_size;
+      std::vector<unsigned int> lower_subdivisions;
+      std::vector<unsigned int> upper_subdivisions;
+      double                    gap;
+      double                    upper_offset;
+      /** Radius of the upper block's arc-shaped bottom; 0: flat. */
+      double upper_bottom_radius;
+      /** Lower and upper corner of the box whose cells are refined
+       * box_refinements times after the merge (empty: none). */
+      std::vector<double> box_lower, box_upper;
+      unsigned int        box_refinements;
+
+      /** The scene in dim dimensions. */
+      template <int dim>
+      void
+      build(const unsigned int refinement, Triangulation<dim> &tria) const;
+    };
+
+
+
     template <int dim>
     void
-    create_block(const Parameters::Scene &p, Triangulation<dim> &tria)
+    BlockScene::build(const unsigned int  refinement,
+                      Triangulation<dim> &tria) const
     {
       make_box(tria,
-               scaled_counts<dim>(p.block.subdivisions,
-                                  p.refinement,
+               scaled_counts<dim>(subdivisions,
+                                  refinement,
                                   "Scene/Block/Subdivisions"),
-               to_point<dim>(p.block.lower_corner, "Scene/Block/Lower corner"),
-               to_point<dim>(p.block.upper_corner, "Scene/Block/Upper corner"),
+               to_point<dim>(lower_corner, "Scene/Block/Lower corner"),
+               to_point<dim>(upper_corner, "Scene/Block/Upper corner"),
                0,
                0);
     }
@@ -34,9 +218,10 @@ namespace tribos
 
     template <int dim>
     void
-    create_two_blocks(const Parameters::Scene &p, Triangulation<dim> &tria)
+    TwoBlocksScene::build(const unsigned int  refinement,
+                          Triangulation<dim> &tria) const
     {
-      const auto &s = p.two_blocks;
+      const auto &s = *this;
       const auto  lower_size =
         to_point<dim>(s.lower_size, "Scene/Two blocks/Lower block size");
       const auto upper_size =
@@ -45,7 +230,7 @@ namespace tribos
       Triangulation<dim> lower, upper;
       make_box(lower,
                scaled_counts<dim>(s.lower_subdivisions,
-                                  p.refinement,
+                                  refinement,
                                   "Scene/Two blocks/Lower subdivisions"),
                Point<dim>(),
                lower_size,
@@ -57,7 +242,7 @@ namespace tribos
       origin[dim - 1] = lower_size[dim - 1] + s.gap;
       make_box(upper,
                scaled_counts<dim>(s.upper_subdivisions,
-                                  p.refinement,
+                                  refinement,
                                   "Scene/Two blocks/Upper subdivisions"),
                origin,
                origin + upper_size,
@@ -99,18 +284,9 @@ namespace tribos
       }
     }
 
-
-
-    /**
-     * The Hertz indenter: lower half disc (2D) or the quarter x, y >= 0 of
-     * the lower half ball (3D), lowest point at height @p gap above y/z = 0.
-     * Ids: 10 curved surface, 11 flat top, 12 plane x = 0, 13 plane y = 0.
-     */
   } // namespace
 
-  const SceneRegistration
-    block_scene("block", &create_block<2>, &create_block<3>);
-  const SceneRegistration two_blocks_scene("two blocks",
-                                           &create_two_blocks<2>,
-                                           &create_two_blocks<3>);
+  const SceneRegistration block_scene = register_scene<BlockScene>("block");
+  const SceneRegistration two_blocks_scene =
+    register_scene<TwoBlocksScene>("two blocks");
 } // namespace tribos

@@ -3,6 +3,7 @@
  * (the paper's cylinder, structured or split-corner section).
  */
 
+#include <tribos/base/text.h>
 #include <tribos/scene/mesh_tools.h>
 #include <tribos/scene/scene.h>
 
@@ -11,6 +12,7 @@
 #include <deal.II/grid/manifold_lib.h>
 
 #include <cmath>
+#include <memory>
 
 namespace tribos
 {
@@ -18,6 +20,215 @@ namespace tribos
 
   namespace
   {
+    class CylinderOverBlockScene;
+    class CylinderCompressionScene;
+
+    template <int dim>
+    void
+    create_cylinder_over_block(const CylinderOverBlockScene &s,
+                               const unsigned int            refinement,
+                               Triangulation<dim>           &tria);
+
+    template <int dim>
+    void
+    create_cylinder_compression(const CylinderCompressionScene &s,
+                                const unsigned int              refinement,
+                                Triangulation<dim>             &tria);
+
+
+
+    /** Scene "cylinder over block": the lower half of a cylinder (2D) or a
+     * quarter of the lower hemisphere (3D) above a block, the Hertz geometry
+     * (subsection Scene/Cylinder over block). */
+    class CylinderOverBlockScene
+      : public SceneInBothDimensions<CylinderOverBlockScene>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Cylinder over block");
+        prm.declare_entry("Radius",
+                          "1",
+                          Patterns::Double(),
+                          "Indenter radius.");
+        prm.declare_entry("Gap",
+                          "0",
+                          Patterns::Double(0),
+                          "Distance between the indenter's lowest point and "
+                          "the block's top.");
+        prm.declare_entry("Block width",
+                          "4",
+                          Patterns::Double(),
+                          "2D: the block spans x in [-w/2, w/2]; 3D (quarter "
+                          "model): x, y in [0, w/2].");
+        prm.declare_entry("Block height",
+                          "2",
+                          Patterns::Double(),
+                          "Depth of the block below y = 0 (2D) or z = 0 (3D).");
+        prm.declare_entry("Block subdivisions",
+                          "8, 4",
+                          Patterns::Anything(),
+                          "Cells in the horizontal and the vertical direction "
+                          "(3D: both horizontal directions get the first).");
+        prm.declare_entry("Indenter refinements",
+                          "3",
+                          Patterns::Integer(0, 8),
+                          "Global refinements of the indenter's coarse mesh.");
+        prm.declare_entry("With block",
+                          "true",
+                          Patterns::Bool(),
+                          "false: the indenter alone (e.g. on a rigid plane).");
+        prm.declare_entry(
+          "Indenter shape",
+          "lower half",
+          Patterns::Selection("lower half|whole|meridian"),
+          "lower half: the lower half of the cylinder (2D) or a quarter of the "
+          "lower hemisphere (3D), loaded on its flat top (boundary 11). whole: "
+          "the whole disc (2D only), e.g. a body in flight. meridian: the half "
+          "disc x >= 0 (2D only), the meridian section of a whole sphere for "
+          "Finite element/Axisymmetric = true, its axis boundary 12. The "
+          "curved surface is boundary 10.");
+        prm.declare_entry("Contact refinements",
+                          "0",
+                          Patterns::Integer(0, 10),
+                          "Local refinements of the cells near the initial "
+                          "contact point (hanging nodes; curved boundary kept "
+                          "on its manifold).");
+        prm.declare_entry("Refinement radius",
+                          "0.25",
+                          Patterns::Double(0),
+                          "Cells that reach within this distance of the "
+                          "initial contact point (a vertex or the centre "
+                          "inside it), relative to the radius, are refined "
+                          "in every contact refinement.");
+        prm.leave_subsection();
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        prm.enter_subsection("Cylinder over block");
+        radius               = Text::positive(prm, "Radius");
+        gap                  = prm.get_double("Gap");
+        block_width          = Text::positive(prm, "Block width");
+        block_height         = Text::positive(prm, "Block height");
+        block_subdivisions   = Text::cell_counts(prm, "Block subdivisions");
+        indenter_refinements = prm.get_integer("Indenter refinements");
+        with_block           = prm.get_bool("With block");
+        indenter_shape       = prm.get("Indenter shape");
+        contact_refinements  = prm.get_integer("Contact refinements");
+        refinement_radius    = prm.get_double("Refinement radius");
+        AssertThrow(block_subdivisions.size() >= 2,
+                    dealii::ExcMessage(
+                      "Parameter <Scene/Cylinder over block/Block "
+                      "subdivisions> needs two values: horizontal, vertical."));
+        prm.leave_subsection();
+      }
+
+      /** The scene in dim dimensions. */
+      template <int dim>
+      void
+      build(const unsigned int refinement, Triangulation<dim> &tria) const
+      {
+        create_cylinder_over_block(*this, refinement, tria);
+      }
+
+      double                    radius;
+      double                    gap;
+      double                    block_width;
+      double                    block_height;
+      std::vector<unsigned int> block_subdivisions;
+      unsigned int              indenter_refinements;
+      bool                      with_block;
+      /** "lower half", "whole" or "meridian". */
+      std::string  indenter_shape;
+      unsigned int contact_refinements;
+      double       refinement_radius;
+    };
+
+
+
+    /** Scene "cylinder compression": one eighth of a cylinder (3D) or a quarter
+     * of its meridian section (2D), the paper's section 4.1 (subsection
+     * Scene/Cylinder compression). */
+    class CylinderCompressionScene
+      : public SceneInBothDimensions<CylinderCompressionScene>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Cylinder compression");
+        prm.declare_entry("Radius", "6.35", Patterns::Double(), "");
+        prm.declare_entry("Height",
+                          "12.7",
+                          Patterns::Double(),
+                          "Full height; the model holds the upper half.");
+        prm.declare_entry("Radial refinements",
+                          "2",
+                          Patterns::Integer(0, 8),
+                          "Refinements of the quarter-disc cross section.");
+        prm.declare_entry("Axial cells",
+                          "4",
+                          Patterns::Integer(1),
+                          "Cells over the half height before refinement "
+                          "(structured mesh only).");
+        prm.declare_entry(
+          "Mesh",
+          "structured",
+          Patterns::Selection("structured|split corner"),
+          "structured: the meridian section is a grid (2D: 2^r x axial "
+          "cells; 3D: quarter disc extruded), and the rim corner (top face "
+          "meets lateral face) is the corner of one cell, which goes flat "
+          "when the side folds onto the plate. split corner: the meridian "
+          "section is three blocks, each refined r times, two of which meet "
+          "at the rim corner along its bisector, so a fold opens each of "
+          "them to about 90 degrees; in 3D the outer 3/4 of the radius is "
+          "this section swept around the axis, the inner 1/4 a quarter disc "
+          "extruded (Axial cells unused).");
+        prm.declare_entry("Imperfection",
+                          "0",
+                          Patterns::Double(0, 0.5),
+                          "Relative reduction of the radius at the mid plane "
+                          "z = 0, decreasing linearly to 0 at z = h/2 (the "
+                          "necking bar's trigger: 0.018).");
+        prm.leave_subsection();
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        prm.enter_subsection("Cylinder compression");
+        radius             = Text::positive(prm, "Radius");
+        height             = Text::positive(prm, "Height");
+        radial_refinements = prm.get_integer("Radial refinements");
+        axial_cells        = prm.get_integer("Axial cells");
+        split_corner       = (prm.get("Mesh") == "split corner");
+        imperfection       = prm.get_double("Imperfection");
+        prm.leave_subsection();
+      }
+
+      /** The scene in dim dimensions. */
+      template <int dim>
+      void
+      build(const unsigned int refinement, Triangulation<dim> &tria) const
+      {
+        create_cylinder_compression(*this, refinement, tria);
+      }
+
+      double       radius;
+      double       height;
+      unsigned int radial_refinements;
+      unsigned int axial_cells;
+      /** Meridian section of three blocks, the rim corner split. */
+      bool split_corner;
+      /** Relative radius reduction at the mid plane (linear taper). */
+      double imperfection;
+    };
+
+
+
     template <int dim>
     void
     make_indenter(Triangulation<dim> &tria,
@@ -103,16 +314,16 @@ namespace tribos
 
     template <int dim>
     void
-    create_cylinder_over_block(const Parameters::Scene &p,
-                               Triangulation<dim>      &tria)
+    create_cylinder_over_block(const CylinderOverBlockScene &s,
+                               const unsigned int            refinement,
+                               Triangulation<dim>           &tria)
     {
-      const auto        &s = p.cylinder_over_block;
       Triangulation<dim> block, indenter;
 
       std::vector<unsigned int> counts(dim, s.block_subdivisions[0]);
       counts[dim - 1] = s.block_subdivisions[1];
       for (auto &n : counts)
-        n <<= p.refinement;
+        n <<= refinement;
       Point<dim> p1, p2;
       for (unsigned int d = 0; d < dim - 1; ++d)
       {
@@ -125,7 +336,7 @@ namespace tribos
       make_indenter(indenter,
                     s.radius,
                     s.gap,
-                    s.indenter_refinements + p.refinement,
+                    s.indenter_refinements + refinement,
                     s.indenter_shape);
       if (s.with_block)
         merge_bodies<dim>({&block, &indenter}, tria);
@@ -239,14 +450,14 @@ namespace tribos
      */
     template <int dim>
     void
-    create_cylinder_compression(const Parameters::Scene &p,
-                                Triangulation<dim>      &tria)
+    create_cylinder_compression(const CylinderCompressionScene &s,
+                                const unsigned int              refinement,
+                                Triangulation<dim>             &tria)
     {
-      const auto        &s           = p.cylinder_compression;
-      const unsigned int axial_cells = s.axial_cells << p.refinement;
+      const unsigned int axial_cells = s.axial_cells << refinement;
       const double       tolerance   = 1e-10 * s.radius;
 
-      const unsigned int n_refinements = s.radial_refinements + p.refinement;
+      const unsigned int n_refinements = s.radial_refinements + refinement;
       if (s.split_corner)
       {
         if constexpr (dim == 2)
@@ -350,12 +561,8 @@ namespace tribos
      */
   } // namespace
 
-  const SceneRegistration
-    cylinder_over_block_scene("cylinder over block",
-                              &create_cylinder_over_block<2>,
-                              &create_cylinder_over_block<3>);
-  const SceneRegistration
-    cylinder_compression_scene("cylinder compression",
-                               &create_cylinder_compression<2>,
-                               &create_cylinder_compression<3>);
+  const SceneRegistration cylinder_over_block_scene =
+    register_scene<CylinderOverBlockScene>("cylinder over block");
+  const SceneRegistration cylinder_compression_scene =
+    register_scene<CylinderCompressionScene>("cylinder compression");
 } // namespace tribos

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 namespace tribos
 {
@@ -16,9 +17,54 @@ namespace tribos
 
   namespace
   {
+    class GmshScene;
+
     template <int dim>
     void
-    read_gmsh(const Parameters::Scene &p, Triangulation<dim> &tria)
+    read_gmsh(const GmshScene    &p,
+              const unsigned int  refinement,
+              Triangulation<dim> &tria);
+
+
+
+    /** Scene "gmsh": a mesh file (entry Scene/Mesh file). */
+    class GmshScene : public SceneInBothDimensions<GmshScene>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Mesh file",
+                          "",
+                          Patterns::Anything(),
+                          "Gmsh .msh file for Name = gmsh: physical tags of "
+                          "cells become body ids, of faces boundary ids.");
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        mesh_file = prm.get("Mesh file");
+      }
+
+      /** The scene in dim dimensions. */
+      template <int dim>
+      void
+      build(const unsigned int refinement, Triangulation<dim> &tria) const
+      {
+        read_gmsh(*this, refinement, tria);
+      }
+
+      std::string mesh_file;
+    };
+
+
+
+    template <int dim>
+    void
+    read_gmsh(const GmshScene    &p,
+              const unsigned int  refinement,
+              Triangulation<dim> &tria)
     {
       AssertThrow(std::filesystem::is_regular_file(p.mesh_file),
                   ExcMessage("Parameter <Scene/Mesh file> = <" + p.mesh_file +
@@ -41,9 +87,9 @@ namespace tribos
                     "(transfinite, recombined, extruded) hexahedral mesh, "
                     "or 'Mesh.SubdivisionAlgorithm = 2;' (tetrahedra split "
                     "into hexahedra)."));
-      tria.refine_global(p.refinement);
+      tria.refine_global(refinement);
     }
   } // namespace
 
-  const SceneRegistration gmsh_scene("gmsh", &read_gmsh<2>, &read_gmsh<3>);
+  const SceneRegistration gmsh_scene = register_scene<GmshScene>("gmsh");
 } // namespace tribos

@@ -2,6 +2,7 @@
  * Scene "ring on foundation" (the paper's ring, 2D only).
  */
 
+#include <tribos/base/text.h>
 #include <tribos/scene/mesh_tools.h>
 #include <tribos/scene/scene.h>
 
@@ -9,6 +10,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
+#include <memory>
 
 namespace tribos
 {
@@ -16,14 +18,115 @@ namespace tribos
 
   namespace
   {
+    class RingOnFoundationScene;
+
     void
-    create_ring_on_foundation(const Parameters::Scene &p,
-                              Triangulation<2>        &tria)
+    create_ring_on_foundation(const RingOnFoundationScene &s,
+                              const unsigned int           refinement,
+                              Triangulation<2>            &tria);
+
+
+
+    /** Scene "ring on foundation": the lower half of a two-layer ring above a
+     * foundation block, the paper's section 4.2, 2D only (subsection Scene/Ring
+     * on foundation). */
+    class RingOnFoundationScene : public SceneGeometry
     {
-      const auto        &s        = p.ring_on_foundation;
-      const unsigned int n_radial = s.radial_cells_per_layer << p.refinement;
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Ring on foundation");
+        prm.declare_entry("Inner radius", "90", Patterns::Double(), "");
+        prm.declare_entry("Interface radius",
+                          "95",
+                          Patterns::Double(),
+                          "Radius between the inner (body 0) and the outer "
+                          "(body 1) layer.");
+        prm.declare_entry("Outer radius", "100", Patterns::Double(), "");
+        prm.declare_entry("Circumferential cells",
+                          "64",
+                          Patterns::Integer(2),
+                          "Cells along the half circumference.");
+        prm.declare_entry("Radial cells per layer", "1", Patterns::Integer(1));
+        prm.declare_entry("Foundation width", "260", Patterns::Double(), "");
+        prm.declare_entry("Foundation height", "50", Patterns::Double(), "");
+        prm.declare_entry("Foundation cells",
+                          "52, 10",
+                          Patterns::Anything(),
+                          "Cells in x and y of the foundation.");
+        prm.declare_entry("Gap",
+                          "20",
+                          Patterns::Double(0),
+                          "Distance between the ring's bottom and the "
+                          "foundation's top (y = 0).");
+        prm.declare_entry("Whole ring",
+                          "false",
+                          Patterns::Bool(),
+                          "false: the lower half ring of the paper (its ends, "
+                          "the cut at the centre height, are boundaries 2 and "
+                          "3); true: the whole ring, 2 x Circumferential cells "
+                          "around (no ends), e.g. for a ring dropped in "
+                          "dynamics.");
+        prm.leave_subsection();
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        prm.enter_subsection("Ring on foundation");
+        inner_radius           = Text::positive(prm, "Inner radius");
+        interface_radius       = Text::positive(prm, "Interface radius");
+        outer_radius           = Text::positive(prm, "Outer radius");
+        circumferential_cells  = prm.get_integer("Circumferential cells");
+        radial_cells_per_layer = prm.get_integer("Radial cells per layer");
+        foundation_width       = Text::positive(prm, "Foundation width");
+        foundation_height      = Text::positive(prm, "Foundation height");
+        foundation_cells       = Text::cell_counts(prm, "Foundation cells");
+        gap                    = prm.get_double("Gap");
+        whole_ring             = prm.get_bool("Whole ring");
+        AssertThrow(inner_radius < interface_radius &&
+                      interface_radius < outer_radius,
+                    dealii::ExcMessage(
+                      "Scene/Ring on foundation: need Inner radius < Interface "
+                      "radius < Outer radius."));
+        AssertThrow(foundation_cells.size() == 2,
+                    dealii::ExcMessage("Parameter <Scene/Ring on foundation/"
+                                       "Foundation cells> needs two values."));
+        prm.leave_subsection();
+      }
+
+      void
+      create(const unsigned int refinement,
+             Triangulation<2>  &tria) const override
+      {
+        create_ring_on_foundation(*this, refinement, tria);
+      }
+
+      double                    inner_radius;
+      double                    interface_radius;
+      double                    outer_radius;
+      unsigned int              circumferential_cells;
+      unsigned int              radial_cells_per_layer;
+      double                    foundation_width;
+      double                    foundation_height;
+      std::vector<unsigned int> foundation_cells;
+      double                    gap;
+      /** The whole ring instead of its lower half (dynamics: a ring in
+       * flight). */
+      bool whole_ring;
+    };
+
+
+
+    void
+    create_ring_on_foundation(const RingOnFoundationScene &s,
+                              const unsigned int           refinement,
+                              Triangulation<2>            &tria)
+    {
+      const unsigned int n_radial = s.radial_cells_per_layer << refinement;
       const unsigned int n_circumferential = s.circumferential_cells
-                                             << p.refinement;
+                                             << refinement;
 
       std::vector<std::vector<double>> steps(2);
       for (unsigned int i = 0; i < n_radial; ++i)
@@ -89,8 +192,8 @@ namespace tribos
 
       Triangulation<2> foundation;
       make_box(foundation,
-               {s.foundation_cells[0] << p.refinement,
-                s.foundation_cells[1] << p.refinement},
+               {s.foundation_cells[0] << refinement,
+                s.foundation_cells[1] << refinement},
                Point<2>(-0.5 * s.foundation_width, -s.foundation_height),
                Point<2>(0.5 * s.foundation_width, 0),
                2,
@@ -99,6 +202,6 @@ namespace tribos
     }
   } // namespace
 
-  const SceneRegistration
-    ring_scene("ring on foundation", &create_ring_on_foundation, nullptr);
+  const SceneRegistration ring_scene =
+    register_scene<RingOnFoundationScene>("ring on foundation");
 } // namespace tribos

@@ -8,18 +8,18 @@ namespace tribos
 {
   namespace
   {
-    struct Generators
+    struct Entry
     {
-      SceneGenerator<2> two   = nullptr;
-      SceneGenerator<3> three = nullptr;
+      SceneRegistration::Declare declare = nullptr;
+      SceneRegistration::Make    make    = nullptr;
     };
 
     /** The registered scenes, by name (built during static
      * initialization, hence a function-local static). */
-    std::map<std::string, Generators> &
+    std::map<std::string, Entry> &
     registry()
     {
-      static std::map<std::string, Generators> scenes;
+      static std::map<std::string, Entry> scenes;
       return scenes;
     }
   } // namespace
@@ -27,10 +27,10 @@ namespace tribos
 
 
   SceneRegistration::SceneRegistration(const std::string &name,
-                                       const SceneGenerator<2> two,
-                                       const SceneGenerator<3> three)
+                                       const Declare      declare,
+                                       const Make         make)
   {
-    registry()[name] = {two, three};
+    registry()[name] = {declare, make};
   }
 
 
@@ -39,9 +39,53 @@ namespace tribos
   scene_names()
   {
     std::vector<std::string> names;
-    for (const auto &[name, generators] : registry())
+    for (const auto &[name, entry] : registry())
       names.push_back(name);
     return names;
+  }
+
+
+
+  void
+  declare_scene_parameters(ParameterHandler &prm)
+  {
+    for (const auto &[name, entry] : registry())
+      entry.declare(prm);
+  }
+
+
+
+  std::shared_ptr<const SceneGeometry>
+  parse_scene(const std::string &name, ParameterHandler &prm)
+  {
+    const auto scene = registry().find(name);
+    AssertThrow(scene != registry().end(),
+                ExcMessage("Parameter <Scene/Name>: unknown scene <" + name +
+                           ">."));
+    std::shared_ptr<SceneGeometry> geometry = scene->second.make();
+    geometry->name                          = name;
+    geometry->parse_parameters(prm);
+    return geometry;
+  }
+
+
+
+  void
+  SceneGeometry::create(const unsigned int, Triangulation<2> &) const
+  {
+    AssertThrow(false,
+                ExcMessage("Parameter <Scene/Name> = <" + name +
+                           "> is a 3D scene: set Dimension = 3."));
+  }
+
+
+
+  void
+  SceneGeometry::create(const unsigned int, Triangulation<3> &) const
+  {
+    AssertThrow(false,
+                ExcMessage("Parameter <Scene/Name> = <" + name +
+                           "> is a 2D scene: set Dimension = 2."));
   }
 
 
@@ -89,35 +133,6 @@ namespace tribos
 
 
 
-  template <int dim>
-  void
-  create_scene(const Parameters::Scene &parameters,
-               Triangulation<dim>      &triangulation)
-  {
-    const auto scene = registry().find(parameters.name);
-    AssertThrow(scene != registry().end(),
-                ExcMessage("Parameter <Scene/Name>: unknown scene <" +
-                           parameters.name + ">."));
-    if constexpr (dim == 2)
-    {
-      AssertThrow(scene->second.two != nullptr,
-                  ExcMessage("Parameter <Scene/Name> = <" + parameters.name +
-                             "> is a 3D scene: set Dimension = 3."));
-      scene->second.two(parameters, triangulation);
-    }
-    else
-    {
-      AssertThrow(scene->second.three != nullptr,
-                  ExcMessage("Parameter <Scene/Name> = <" + parameters.name +
-                             "> is a 2D scene: set Dimension = 2."));
-      scene->second.three(parameters, triangulation);
-    }
-  }
-
-  template void
-  create_scene(const Parameters::Scene &, Triangulation<2> &);
-  template void
-  create_scene(const Parameters::Scene &, Triangulation<3> &);
   template void
   merge_bodies(const std::vector<const Triangulation<2> *> &,
                Triangulation<2> &);

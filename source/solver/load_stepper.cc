@@ -4,7 +4,6 @@
 #include <deal.II/base/timer.h>
 
 #include <algorithm>
-#include <iomanip>
 #include <sstream>
 
 namespace tribos
@@ -18,11 +17,35 @@ namespace tribos
 
 
 
+  IncrementReport
+  LoadStepper::solve_increment(IncrementalProblem             &problem,
+                               SolverObserver                 &observer,
+                               const double                    time,
+                               const NonlinearProblem::Vector *guess)
+  {
+    IncrementReport report = newton.solve(problem, observer, time, guess);
+    // Outer updates (Uzawa), each followed by a new solve of the same
+    // increment.
+    while (problem.outer_update(report))
+    {
+      const IncrementReport again = newton.solve(problem, observer, time);
+      report.n_iterations += again.n_iterations;
+      report.residual     = again.residual;
+      report.n_chattering = std::max(report.n_chattering, again.n_chattering);
+      report.stabilization_force = again.stabilization_force;
+      report.stabilization_ratio = again.stabilization_ratio;
+      report.n_relaxations += again.n_relaxations;
+    }
+    return report;
+  }
+
+
+
   void
-  LoadStepper::run(IncrementalProblem                             &problem,
-                   const std::function<void(const std::string &)> &print,
-                   const StepperState                             &start,
-                   const NonlinearProblem::Vector                 *start_change)
+  LoadStepper::run(IncrementalProblem             &problem,
+                   SolverObserver                 &observer,
+                   const StepperState             &start,
+                   const NonlinearProblem::Vector *start_change)
   {
     const auto  &ts           = parameters;
     const double nominal_step = ts.end_time / ts.n_steps;
@@ -71,7 +94,7 @@ namespace tribos
         Timer        increment_clock;
         try
         {
-          problem.begin_attempt(step, sums.n_increments + 1);
+          observer.attempt(step, sums.n_increments + 1, next);
           const NonlinearProblem::Vector *guess = nullptr;
           if (change_increment > 0 && !plain_start)
           {
@@ -79,20 +102,8 @@ namespace tribos
             predictor *= (next - time) / change_increment;
             guess = &predictor;
           }
-          IncrementReport report = newton.solve(problem, next, guess);
-          // Outer updates (Uzawa), each followed by a new solve of the
-          // same increment.
-          while (problem.outer_update(report))
-          {
-            const IncrementReport again = newton.solve(problem, next);
-            report.n_iterations += again.n_iterations;
-            report.residual = again.residual;
-            report.n_chattering =
-              std::max(report.n_chattering, again.n_chattering);
-            report.stabilization_force = again.stabilization_force;
-            report.stabilization_ratio = again.stabilization_ratio;
-            report.n_relaxations += again.n_relaxations;
-          }
+          IncrementReport report =
+            solve_increment(problem, observer, next, guess);
           problem.commit(next);
           plain_start = false;
           // Every linear solve since the last accepted increment: this
@@ -118,12 +129,12 @@ namespace tribos
           n_iterations_all += report.n_iterations_all;
           residual        = report.residual;
           cutbacks_in_row = 0;
-          problem.write_increment(step,
-                                  sums.n_increments,
-                                  time,
-                                  report,
-                                  n_cutbacks,
-                                  increment_clock.wall_time());
+          observer.increment_converged({step,
+                                        sums.n_increments,
+                                        time,
+                                        report,
+                                        n_cutbacks,
+                                        increment_clock.wall_time()});
           ++converged_in_row;
           if (report.n_iterations <= ts.easy_iterations ||
               (ts.growth_after > 0 && converged_in_row >= ts.growth_after))
@@ -145,9 +156,9 @@ namespace tribos
           if (change_increment > 0 && !plain_start)
           {
             plain_start = true;
-            print("  the extrapolated start did not converge (" +
-                  std::string(failure.what()) +
-                  "): the increment again from the converged state");
+            observer.message("  the extrapolated start did not converge (" +
+                             std::string(failure.what()) +
+                             "): the increment again from the converged state");
             continue;
           }
           ++n_cutbacks;
@@ -168,33 +179,31 @@ namespace tribos
               "step " + std::to_string(step) +
               " at t = " + to_scientific(next) + " " + reason + ": " +
               failure.what() + ". Outputs of the converged steps are kept.";
-            problem.failed(message);
+            observer.failed(message);
             throw NonConvergence(message);
           }
           std::ostringstream line;
           line << "  cutback " << cutbacks_in_row << " at t = " << next << " ("
                << failure.what() << "), new increment " << increment;
-          print(line.str());
+          observer.message(line.str());
         }
       }
 
       const double elapsed = wall_clock.wall_time();
-      const double eta = elapsed / (time - start.time) * (ts.end_time - time);
-      std::ostringstream line;
-      line << "step " << std::setw(4) << step << "/" << ts.n_steps
-           << "  t=" << std::setw(9) << std::setprecision(4) << time
-           << "  lf=" << std::fixed << std::setprecision(3)
-           << time / ts.end_time << std::defaultfloat << "  incr "
-           << n_increments << "  newton " << std::setw(3) << n_iterations
-           << " (all " << n_iterations_all << ")"
-           << "  |R|=" << std::scientific << std::setprecision(2) << residual
-           << std::defaultfloat << "  cutbacks " << n_cutbacks
-           << problem.step_status() << "  " << std::setprecision(3) << elapsed
-           << " s  ETA " << eta << " s";
-      print(line.str());
       progress =
         {step, time, increment, converged_in_row, sums, change_increment};
-      problem.end_step(step, time);
+      observer.step_completed(
+        {step,
+         ts.n_steps,
+         time,
+         time / ts.end_time,
+         n_increments,
+         n_iterations,
+         n_iterations_all,
+         residual,
+         n_cutbacks,
+         elapsed,
+         elapsed / (time - start.time) * (ts.end_time - time)});
     }
   }
 } // namespace tribos

@@ -59,8 +59,122 @@ namespace tribos
 
 
 
+  bool
+  NewtonSolver::update_converged(const NonlinearProblem::Norms &last,
+                                 const NonlinearProblem::Norms &before,
+                                 const NonlinearProblem::Norms &change,
+                                 const NonlinearProblem::Norms &floor,
+                                 const bool                     full_step,
+                                 const unsigned int             iteration) const
+  {
+    // The error of an iterate is the corrections still to come, not the
+    // one that led to it: where the last two (both after the first
+    // iteration, which carries the Dirichlet increment, the last one a full
+    // step) contract at a rate rho < 1/2, they sum to at most
+    // rho / (1 - rho) times the last. Testing the last correction itself
+    // cost one more iteration wherever Newton had converged (the paper's
+    // cylinder at 1.2M dofs: 7 of 25 steps).
+    const auto error = [&](const double now, const double earlier)
+    {
+      const double rho = now / earlier;
+      if (full_step && iteration >= 3 && earlier > 0 && rho < 0.5)
+        return rho / (1 - rho) * now;
+      return now;
+    };
+    const auto &p = parameters;
+    return (error(last.displacement, before.displacement) <=
+              p.increment_tolerance * change.displacement ||
+            change.displacement == 0) &&
+           error(last.multipliers, before.multipliers) <=
+             p.increment_tolerance * change.multipliers + floor.multipliers;
+  }
+
+
+
+  double
+  NewtonSolver::linear_tolerance(const Iterate &it,
+                                 const double   residual,
+                                 const double   force_scale) const
+  {
+    // Inexact Newton (Eisenstat and Walker's second choice) for iterative
+    // solves: the linear tolerance follows the decrease of the residual,
+    // eta = 0.9 (r_k / r_k-1)^2, kept above 0.9 eta_k-1^2 when that is
+    // large (no sudden oversolving) and above half of what the Newton test
+    // still asks (no solve beyond the tolerance), at most 1e-3 (0.1 in the
+    // quadratic range near the tolerance, below); the first iteration,
+    // which carries the Dirichlet increment, at 1e-4. The cap: contact
+    // changes the active set between iterations, and a loose direction
+    // costs Newton iterations that cost more than the Krylov iterations
+    // saved (3D Hertz, 121k unknowns: 23 Newton iterations and 34.7 s with
+    // 0.1, 15 and 27.4 s with 1e-3, 15 and 35.1 s with 1e-4, 13 and 43.7 s
+    // solving to 1e-10).
+    if (it.iteration == 0)
+      return 1e-4;
+    // previous[1]: the residual of the iteration before this one.
+    const double before = it.previous[1];
+    double       eta    = 0.9 * std::pow(residual / before, 2);
+    if (0.9 * it.previous_eta * it.previous_eta > 0.1)
+      eta = std::max(eta, 0.9 * it.previous_eta * it.previous_eta);
+    const double target =
+      parameters.residual_tolerance * std::max(it.reference, force_scale);
+    const double enough = 0.5 * target / residual;
+    eta                 = std::min(1e-3, std::max(eta, enough));
+    // In Newton's quadratic range (the last iteration took off two decades
+    // or more) near the tolerance the cap only oversolves: the solve that
+    // confirms a converged iterate's update needs its residual below half
+    // the tolerance, not a thousandth of itself (the 161k-dof cylinder: 37
+    // of each step's 120 GMRES iterations).
+    if (residual < 1e-2 * before)
+      eta = std::max(eta, std::min(0.1, enough));
+    // A stalled Newton step (the residual not halved) is the active set's
+    // doing, not the Krylov tolerance's: solve it tightly.
+    if (residual > 0.5 * before)
+      eta = std::min(eta, 1e-8);
+    return std::max(eta, 1e-12);
+  }
+
+
+
+  void
+  NewtonSolver::solve_linear(NonlinearProblem         &problem,
+                             SolverObserver           &observer,
+                             NonlinearProblem::Vector &update,
+                             const double              eta)
+  {
+    // Nonlinear solver/Tangent shift: a singular tangent (a body whose
+    // first iterate rests on one frictionless node turns freely) gets a
+    // defined solve, a regular one changes by the shift only.
+    if (parameters.tangent_shift > 0)
+    {
+      auto &matrix = problem.system_matrix();
+      for (const auto i : matrix.locally_owned_range_indices())
+        matrix.add(i, i, parameters.tangent_shift * matrix.diag_element(i));
+      matrix.compress(VectorOperation::add);
+    }
+    update = 0;
+    ++linear_solves;
+    linear_solver.solve(problem.system_matrix(),
+                        problem.pattern_version(),
+                        update,
+                        problem.system_rhs(),
+                        eta);
+    // A singular system can come back as NaN from a direct solver: say
+    // so, instead of letting the material report a NaN deformation.
+    if (!std::isfinite(update.l2_norm()))
+      throw NonConvergence("the linear solver (" + linear_solver.method() +
+                           ") returned a non-finite update (singular "
+                           "system?)");
+    // Each method once: frictional runs switch between Cholesky and LU
+    // as the tangent's symmetry comes and goes.
+    if (announced.insert(linear_solver.method()).second)
+      observer.message("  linear solver: " + linear_solver.method());
+  }
+
+
+
   IncrementReport
   NewtonSolver::solve(NonlinearProblem                     &problem,
+                      SolverObserver                       &observer,
                       const double                          time,
                       const NonlinearProblem::Vector *const predictor)
   {
@@ -78,57 +192,16 @@ namespace tribos
     const auto floor = problem.round_off_floor();
 
     IncrementReport report;
-    double          reference   = 0;
-    double          step_length = nan;
-    // The undamped Newton correction (a line search shortens the step
-    // taken, not the distance to the solution) and the update taken, per
-    // kind of unknown.
-    NonlinearProblem::Norms correction{nan, 0}, taken{nan, 0}, earlier{nan, 0};
-    double                  previous[2]  = {-1, -1};
-    double                  previous_eta = 0.1;
-    unsigned int            relaxed_at = 0, n_solves = 0;
-
-    // The update test. The error of an iterate is the corrections still
-    // to come, not the one that led to it: where the last two (both after
-    // the first iteration, which carries the Dirichlet increment, the
-    // last one a full step) contract at a rate rho < 1/2, they sum to at
-    // most rho / (1 - rho) times the last. Testing the last correction
-    // itself cost one more iteration wherever Newton had converged (the
-    // paper's cylinder at 1.2M dofs: 7 of 25 steps).
-    const auto update_test = [&](const NonlinearProblem::Norms &last,
-                                 const NonlinearProblem::Norms &before,
-                                 const NonlinearProblem::Norms &change,
-                                 const bool                     full_step,
-                                 const unsigned int             iteration)
-    {
-      const auto error = [&](const double now, const double earlier)
-      {
-        const double rho = now / earlier;
-        if (full_step && iteration >= 3 && earlier > 0 && rho < 0.5)
-          return rho / (1 - rho) * now;
-        return now;
-      };
-      return (error(last.displacement, before.displacement) <=
-                p.increment_tolerance * change.displacement ||
-              change.displacement == 0) &&
-             error(last.multipliers, before.multipliers) <=
-               p.increment_tolerance * change.multipliers + floor.multipliers;
-    };
-
+    Iterate         it;
     // The system at the current iterate where the line search assembled
     // it already (its full step, taken).
     std::optional<NonlinearProblem::Residual> assembled;
-    // Where the update about to be taken already passes the update test,
-    // the next iterate is likely the last: its residual is assembled
-    // first, the tangent only if Newton goes on. A converged increment's
-    // last tangent was never used (the 42k-dof cylinder: 25 of 103
-    // assemblies).
-    bool residual_first = false;
-    for (unsigned int iteration = 0;; ++iteration)
+    for (it.iteration = 0;; ++it.iteration)
     {
-      const bool first = (iteration == 0);
+      const unsigned int iteration = it.iteration;
+      const bool         first     = (iteration == 0);
       // (The line search assembles no tangent where residual_first is set.)
-      const bool with_matrix = !residual_first;
+      const bool with_matrix = !it.residual_first;
       const auto r =
         assembled ? *assembled : problem.assemble(with_matrix, first);
       assembled.reset();
@@ -140,47 +213,53 @@ namespace tribos
       // after the first solve (iteration 0 precedes the Dirichlet
       // increment and says nothing about the rate).
       double order = nan;
-      if (iteration >= 3 && previous[0] > 0 && previous[1] > 0 && r.free > 0 &&
-          previous[0] != previous[1])
-        order =
-          std::log(r.free / previous[0]) / std::log(previous[0] / previous[1]);
-      previous[1]        = previous[0];
-      previous[0]        = r.free;
-      const double scale = std::max(std::max(reference, r.free), r.force_scale);
-      problem.log_iteration(iteration,
-                            r.free,
-                            scale > 0 ? r.free / scale : 0.,
-                            taken.displacement,
-                            step_length,
-                            order);
+      if (iteration >= 3 && it.previous[0] > 0 && it.previous[1] > 0 &&
+          r.free > 0 && it.previous[0] != it.previous[1])
+        order = std::log(r.free / it.previous[0]) /
+                std::log(it.previous[0] / it.previous[1]);
+      it.previous[1] = it.previous[0];
+      it.previous[0] = r.free;
+      const double scale =
+        std::max(std::max(it.reference, r.free), r.force_scale);
+      observer.iteration({iteration,
+                          r.free,
+                          scale > 0 ? r.free / scale : 0.,
+                          it.taken.displacement,
+                          it.step_length,
+                          order});
 
       bool residual_converged = false;
       if (!first)
       {
         residual_converged =
-          r.free <= p.residual_tolerance * std::max(reference, r.force_scale) +
-                      p.absolute_residual_tolerance;
+          r.free <=
+          p.residual_tolerance * std::max(it.reference, r.force_scale) +
+            p.absolute_residual_tolerance;
         const auto change = problem.change_scale();
-        const bool update_converged =
-          update_test(taken, earlier, change, step_length == 1, iteration);
         // Round-off stagnation: accepted only below the stated bound.
         const bool stagnated =
-          correction.displacement <= 1e-12 * change.displacement &&
-          correction.multipliers <=
+          it.correction.displacement <= 1e-12 * change.displacement &&
+          it.correction.multipliers <=
             1e-12 * change.multipliers + floor.multipliers &&
           r.free <= problem.stagnation_residual_bound();
-        if ((residual_converged && update_converged) || stagnated)
+        if ((residual_converged && update_converged(it.taken,
+                                                    it.earlier,
+                                                    change,
+                                                    floor,
+                                                    it.step_length == 1,
+                                                    iteration)) ||
+            stagnated)
         {
           report.residual = r.free;
           if (problem.at_convergence(report) ==
               NonlinearProblem::Verdict::accept)
           {
-            report.n_iterations = n_solves;
+            report.n_iterations = it.n_solves;
             return report;
           }
-          relaxed_at     = iteration;
-          reference      = 0;
-          residual_first = false;
+          it.relaxed_at     = iteration;
+          it.reference      = 0;
+          it.residual_first = false;
           continue;
         }
         // The limit counts the iterations that still reduce the residual:
@@ -188,123 +267,66 @@ namespace tribos
         // solve that confirms its update (two at most), instead of a
         // cutback of a converged increment (3D Hertz, 226k unknowns: cut
         // back at |R| = 2e-15 relative in the 20th iteration).
-        if (iteration - relaxed_at >=
+        if (iteration - it.relaxed_at >=
             p.max_iterations + (residual_converged ? 2 : 0))
           throw NonConvergence("Newton did not converge in " +
-                               std::to_string(iteration - relaxed_at) +
+                               std::to_string(iteration - it.relaxed_at) +
                                " iterations (|R| = " + to_scientific(r.free) +
                                "; Nonlinear solver/Maximum iterations)");
       }
-      reference = std::max(reference, r.free);
+      it.reference = std::max(it.reference, r.free);
       if (!with_matrix)
         problem.assemble(true, first);
 
       if (p.check_tangent && !first)
       {
-        problem.message("  tangent check, iteration " +
-                        std::to_string(iteration) + ": relative error " +
-                        to_scientific(problem.tangent_error()));
+        observer.message("  tangent check, iteration " +
+                         std::to_string(iteration) + ": relative error " +
+                         to_scientific(problem.tangent_error()));
         problem.assemble(true, first);
       }
 
-      // Inexact Newton (Eisenstat and Walker's second choice) for
-      // iterative solves: the linear tolerance follows the decrease of the
-      // residual, eta = 0.9 (r_k / r_k-1)^2, kept above 0.9 eta_k-1^2 when
-      // that is large (no sudden oversolving) and above half of what the
-      // Newton test still asks (no solve beyond the tolerance), at most
-      // 1e-3 (0.1 in the quadratic range near the tolerance, below); the
-      // first iteration, which carries the Dirichlet increment, at 1e-4.
-      // The cap: contact changes the active set between iterations, and a
-      // loose direction costs Newton iterations that cost
-      // more than the Krylov iterations saved (3D Hertz, 121k unknowns:
-      // 23 Newton iterations and 34.7 s with 0.1, 15 and 27.4 s with 1e-3,
-      // 15 and 35.1 s with 1e-4, 13 and 43.7 s solving to 1e-10).
       double eta = 0;
       if (linear_solver.iterative(problem.system_matrix()))
       {
-        if (first)
-          eta = 1e-4;
-        else
-        {
-          // previous[1]: the residual of the iteration before this one.
-          eta = 0.9 * std::pow(r.free / previous[1], 2);
-          if (0.9 * previous_eta * previous_eta > 0.1)
-            eta = std::max(eta, 0.9 * previous_eta * previous_eta);
-          const double target =
-            p.residual_tolerance * std::max(reference, r.force_scale);
-          const double enough = 0.5 * target / r.free;
-          eta                 = std::min(1e-3, std::max(eta, enough));
-          // In Newton's quadratic range (the last iteration took off two
-          // decades or more) near the tolerance the cap only oversolves:
-          // the solve that confirms a converged iterate's update needs its
-          // residual below half the tolerance, not a thousandth of itself
-          // (the 161k-dof cylinder: 37 of each step's 120 GMRES iterations).
-          if (r.free < 1e-2 * previous[1])
-            eta = std::max(eta, std::min(0.1, enough));
-          // A stalled Newton step (the residual not halved) is the active
-          // set's doing, not the Krylov tolerance's: solve it tightly.
-          if (r.free > 0.5 * previous[1])
-            eta = std::min(eta, 1e-8);
-          eta = std::max(eta, 1e-12);
-        }
-        previous_eta = eta;
+        eta             = linear_tolerance(it, r.free, r.force_scale);
+        it.previous_eta = eta;
       }
-
-      // Nonlinear solver/Tangent shift: a singular tangent (a body whose
-      // first iterate rests on one frictionless node turns freely) gets a
-      // defined solve, a regular one changes by the shift only.
-      if (p.tangent_shift > 0)
-      {
-        auto &matrix = problem.system_matrix();
-        for (const auto i : matrix.locally_owned_range_indices())
-          matrix.add(i, i, p.tangent_shift * matrix.diag_element(i));
-        matrix.compress(VectorOperation::add);
-      }
-      update = 0;
-      ++linear_solves;
-      ++n_solves;
-      linear_solver.solve(problem.system_matrix(),
-                          problem.pattern_version(),
-                          update,
-                          problem.system_rhs(),
-                          eta);
-      // A singular system can come back as NaN from a direct solver: say
-      // so, instead of letting the material report a NaN deformation.
-      if (!std::isfinite(update.l2_norm()))
-        throw NonConvergence("the linear solver (" + linear_solver.method() +
-                             ") returned a non-finite update (singular "
-                             "system?)");
-      // Each method once: frictional runs switch between Cholesky and LU
-      // as the tangent's symmetry comes and goes.
-      if (announced.insert(linear_solver.method()).second)
-        problem.message("  linear solver: " + linear_solver.method());
+      solve_linear(problem, observer, update, eta);
+      ++it.n_solves;
       problem.distribute(update, first);
 
       // No line search on the first iteration (it carries the Dirichlet
       // increment) nor once the residual is at its tolerance (only the
       // update is still too large): there is nothing left to decrease.
       const auto next_correction = problem.norms(update);
-      // (The change so far before this update: near convergence the same.)
-      residual_first = !first && update_test(next_correction,
-                                             correction,
-                                             problem.change_scale(),
-                                             true,
-                                             iteration + 1);
-      step_length    = 1;
+      // Where the update about to be taken already passes the update test,
+      // the next iterate is likely the last: its residual is assembled
+      // first, the tangent only if Newton goes on. A converged increment's
+      // last tangent was never used (the 42k-dof cylinder: 25 of 103
+      // assemblies). (The change so far before this update: near
+      // convergence the same.)
+      it.residual_first = !first && update_converged(next_correction,
+                                                     it.correction,
+                                                     problem.change_scale(),
+                                                     floor,
+                                                     true,
+                                                     iteration + 1);
+      it.step_length    = 1;
       if (p.line_search && !first && !residual_converged)
-        step_length =
-          line_search(problem, update, r.free, !residual_first, assembled);
+        it.step_length =
+          line_search(problem, update, r.free, !it.residual_first, assembled);
       else
       {
         problem.solution().add(1., update);
         problem.solution_changed();
       }
       // A shortened step is not the one the test was passed by.
-      residual_first     = residual_first && step_length == 1;
-      earlier            = correction;
-      correction         = next_correction;
-      taken.displacement = step_length * correction.displacement;
-      taken.multipliers  = step_length * correction.multipliers;
+      it.residual_first     = it.residual_first && it.step_length == 1;
+      it.earlier            = it.correction;
+      it.correction         = next_correction;
+      it.taken.displacement = it.step_length * it.correction.displacement;
+      it.taken.multipliers  = it.step_length * it.correction.multipliers;
     }
   }
 } // namespace tribos

@@ -1,6 +1,8 @@
 #ifndef tribos_base_text_h
 #define tribos_base_text_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <string>
 #include <vector>
 
@@ -35,6 +37,18 @@ namespace tribos
     /** Like parse_doubles() for non-negative integers. */
     std::vector<unsigned int>
     parse_unsigned(const std::string &text, const std::string &entry);
+
+    /** The double entry @p entry of @p prm, which must be > 0. */
+    double
+    positive(dealii::ParameterHandler &prm, const std::string &entry);
+
+    /** The list entry @p entry of @p prm, every value > 0. */
+    std::vector<double>
+    positive_list(dealii::ParameterHandler &prm, const std::string &entry);
+
+    /** The list of cell counts @p entry of @p prm, every one >= 1. */
+    std::vector<unsigned int>
+    cell_counts(dealii::ParameterHandler &prm, const std::string &entry);
   } // namespace Text
 } // namespace tribos
 

@@ -165,6 +165,25 @@ namespace tribos
       }
     };
 
+    /** The oriented faces of the own cells of @p dof_handler on the
+     * surface, gathered from every process in CellId order. Collective. */
+    std::vector<FaceRecord>
+    gather_faces(const DoFHandler<dim> &dof_handler) const;
+
+    /** The faces and their nodes from @p records. */
+    void
+    number_nodes(const std::vector<FaceRecord> &records);
+
+    /** The nodes' faces, tributary areas (@p axisymmetric: of the surface
+     * of revolution) and element sizes. */
+    void
+    integrate_areas(const bool axisymmetric);
+
+    /** The faces' neighbours, the edges where the surface continues, and
+     * (2D) the nodes beyond a face's ends. */
+    void
+    find_neighbours();
+
     std::set<types::boundary_id> ids;
     std::vector<Node>            node_list;
     std::vector<Face>            face_list;

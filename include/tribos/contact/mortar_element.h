@@ -214,34 +214,6 @@ namespace tribos
       return static_cast<unsigned int>(list.size() - 1);
     }
 
-    /**
-     * The end of every mortar element (2D and 3D): from the node's weights
-     * @p D (on the @p n_s slave nodes @p xs, at the last converged step
-     * @p xs_old) and @p M (on the @p n_m master nodes @p xm, @p xm_old) and
-     * the unnormalized nodal normal @p normal_j (out of the slave), the
-     * weight w_j = sum D, the weighted gap and slip, and the enforcement's
-     * rows through finish_weighted(); @p paired, @p weighted_point as in
-     * Mortar2D::evaluate().
-     */
-    template <int dim>
-    ContactPointResult
-    finish_mortar(const SlaveInput       &slave,
-                  const Enforcement<dim> &enforcement,
-                  const ContactAD        *D,
-                  const Vec3<ContactAD>  *xs,
-                  const Vec3<double>     *xs_old,
-                  const unsigned int      n_s,
-                  const ContactAD        *M,
-                  const Vec3<ContactAD>  *xm,
-                  const Vec3<double>     *xm_old,
-                  const unsigned int      n_m,
-                  Vec3<ContactAD>         normal_j,
-                  const double            min_weight,
-                  const unsigned int      n_displacements,
-                  double                 *R,
-                  double                 *K,
-                  bool                   &paired,
-                  Vec3<double>           &weighted_point);
   } // namespace internal
 } // namespace tribos
 

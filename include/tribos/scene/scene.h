@@ -1,10 +1,10 @@
 #ifndef tribos_scene_scene_h
 #define tribos_scene_scene_h
 
-#include <tribos/parameters/scene.h>
-
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,44 +12,115 @@ namespace tribos
 {
   using namespace dealii;
 
-  /** A scene generator: builds the scene of @p parameters into an empty
-   * triangulation. */
-  template <int dim>
-  using SceneGenerator = void (*)(const Parameters::Scene &parameters,
-                                  Triangulation<dim>      &triangulation);
+  /**
+   * A scene: a geometry generator that declares and reads its own
+   * parameters (a subsection of Scene, or entries of Scene itself) and
+   * builds its bodies into a triangulation. Every scene file in
+   * source/scene/ defines one and registers it with a SceneRegistration
+   * (ASPECT's plugin shape): adding a scene touches its own file only.
+   *
+   * All bodies live in one triangulation: the material_id of a cell is its
+   * body id, boundary faces carry the boundary ids documented per scene in
+   * the README. Separately generated bodies never share vertices, so they
+   * interact only through contact (regions of one generated body, like
+   * the two ring layers, are bonded). Curved geometry is refined on its
+   * exact manifold before the bodies are merged; the merged mesh is then
+   * flat (no manifolds needed afterwards).
+   */
+  class SceneGeometry
+  {
+  public:
+    virtual ~SceneGeometry() = default;
+
+    /** Read the scene's parameters (@p prm inside the subsection Scene). */
+    virtual void
+    parse_parameters(ParameterHandler &prm) = 0;
+
+    /**
+     * Build the scene with Scene/Refinement = @p refinement into the empty
+     * @p triangulation; the default refuses: the scene does not exist in
+     * that dimension.
+     */
+    virtual void
+    create(const unsigned int refinement,
+           Triangulation<2>  &triangulation) const;
+    virtual void
+    create(const unsigned int refinement,
+           Triangulation<3>  &triangulation) const;
+
+    /** The scene's Scene/Name. */
+    std::string name;
+  };
+
+
 
   /**
    * Registers a scene under its Scene/Name: every scene file defines one
-   * such object (static), so adding a scene touches its own file and its
-   * parameters (a subsection in parameters/scene.h), nothing else. A null
-   * generator: the scene does not exist in that dimension.
+   * such object (static) with the function that declares its parameters
+   * and the one that makes the scene.
    */
   struct SceneRegistration
   {
-    SceneRegistration(const std::string      &name,
-                      const SceneGenerator<2> two,
-                      const SceneGenerator<3> three);
+    using Declare = void (*)(ParameterHandler &);
+    using Make    = std::unique_ptr<SceneGeometry> (*)();
+
+    SceneRegistration(const std::string &name,
+                      const Declare      declare,
+                      const Make         make);
   };
+
+  /**
+   * A scene whose generator is the member template
+   * build<dim>(refinement, triangulation) of @p Scene, in 2D and 3D.
+   */
+  template <class Scene>
+  class SceneInBothDimensions : public SceneGeometry
+  {
+  public:
+    void
+    create(const unsigned int refinement,
+           Triangulation<2>  &triangulation) const override
+    {
+      static_cast<const Scene &>(*this).build(refinement, triangulation);
+    }
+
+    void
+    create(const unsigned int refinement,
+           Triangulation<3>  &triangulation) const override
+    {
+      static_cast<const Scene &>(*this).build(refinement, triangulation);
+    }
+  };
+
+
+
+  /** The registration of @p Scene (with a static declare_parameters() and
+   * a default constructor) under @p name. */
+  template <class Scene>
+  SceneRegistration
+  register_scene(const std::string &name)
+  {
+    return SceneRegistration(name,
+                             &Scene::declare_parameters,
+                             []() -> std::unique_ptr<SceneGeometry>
+                             { return std::make_unique<Scene>(); });
+  }
+
+
 
   /** The registered scenes' names, sorted. */
   std::vector<std::string>
   scene_names();
 
-  /**
-   * Build the scene named in @p parameters into @p triangulation (which
-   * must be empty). All bodies live in this one triangulation: the
-   * material_id of a cell is its body id, boundary faces carry the boundary
-   * ids documented per scene in the README. Separately generated bodies
-   * never share vertices, so they interact only through contact (regions
-   * of one generated body, like the two ring layers, are bonded).
-   *
-   * Curved geometry is refined on its exact manifold before the bodies are
-   * merged; the merged mesh is then flat (no manifolds needed afterwards).
-   */
-  template <int dim>
+  /** Declare every registered scene's parameters (@p prm inside the
+   * subsection Scene). */
   void
-  create_scene(const Parameters::Scene &parameters,
-               Triangulation<dim>      &triangulation);
+  declare_scene_parameters(ParameterHandler &prm);
+
+  /** The scene called @p name with its parameters from @p prm (inside the
+   * subsection Scene). */
+  std::shared_ptr<const SceneGeometry>
+  parse_scene(const std::string &name, ParameterHandler &prm);
 
   /**
    * Merge the active cells of @p bodies into @p result without merging any

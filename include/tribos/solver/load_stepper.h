@@ -4,8 +4,8 @@
 #include <tribos/parameters/time_stepping.h>
 #include <tribos/solver/newton_solver.h>
 #include <tribos/solver/nonlinear_problem.h>
+#include <tribos/solver/solver_observer.h>
 
-#include <functional>
 #include <string>
 
 namespace tribos
@@ -17,13 +17,6 @@ namespace tribos
   class IncrementalProblem : public NonlinearProblem
   {
   public:
-    /** The next solve is an attempt at increment @p increment (counted
-     * over the run) of nominal step @p step (for the problem's logs). */
-    virtual void
-    begin_attempt(const unsigned int /*step*/, const unsigned int /*increment*/)
-    {
-    }
-
     /** Make the converged increment ending at @p time the history. */
     virtual void
     commit(const double time) = 0;
@@ -45,30 +38,6 @@ namespace tribos
     {
       return false;
     }
-
-    /** A converged increment: one row of history.csv. */
-    virtual void
-    write_increment(const unsigned int     step,
-                    const unsigned int     increment,
-                    const double           time,
-                    const IncrementReport &report,
-                    const unsigned int     n_cutbacks,
-                    const double           wall_time) = 0;
-
-    /** Extra text for the console line of a nominal step. */
-    virtual std::string
-    step_status() const
-    {
-      return "";
-    }
-
-    /** The end of nominal @p step at @p time (output). */
-    virtual void
-    end_step(const unsigned int step, const double time) = 0;
-
-    /** The run stops: cutbacks exhausted (@p message says why). */
-    virtual void
-    failed(const std::string &message) = 0;
   };
 
 
@@ -124,13 +93,15 @@ namespace tribos
     /**
      * Run every nominal step after @p start (a restart's state, with the
      * change of its last increment @p start_change if it has one; by
-     * default the beginning); throws NonConvergence when it stops.
+     * default the beginning), telling @p observer what happens; throws
+     * NonConvergence when it stops. state() is that of the step when
+     * @p observer hears of its end.
      */
     void
-    run(IncrementalProblem                             &problem,
-        const std::function<void(const std::string &)> &print,
-        const StepperState                             &start        = {},
-        const NonlinearProblem::Vector                 *start_change = nullptr);
+    run(IncrementalProblem             &problem,
+        SolverObserver                 &observer,
+        const StepperState             &start        = {},
+        const NonlinearProblem::Vector *start_change = nullptr);
 
     /** The change of the unknowns over the last converged increment (for a
      * checkpoint; meaningful where state().change_increment > 0). */
@@ -155,6 +126,14 @@ namespace tribos
     }
 
   private:
+    /** Solve the increment ending at @p time from the current solution
+     * plus @p guess, with the outer updates (Uzawa) the problem asks. */
+    IncrementReport
+    solve_increment(IncrementalProblem             &problem,
+                    SolverObserver                 &observer,
+                    const double                    time,
+                    const NonlinearProblem::Vector *guess);
+
     const Parameters::TimeStepping &parameters;
     NewtonSolver                   &newton;
     StepperTotals                   sums;

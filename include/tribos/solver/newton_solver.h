@@ -4,7 +4,9 @@
 #include <tribos/parameters/nonlinear_solver.h>
 #include <tribos/solver/linear_solver.h>
 #include <tribos/solver/nonlinear_problem.h>
+#include <tribos/solver/solver_observer.h>
 
+#include <limits>
 #include <optional>
 #include <set>
 #include <string>
@@ -38,9 +40,11 @@ namespace tribos
                  LinearSolver                      &linear_solver);
 
     /** Solve the increment that ends at @p time, starting from the
-     * current solution plus @p predictor (if given). */
+     * current solution plus @p predictor (if given); every iteration and
+     * message goes to @p observer. */
     IncrementReport
     solve(NonlinearProblem                     &problem,
+          SolverObserver                       &observer,
           const double                          time,
           const NonlinearProblem::Vector *const predictor = nullptr);
 
@@ -52,6 +56,63 @@ namespace tribos
     }
 
   private:
+    /** Where the iterations of one solve stand. */
+    struct Iterate
+    {
+      unsigned int iteration = 0;
+      /** The largest free residual since the last relaxation (the scale
+       * of the relative residual test). */
+      double reference = 0;
+      /** The line search's step length of the last update. */
+      double step_length = std::numeric_limits<double>::quiet_NaN();
+      /** The undamped Newton correction (a line search shortens the step
+       * taken, not the distance to the solution), the one before, and the
+       * update taken, per kind of unknown. */
+      NonlinearProblem::Norms correction{
+        std::numeric_limits<double>::quiet_NaN(),
+        0},
+        earlier{std::numeric_limits<double>::quiet_NaN(), 0},
+        taken{std::numeric_limits<double>::quiet_NaN(), 0};
+      /** The free residuals of the last two iterations. */
+      double previous[2] = {-1, -1};
+      /** The last linear tolerance of inexact Newton. */
+      double previous_eta = 0.1;
+      /** The iteration the problem last asked for more (its budget starts
+       * there), and the linear solves of this solve. */
+      unsigned int relaxed_at = 0, n_solves = 0;
+      /** Assemble the residual first, the tangent only if Newton goes on
+       * (the update about to be taken passes the update test). */
+      bool residual_first = false;
+    };
+
+    /**
+     * The update test: the corrections still to come after @p last (the
+     * one before it @p before) are below Increment tolerance of @p change,
+     * per kind of unknown (multipliers with their round-off @p floor).
+     */
+    bool
+    update_converged(const NonlinearProblem::Norms &last,
+                     const NonlinearProblem::Norms &before,
+                     const NonlinearProblem::Norms &change,
+                     const NonlinearProblem::Norms &floor,
+                     const bool                     full_step,
+                     const unsigned int             iteration) const;
+
+    /** The relative tolerance of an iterative linear solve at @p it with
+     * free residual @p residual (inexact Newton). */
+    double
+    linear_tolerance(const Iterate &it,
+                     const double   residual,
+                     const double   force_scale) const;
+
+    /** Solve the problem's system for @p update to @p eta (0: direct);
+     * throws NonConvergence on a non-finite update. */
+    void
+    solve_linear(NonlinearProblem         &problem,
+                 SolverObserver           &observer,
+                 NonlinearProblem::Vector &update,
+                 const double              eta);
+
     /**
      * Backtracking from the current iterate along @p update until the
      * residual has fallen by the Armijo factor (or the halvings run out);

@@ -166,19 +166,6 @@ namespace tribos
      * residual at the current iterate (Nonlinear solver/Check tangent). */
     virtual double
     tangent_error() = 0;
-
-    /** One row of convergence.csv. */
-    virtual void
-    log_iteration(const unsigned int iteration,
-                  const double       residual,
-                  const double       relative_residual,
-                  const double       update_norm,
-                  const double       step_length,
-                  const double       order) = 0;
-
-    /** Print a message to the console (rank 0). */
-    virtual void
-    message(const std::string &text) = 0;
   };
 } // namespace tribos
 

@@ -1,4 +1,5 @@
-#include <tribos/core/problem.h>
+#include <tribos/core/vector_function.h>
+#include <tribos/postprocess/run_output.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -7,6 +8,8 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <iomanip>
+#include <iostream>
 #include <limits>
 #include <sstream>
 
@@ -53,8 +56,44 @@ namespace tribos
 
 
   template <int dim>
+  RunOutput<dim>::RunOutput(const Problem<dim> &problem, TimerOutput &timer)
+    : problem(problem)
+    , parameters(problem.get_parameters())
+    , mpi_communicator(problem.communicator())
+    , timer(timer)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+  {
+    if (problem.contact() != nullptr)
+      contact_output = std::make_unique<ContactOutput<dim>>(*problem.contact());
+    if (!parameters.verification.exact_displacement.empty())
+      exact_displacement =
+        make_vector_function<dim>(parameters.verification.exact_displacement,
+                                  "Verification/Exact displacement");
+  }
+
+
+
+  template <int dim>
   void
-  Problem<dim>::open_output()
+  RunOutput<dim>::print(const std::string &line)
+  {
+    pcout << line << std::endl;
+  }
+
+
+
+  template <int dim>
+  void
+  RunOutput<dim>::message(const std::string &text)
+  {
+    print(text);
+  }
+
+
+
+  template <int dim>
+  void
+  RunOutput<dim>::open(const Checkpoint *restart)
   {
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
     const std::string dir = parameters.output.directory;
@@ -95,6 +134,41 @@ namespace tribos
         }
       });
 
+    const std::vector<std::string> columns = history_columns();
+    if (restart != nullptr)
+      records = restart->pvd_records;
+    // A restart continues the earlier run's files after its checkpoint.
+    const long keep = restart ? long(restart->stepper.totals.n_increments) : -1;
+    on_every_process(mpi_communicator,
+                     [&]()
+                     {
+                       history_csv =
+                         std::make_unique<CsvWriter>(dir + "/history.csv",
+                                                     columns,
+                                                     root,
+                                                     keep);
+                       convergence_csv = std::make_unique<CsvWriter>(
+                         dir + "/convergence.csv",
+                         std::vector<std::string>{"step",
+                                                  "increment",
+                                                  "time",
+                                                  "iteration",
+                                                  "residual",
+                                                  "relative_residual",
+                                                  "update_norm",
+                                                  "line_search_step",
+                                                  "order"},
+                         root,
+                         keep);
+                     });
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  RunOutput<dim>::history_columns()
+  {
     std::vector<std::string> columns = {"step",
                                         "increment",
                                         "time",
@@ -140,7 +214,7 @@ namespace tribos
       };
       std::pair<Key, std::array<types::global_dof_index, dim>> best;
       best.first.fill(std::numeric_limits<double>::max());
-      for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto v : cell->vertex_indices())
             if (const Key key = key_of(cell, v); key < best.first)
@@ -156,14 +230,15 @@ namespace tribos
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back("probe" + std::to_string(k) + "_u" + axis[d]);
     }
-    if (contact)
+    if (contact_output)
     {
       for (const auto &name : contact_output->column_names())
         columns.push_back(name);
       columns.push_back("augmentations");
       columns.push_back("chattering_nodes");
     }
-    if (integrator)
+    if (problem.dynamics() != nullptr)
+    {
       for (const char *name : {"kinetic_energy",
                                "strain_energy",
                                "internal_work",
@@ -173,71 +248,31 @@ namespace tribos
                                "total_energy",
                                "energy_error"})
         columns.push_back(name);
-    if (integrator)
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back(std::string("momentum_") + "xyz"[d]);
+    }
     if (parameters.nonlinear_solver.stabilization > 0)
     {
       columns.push_back("stabilization_force");
       columns.push_back("stabilization_ratio");
       columns.push_back("stabilization_relaxations");
     }
-    // A restart continues the earlier run's files after its checkpoint.
-    const long keep = restart ? long(restart->stepper.totals.n_increments) : -1;
-    on_every_process(mpi_communicator,
-                     [&]()
-                     {
-                       history_csv =
-                         std::make_unique<CsvWriter>(dir + "/history.csv",
-                                                     columns,
-                                                     root,
-                                                     keep);
-                       convergence_csv = std::make_unique<CsvWriter>(
-                         dir + "/convergence.csv",
-                         std::vector<std::string>{"step",
-                                                  "increment",
-                                                  "time",
-                                                  "iteration",
-                                                  "residual",
-                                                  "relative_residual",
-                                                  "update_norm",
-                                                  "line_search_step",
-                                                  "order"},
-                         root,
-                         keep);
-                     });
-  }
-
-
-
-  template <int dim>
-  std::vector<double>
-  Problem<dim>::reaction_forces() const
-  {
-    std::vector<double> forces;
-    for (const auto &per_component : reaction_dofs)
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        double sum = 0;
-        for (const auto dof : per_component[d])
-          if (locally_owned_dofs.is_element(dof))
-            sum += full_residual[dof] + (integrator ? inertia_forces[dof] : 0.);
-        forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
-      }
-    return forces;
+    return columns;
   }
 
 
 
   template <int dim>
   std::pair<double, double>
-  Problem<dim>::displacement_errors(const double time) const
+  RunOutput<dim>::displacement_errors(const double time) const
   {
+    const auto &dof_handler   = problem.get_dof_handler();
+    const auto &triangulation = problem.get_triangulation();
     exact_displacement->set_time(time);
     const QGauss<dim> error_quadrature(parameters.finite_element.degree + 3);
     dealii::Vector<float> cellwise(triangulation.n_active_cells());
     VectorTools::integrate_difference(dof_handler,
-                                      ghosted_displacement(),
+                                      problem.displacement(),
                                       *exact_displacement,
                                       cellwise,
                                       error_quadrature,
@@ -246,7 +281,7 @@ namespace tribos
                                                         cellwise,
                                                         VectorTools::L2_norm);
     VectorTools::integrate_difference(dof_handler,
-                                      ghosted_displacement(),
+                                      problem.displacement(),
                                       *exact_displacement,
                                       cellwise,
                                       error_quadrature,
@@ -262,25 +297,52 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::write_increment(const unsigned int     step,
-                                const unsigned int     increment,
-                                const double           time,
-                                const IncrementReport &report,
-                                const unsigned int     n_cutbacks,
-                                const double           wall_time)
+  RunOutput<dim>::attempt(const unsigned int step,
+                          const unsigned int increment,
+                          const double       time)
   {
-    // full_residual holds R at the converged state: the last assembly was
-    // the one that found convergence.
-    std::vector<double> row = {double(step),
-                               double(increment),
-                               time,
-                               time / parameters.time_stepping.end_time,
-                               double(report.n_iterations),
-                               double(report.n_iterations_all),
-                               report.residual,
-                               double(n_cutbacks),
-                               wall_time};
-    for (const double f : reaction_forces())
+    current_step      = step;
+    current_increment = increment;
+    current_time      = time;
+  }
+
+
+
+  template <int dim>
+  void
+  RunOutput<dim>::iteration(const IterationRecord &r)
+  {
+    convergence_csv->add_row({double(current_step),
+                              double(current_increment),
+                              current_time,
+                              double(r.iteration),
+                              r.residual,
+                              r.relative_residual,
+                              r.update_norm,
+                              r.step_length,
+                              r.order});
+  }
+
+
+
+  template <int dim>
+  void
+  RunOutput<dim>::increment_converged(const IncrementRecord &record)
+  {
+    // The residual at the converged state: the last assembly was the one
+    // that found convergence.
+    const IncrementReport &report = record.report;
+    const double           time   = record.time;
+    std::vector<double>    row    = {double(record.step),
+                                     double(record.increment),
+                                     time,
+                                     time / parameters.time_stepping.end_time,
+                                     double(report.n_iterations),
+                                     double(report.n_iterations_all),
+                                     report.residual,
+                                     double(record.n_cutbacks),
+                                     record.wall_time};
+    for (const double f : problem.reaction_forces())
       row.push_back(f);
     if (exact_displacement)
     {
@@ -288,20 +350,21 @@ namespace tribos
       row.push_back(l2);
       row.push_back(h1);
     }
+    const auto &owned = problem.owned_dofs();
     for (const auto &dofs : probe_dofs)
       for (const auto dof : dofs)
-        row.push_back(Utilities::MPI::sum(locally_owned_dofs.is_element(dof) ?
-                                            double(owned_solution[dof]) :
+        row.push_back(Utilities::MPI::sum(owned.is_element(dof) ?
+                                            double(problem.unknowns()[dof]) :
                                             0.,
                                           mpi_communicator));
-    if (contact)
+    if (contact_output)
     {
       for (const double value : contact_output->columns())
         row.push_back(value);
       row.push_back(report.n_augmentations);
       row.push_back(report.n_chattering);
     }
-    if (integrator)
+    if (const auto *dynamics = problem.dynamics())
     {
       // total_energy: the bodies' energy plus what the contact took (the
       // penalty springs' energy, friction, impact losses). energy_error:
@@ -309,20 +372,23 @@ namespace tribos
       // balance of the trapezoidal work sums E_kin - E_kin,0 + W_int +
       // W_contact - W_external: zero to round-off for Newmark's average
       // acceleration rule, whatever the material and the contact.
-      const double total = kinetic_energy + strain_energy + contact_work;
+      const auto   e = dynamics->scalars();
+      const double total =
+        e.at("kinetic_energy") + e.at("strain_energy") + e.at("contact_work");
       for (const double value :
-           {kinetic_energy,
-            strain_energy,
-            internal_work,
-            contact_work,
-            friction_work,
-            external_work,
+           {e.at("kinetic_energy"),
+            e.at("strain_energy"),
+            e.at("internal_work"),
+            e.at("contact_work"),
+            e.at("friction_work"),
+            e.at("external_work"),
             total,
-            kinetic_energy - initial_kinetic_energy + internal_work +
-              contact_work - external_work})
+            e.at("kinetic_energy") - e.at("initial_kinetic_energy") +
+              e.at("internal_work") + e.at("contact_work") -
+              e.at("external_work")})
         row.push_back(value);
       for (unsigned int d = 0; d < dim; ++d)
-        row.push_back(momentum[d]);
+        row.push_back(dynamics->momentum()[d]);
     }
     if (parameters.nonlinear_solver.stabilization > 0)
     {
@@ -335,6 +401,32 @@ namespace tribos
 
 
 
-  template class Problem<2>;
-  template class Problem<3>;
+  template <int dim>
+  void
+  RunOutput<dim>::step_completed(const StepRecord &r)
+  {
+    std::ostringstream line;
+    line << "step " << std::setw(4) << r.step << "/" << r.n_steps
+         << "  t=" << std::setw(9) << std::setprecision(4) << r.time
+         << "  lf=" << std::fixed << std::setprecision(3) << r.load_factor
+         << std::defaultfloat << "  incr " << r.n_increments << "  newton "
+         << std::setw(3) << r.n_iterations << " (all " << r.n_iterations_all
+         << ")"
+         << "  |R|=" << std::scientific << std::setprecision(2) << r.residual
+         << std::defaultfloat << "  cutbacks " << r.n_cutbacks;
+    if (contact_output)
+    {
+      const ContactStatistics s = contact_output->statistics();
+      line << "  active/stick/slip " << s.n_active << "/" << s.n_stick << "/"
+           << s.n_slip;
+    }
+    line << "  " << std::setprecision(3) << r.elapsed << " s  ETA " << r.eta
+         << " s";
+    print(line.str());
+  }
+
+
+
+  template class RunOutput<2>;
+  template class RunOutput<3>;
 } // namespace tribos

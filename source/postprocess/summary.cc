@@ -1,5 +1,5 @@
 #include <tribos/base/write_atomically.h>
-#include <tribos/core/problem.h>
+#include <tribos/postprocess/run_output.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -11,29 +11,21 @@ namespace tribos
 {
   template <int dim>
   void
-  Problem<dim>::warn(const std::string &message)
+  RunOutput<dim>::write_summary(const std::string &status, const RunTotals &run)
   {
-    warnings.push_back(message);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      std::cerr << "tribos: WARNING: " << message << std::endl;
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::write_summary(const std::string &status)
-  {
+    const auto *contact       = problem.contact();
+    const auto &triangulation = problem.get_triangulation();
     // Load balance: each process's time in the sections its share of the
     // cells and of the contact zone sets (collective, so before rank 0
     // alone goes on). A contact zone on one process makes the others wait.
     const std::vector<std::pair<std::string, Utilities::MPI::MinMaxAvg>>
-      balance = {
-        {"assembly",
-         Utilities::MPI::min_max_avg(own_assembly_time, mpi_communicator)},
-        {"contact",
-         Utilities::MPI::min_max_avg(contact ? contact->own_time() : 0.,
-                                     mpi_communicator)}};
+      balance = {{"assembly",
+                  Utilities::MPI::min_max_avg(problem.bulk().own_time(),
+                                              mpi_communicator)},
+                 {"contact",
+                  Utilities::MPI::min_max_avg(contact ? contact->own_time() :
+                                                        0.,
+                                              mpi_communicator)}};
     // The slave nodes each process evaluates (the contact's share of the
     // work, whatever their state).
     const auto slave_nodes =
@@ -46,12 +38,12 @@ namespace tribos
     // contact across processes.
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const auto ghost_values = problem.ghost_values();
     const auto ghosts =
-      Utilities::MPI::min_max_avg(double(system_relevant.n_elements() -
-                                         system_owned.n_elements()),
-                                  mpi_communicator);
+      Utilities::MPI::min_max_avg(double(ghost_values.first), mpi_communicator);
     const auto contact_ghosts =
-      Utilities::MPI::min_max_avg(double(n_contact_ghosts), mpi_communicator);
+      Utilities::MPI::min_max_avg(double(ghost_values.second),
+                                  mpi_communicator);
     const auto crossings =
       contact ? contact->process_crossings() : std::pair<unsigned, unsigned>();
     // The master exchange of the contact search: the most values one
@@ -73,7 +65,8 @@ namespace tribos
       Utilities::MPI::min_max_avg(memory.VmHWM / 1024., mpi_communicator);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
-    const StepperTotals totals = stepper ? stepper->totals() : StepperTotals();
+    const StepperTotals &totals        = run.stepper;
+    const LinearSolver  *linear_solver = run.linear_solver;
     const auto wall  = timer.get_summary_data(TimerOutput::total_wall_time);
     const auto calls = timer.get_summary_data(TimerOutput::n_calls);
     double     total = 0;
@@ -89,18 +82,17 @@ namespace tribos
             << "scene             " << parameters.scene.name << '\n'
             << "cells             " << triangulation.n_global_active_cells()
             << '\n'
-            << "dofs              " << dof_handler.n_dofs() << '\n'
+            << "dofs              " << problem.get_dof_handler().n_dofs()
+            << '\n'
             << "contact dofs      "
             << (contact ? contact->contact_dofs().n_elements() : 0) << '\n'
-            << "multipliers       " << n_multipliers << '\n'
-            << "bodies            " << n_bodies << '\n'
+            << "multipliers       " << problem.n_contact_multipliers() << '\n'
+            << "bodies            " << problem.n_bodies() << '\n'
             << "MPI processes     "
             << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'
             << "increments        " << totals.n_increments << '\n'
             << "newton iterations " << totals.n_newton_iterations << '\n'
-            << "newton iterations (all attempts) "
-            << (restart ? restart->stepper.totals.n_linear_solves : 0) +
-                 (newton ? newton->n_linear_solves() : 0)
+            << "newton iterations (all attempts) " << run.n_linear_solves
             << '\n'
             << "cutbacks          " << totals.n_cutbacks << '\n'
             << "linear solver     "
@@ -160,12 +152,12 @@ namespace tribos
                  "weight = "
               << parameters.parallel.contact_cell_weight << ")\n";
         }
-        if (last_rebalance.count > 0)
-          out << "rebalanced        " << last_rebalance.count
-              << " time(s), the last after step " << last_rebalance.step
-              << " (contact time max/min " << last_rebalance.imbalance
+        if (run.n_rebalances > 0)
+          out << "rebalanced        " << run.n_rebalances
+              << " time(s), the last after step " << run.rebalance_step
+              << " (contact time max/min " << run.imbalance
               << "); balance and sections since then\n";
-        for (const auto &w : warnings)
+        for (const auto &w : problem.warnings())
           out << "warning           " << w << '\n';
         out << "\nsection               calls    wall [s]  share\n";
         for (const auto &[section, seconds] : wall)
@@ -178,6 +170,6 @@ namespace tribos
       });
   }
 
-  template class Problem<2>;
-  template class Problem<3>;
+  template class RunOutput<2>;
+  template class RunOutput<3>;
 } // namespace tribos

@@ -1,0 +1,140 @@
+#ifndef tribos_run_simulation_h
+#define tribos_run_simulation_h
+
+#include <tribos/core/checkpoint.h>
+#include <tribos/core/problem.h>
+#include <tribos/parameters/all_parameters.h>
+#include <tribos/postprocess/run_output.h>
+#include <tribos/solver/linear_solver.h>
+#include <tribos/solver/load_stepper.h>
+#include <tribos/solver/newton_solver.h>
+#include <tribos/solver/solver_observer.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/grid/cell_id.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  /**
+   * Thrown by Simulation at the end of a step when the contact work is out
+   * of balance (Parallel/Rebalance threshold): not a failure. The state of
+   * the step is in @p checkpoint; main() builds the simulation again,
+   * partitioned with @p weights, and restarts from it.
+   */
+  struct Rebalance
+  {
+    std::string checkpoint;
+    /** Rank 0: METIS' weight of every cell with measured contact work
+     * (others weigh 1). */
+    std::vector<std::pair<CellId::binary_type, unsigned int>> weights;
+    /** The contact time's max/min over the processes in the step. */
+    double       imbalance = 0;
+    unsigned int step      = 0;
+    /** Rebalances so far, this one included. */
+    unsigned int count = 0;
+    /** The wall time of the run before it (for the log's total). */
+    double elapsed = 0;
+  };
+
+
+
+  /**
+   * One run of a parameter file: builds the Problem, its outputs
+   * (RunOutput) and the solvers (LinearSolver, NewtonSolver, LoadStepper),
+   * goes on from a checkpoint if asked (--restart), and runs every load
+   * step. It is the solvers' observer: it passes what they report to the
+   * outputs, and at the end of each nominal step writes the VTU, the
+   * checkpoint (Output/Checkpoint every) and checks the balance of the
+   * contact work under MPI (Parallel/Rebalance threshold).
+   */
+  template <int dim>
+  class Simulation : public SolverObserver
+  {
+  public:
+    /** A run of @p parameters; @p previous is the rebalance it goes on
+     * from (count 0: none). */
+    Simulation(const Parameters::AllParameters &parameters,
+               const MPI_Comm                   mpi_communicator,
+               const Rebalance                 &previous = Rebalance());
+
+    /**
+     * Build the scene, solve every load step and write all output. Throws
+     * NonConvergence when the cutbacks are exhausted (after the outputs of
+     * all converged steps are written), Rebalance (see there), other
+     * exceptions for bad input.
+     */
+    void
+    run();
+
+    /* SolverObserver */
+    void
+    attempt(const unsigned int step,
+            const unsigned int increment,
+            const double       time) override;
+    void
+    iteration(const IterationRecord &record) override;
+    void
+    increment_converged(const IncrementRecord &record) override;
+    void
+    step_completed(const StepRecord &record) override;
+    void
+    message(const std::string &text) override;
+    void
+    failed(const std::string &reason) override;
+
+  private:
+    /** The solvers of the run (AMG gets the rigid-body modes as its
+     * near-null space). */
+    void
+    make_solvers();
+
+    /** What summary.txt says of the run. */
+    RunTotals
+    totals() const;
+
+    /** Write the converged state after nominal @p step into
+     * @p directory. */
+    void
+    write_checkpoint(const unsigned int step, const std::string &directory);
+
+    /** At the end of @p step: throws Rebalance if the contact work is out
+     * of balance (collective; balance.cc). */
+    void
+    check_balance(const unsigned int step);
+
+    const Parameters::AllParameters &parameters;
+    MPI_Comm                         mpi_communicator;
+    ConditionalOStream               pcout;
+    /**
+     * This process's own section times (summary.txt shows the first
+     * process's). On the whole communicator every section's end would be a
+     * collective step, also while an exception raised on one process only
+     * unwinds, and the run would hang there instead of ending.
+     */
+    TimerOutput                     timer;
+    Problem<dim>                    problem;
+    std::unique_ptr<RunOutput<dim>> output;
+    /** The checkpoint a restart goes on from. */
+    std::unique_ptr<Checkpoint>   restart;
+    std::unique_ptr<LinearSolver> linear_solver;
+    std::unique_ptr<NewtonSolver> newton;
+    std::unique_ptr<LoadStepper>  stepper;
+    /** The rebalance this run goes on from (count 0: none), whether it may
+     * rebalance, and the own times and the wall clock at the last step's
+     * end. */
+    Rebalance     last_rebalance;
+    bool          may_rebalance        = true;
+    double        contact_time_at_step = 0, assembly_time_at_step = 0;
+    dealii::Timer step_clock, run_clock;
+  };
+} // namespace tribos
+
+#endif

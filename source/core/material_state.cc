@@ -1,0 +1,117 @@
+#include <tribos/core/material_state.h>
+
+#include <type_traits>
+
+namespace tribos
+{
+  template <int dim>
+  MaterialState<dim>::MaterialState(const Parameters::AllParameters &parameters,
+                                    const Triangulation<dim> &triangulation,
+                                    const unsigned int n_quadrature_points,
+                                    const MPI_Comm     mpi_communicator)
+    : n_q_points(n_quadrature_points)
+  {
+    const auto &m = parameters.materials;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (!cell->is_artificial())
+        body_ids.insert(cell->material_id());
+    body_ids = Utilities::MPI::compute_set_union(body_ids, mpi_communicator);
+    const types::material_id max_body = *body_ids.rbegin();
+    // The same per-body data builds the dim materials and, for an
+    // axisymmetric model, their 3D versions.
+    const auto make = [&m](auto dimension, const unsigned int body)
+    {
+      namespace P = Parameters;
+      return create_material<decltype(dimension)::value>(
+        P::Materials::for_body(m.models, body, "Model"),
+        P::Materials::for_body(m.youngs_moduli, body, "Young's modulus"),
+        P::Materials::for_body(m.poissons_ratios, body, "Poisson's ratio"),
+        {{P::Materials::for_body(m.yield_stresses, body, "Yield stress"),
+          P::Materials::for_body(m.saturation_yield_stresses,
+                                 body,
+                                 "Saturation yield stress"),
+          P::Materials::for_body(m.hardening_exponents,
+                                 body,
+                                 "Hardening exponent"),
+          P::Materials::for_body(m.linear_hardening_moduli,
+                                 body,
+                                 "Linear hardening modulus")}});
+    };
+    for (unsigned int body = 0; body <= max_body; ++body)
+      materials.push_back(make(std::integral_constant<int, dim>(), body));
+    if (parameters.finite_element.axisymmetric)
+    {
+      // The most negative radius, relative to its cell's size, anywhere.
+      double worst = 0, worst_x = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const auto v : cell->vertex_indices())
+            if (cell->vertex(v)[0] / cell->diameter() < worst)
+            {
+              worst   = cell->vertex(v)[0] / cell->diameter();
+              worst_x = cell->vertex(v)[0];
+            }
+      const auto least = Utilities::MPI::min_max_avg(worst, mpi_communicator);
+      worst_x =
+        Utilities::MPI::broadcast(mpi_communicator, worst_x, least.min_index);
+      AssertThrow(least.min >= -1e-10,
+                  ExcMessage("Finite element/Axisymmetric = true needs "
+                             "the mesh in x = r >= 0; vertex at x = " +
+                             std::to_string(worst_x) + "."));
+      for (unsigned int body = 0; body <= max_body; ++body)
+        axisymmetric_materials.push_back(
+          make(std::integral_constant<int, 3>(), body));
+    }
+
+    // History only where a material has memory: elastic bodies pay nothing.
+    history_offset.assign(triangulation.n_active_cells(),
+                          numbers::invalid_unsigned_int);
+    unsigned int n_values = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const unsigned int n = n_history_variables(cell->material_id());
+        if (n > 0)
+        {
+          history_offset[cell->active_cell_index()] = n_values;
+          n_values += n * n_q_points;
+        }
+      }
+    history_old.assign(n_values, 0.);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && has_history(cell))
+      {
+        const unsigned int n = n_history_variables(cell->material_id());
+        for (unsigned int q = 0; q < n_q_points; ++q)
+        {
+          double *history =
+            &history_old[history_offset[cell->active_cell_index()] + q * n];
+          if (axisymmetric_materials.empty())
+            materials[cell->material_id()]->initialize_history(history);
+          else
+            axisymmetric_materials[cell->material_id()]->initialize_history(
+              history);
+        }
+      }
+    history_new = history_old;
+  }
+
+
+
+  template <int dim>
+  bool
+  MaterialState<dim>::any_history() const
+  {
+    bool any = false;
+    for (const auto &m : materials)
+      any = any || m->n_history_variables() > 0;
+    for (const auto &m : axisymmetric_materials)
+      any = any || m->n_history_variables() > 0;
+    return any;
+  }
+
+
+
+  template class MaterialState<2>;
+  template class MaterialState<3>;
+} // namespace tribos

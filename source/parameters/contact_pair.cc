@@ -1,0 +1,354 @@
+#include <tribos/base/text.h>
+#include <tribos/parameters/contact_pair.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    std::string
+    to_string(const EnforcementMethod method)
+    {
+      switch (method)
+      {
+        case EnforcementMethod::penalty:
+          return "penalty";
+        case EnforcementMethod::lagrange_multiplier:
+          return "lagrange multiplier";
+        case EnforcementMethod::augmented_lagrangian:
+          return "augmented lagrangian";
+      }
+      return "";
+    }
+
+
+
+    EnforcementMethod
+    parse_method(const std::string &text, const std::string &entry)
+    {
+      for (const auto method : {EnforcementMethod::penalty,
+                                EnforcementMethod::lagrange_multiplier,
+                                EnforcementMethod::augmented_lagrangian})
+        if (text == to_string(method))
+          return method;
+      AssertThrow(false,
+                  dealii::ExcMessage("Parameter <" + entry + ">: method <" +
+                                     text +
+                                     "> unknown. Allowed: penalty, lagrange "
+                                     "multiplier, augmented lagrangian."));
+      return EnforcementMethod::penalty;
+    }
+
+
+
+    PenaltyValue
+    PenaltyValue::parse(const std::string &input, const std::string &entry)
+    {
+      PenaltyValue      result;
+      const std::string text = Text::trim(input);
+      if (text.empty())
+        return result;
+      result.given = true;
+
+      // Without blanks: '100 * E / h' reads as '100*E/h'.
+      std::string compact;
+      for (const char c : text)
+        if (c != ' ' && c != '\t')
+          compact += c;
+      std::string number    = compact;
+      const auto  ends_with = [&compact](const std::string &tail)
+      {
+        return compact.size() >= tail.size() &&
+               compact.compare(compact.size() - tail.size(),
+                               tail.size(),
+                               tail) == 0;
+      };
+      const std::string allowed =
+        "Write 'k*E/h' (k times the pair's contact modulus E over the "
+        "slave node's element size h, free of the length unit; e.g. "
+        "'100*E/h') or an absolute value in stress per length (e.g. "
+        "'1e5').";
+      if (compact == "E/h")
+      {
+        result.per_node = true;
+        number          = "1";
+      }
+      else if (ends_with("*E/h"))
+      {
+        result.per_node = true;
+        number          = compact.substr(0, compact.size() - 4);
+      }
+      else
+      {
+        // A bare number is absolute; anything else naming E lacks the h.
+        char        *end = nullptr;
+        const double v   = std::strtod(compact.c_str(), &end);
+        (void)v;
+        AssertThrow(*end == '\0' || compact.find('E') == std::string::npos,
+                    dealii::ExcMessage(
+                      "Parameter <" + entry + "> = <" + text +
+                      ">: a multiple of E without the element size depends "
+                      "on the length unit (the same model in metres gets a "
+                      "penalty 1000 times softer relative to its mesh than "
+                      "in millimetres) and is no longer accepted. " +
+                      allowed));
+      }
+      char *end    = nullptr;
+      result.value = std::strtod(number.c_str(), &end);
+      AssertThrow(!number.empty() && *end == '\0' && result.value > 0 &&
+                    std::isfinite(result.value),
+                  dealii::ExcMessage("Parameter <" + entry + "> = <" + text +
+                                     ">: expected a positive number. " +
+                                     allowed));
+      return result;
+    }
+
+
+
+    /** The discretization @p text of @p entry. */
+    Discretization
+    parse_discretization(const std::string &text, const std::string &entry)
+    {
+      AssertThrow(text == "node to segment" || text == "mortar",
+                  dealii::ExcMessage("Parameter <" + entry +
+                                     ">: discretization <" + text +
+                                     "> is unknown. Allowed: node to "
+                                     "segment, mortar."));
+      return text == "mortar" ? Discretization::mortar :
+                                Discretization::node_to_segment;
+    }
+
+
+
+    /** The surfaces of Contact/Rigid surfaces = @p text. */
+    std::vector<RigidSurface>
+    parse_rigid_surfaces(const std::string &text)
+    {
+      std::vector<RigidSurface> rigid_surfaces;
+      const std::string         rigid_entry = "Contact/Rigid surfaces";
+      for (const auto &item : Text::split_top_level(text, ';'))
+      {
+        const auto parts = Text::split_top_level(item, ':');
+        AssertThrow(parts.size() >= 4,
+                    dealii::ExcMessage("Parameter <" + rigid_entry +
+                                       ">: item <" + item +
+                                       "> is incomplete; see the entry's "
+                                       "documentation."));
+        RigidSurface surface;
+        surface.name     = parts[0];
+        surface.type     = parts[1];
+        surface.point    = Text::parse_doubles(parts[2], rigid_entry);
+        std::size_t next = 3;
+        if (surface.type == "plane")
+          surface.direction = Text::parse_doubles(parts[next++], rigid_entry);
+        else if (surface.type == "sphere" || surface.type == "cylinder")
+        {
+          const auto r = Text::parse_doubles(parts[next++], rigid_entry);
+          AssertThrow(r.size() == 1 && r[0] > 0,
+                      dealii::ExcMessage("Parameter <" + rigid_entry +
+                                         ">: surface <" + surface.name +
+                                         "> needs one radius > 0."));
+          surface.radius = r[0];
+          if (surface.type == "cylinder" && parts.size() == 6)
+            surface.direction = Text::parse_doubles(parts[next++], rigid_entry);
+        }
+        else
+          AssertThrow(false,
+                      dealii::ExcMessage("Parameter <" + rigid_entry +
+                                         ">: surface <" + surface.name +
+                                         "> has unknown type <" + surface.type +
+                                         ">. Allowed: plane, sphere, "
+                                         "cylinder."));
+        AssertThrow(next + 1 == parts.size(),
+                    dealii::ExcMessage("Parameter <" + rigid_entry +
+                                       ">: item <" + item +
+                                       "> has the wrong number of ':' "
+                                       "fields for a " +
+                                       surface.type + "."));
+        surface.motion = Text::split_top_level(parts[next], ',');
+        AssertThrow(surface.point.size() == 3,
+                    dealii::ExcMessage("Parameter <" + rigid_entry +
+                                       ">: surface <" + surface.name +
+                                       "> needs a point with 3 "
+                                       "coordinates (z = 0 in 2D)."));
+        rigid_surfaces.push_back(surface);
+      }
+
+      return rigid_surfaces;
+    }
+
+
+
+    /** The pair of Contact/Pairs item @p item, with @p defaults, among
+     * the @p rigid_surfaces. */
+    ContactPair
+    parse_pair(const std::string               &item,
+               const PairDefaults              &defaults,
+               const std::vector<RigidSurface> &rigid_surfaces)
+    {
+      const std::string pair_entry = "Contact/Pairs";
+      const auto        parts      = Text::split_top_level(item, ':');
+      AssertThrow(parts.size() == 2 || parts.size() == 3,
+                  dealii::ExcMessage("Parameter <" + pair_entry + ">: item <" +
+                                     item +
+                                     "> must read 'slave : master' or "
+                                     "'slave : master : key=value, ...'."));
+      ContactPair pair;
+      for (const auto id : Text::parse_unsigned(parts[0], pair_entry))
+        pair.slave_boundary.insert(id);
+      bool is_rigid = false;
+      for (const auto &surface : rigid_surfaces)
+        if (surface.name == parts[1])
+          is_rigid = true;
+      if (is_rigid)
+        pair.rigid_surface = parts[1];
+      else
+      {
+        for (const auto &piece : Text::split_top_level(parts[1], ','))
+        {
+          char      *end = nullptr;
+          const long id  = std::strtol(piece.c_str(), &end, 10);
+          AssertThrow(!piece.empty() && *end == '\0' && id >= 0,
+                      dealii::ExcMessage(
+                        "Parameter <" + pair_entry + ">: master <" + parts[1] +
+                        "> is neither a list of boundary ids nor the name "
+                        "of a surface in <Contact/Rigid surfaces>."));
+          pair.master_boundary.insert(id);
+        }
+        for (const auto id : pair.master_boundary)
+          AssertThrow(pair.slave_boundary.count(id) == 0,
+                      dealii::ExcMessage(
+                        "Parameter <" + pair_entry + ">: item <" + item +
+                        ">: boundary id " + std::to_string(id) +
+                        " is both slave and master; a pair needs "
+                        "different slave and master boundaries."));
+      }
+      pair.method               = defaults.method;
+      pair.normal_penalty       = defaults.normal_penalty;
+      pair.tangential_penalty   = defaults.tangential_penalty;
+      pair.friction_coefficient = defaults.friction_coefficient;
+      pair.discretization       = pair.rigid_surface.empty() ?
+                                    defaults.discretization :
+                                    Discretization::node_to_segment;
+      bool tangential_given     = false;
+      if (parts.size() == 3)
+        for (const auto &option : Text::split_top_level(parts[2], ','))
+        {
+          const auto equal = option.find('=');
+          AssertThrow(equal != std::string::npos,
+                      dealii::ExcMessage("Parameter <" + pair_entry +
+                                         ">: option <" + option +
+                                         "> must read key=value."));
+          const std::string key   = Text::trim(option.substr(0, equal));
+          const std::string value = Text::trim(option.substr(equal + 1));
+          if (key == "method")
+          {
+            pair.method = parse_method(value, pair_entry);
+          }
+          else if (key == "penalty")
+            pair.normal_penalty = PenaltyValue::parse(value, pair_entry);
+          else if (key == "tangential penalty")
+          {
+            pair.tangential_penalty = PenaltyValue::parse(value, pair_entry);
+            tangential_given        = true;
+          }
+          else if (key == "mu")
+          {
+            char *end                 = nullptr;
+            pair.friction_coefficient = std::strtod(value.c_str(), &end);
+            AssertThrow(*end == '\0' && pair.friction_coefficient >= 0,
+                        dealii::ExcMessage("Parameter <" + pair_entry +
+                                           ">: mu = <" + value +
+                                           "> must be a number >= 0."));
+          }
+          else if (key == "discretization")
+          {
+            pair.discretization = parse_discretization(value, pair_entry);
+            AssertThrow(pair.discretization ==
+                            Discretization::node_to_segment ||
+                          pair.rigid_surface.empty(),
+                        dealii::ExcMessage(
+                          "Parameter <" + pair_entry + ">: item <" + item +
+                          ">: discretization = mortar needs a deformable "
+                          "master; a rigid surface is always met node to "
+                          "surface."));
+          }
+          else
+            AssertThrow(false,
+                        dealii::ExcMessage("Parameter <" + pair_entry +
+                                           ">: unknown "
+                                           "option <" +
+                                           key +
+                                           ">. Allowed: method, "
+                                           "penalty, tangential penalty, mu, "
+                                           "discretization."));
+        }
+      if (!tangential_given && parts.size() == 3 && !defaults.tangential_given)
+        pair.tangential_penalty = pair.normal_penalty;
+      pair.text = item;
+      return pair;
+    }
+
+
+
+    /**
+     * Refuse @p pairs that repeat an interface: an exact duplicate would
+     * apply its contact twice; the same interface written twice with
+     * slave and master swapped, with multipliers, holds the same gap
+     * twice.
+     */
+    void
+    check_interfaces(const std::vector<ContactPair> &pairs)
+    {
+      const std::string pair_entry = "Contact/Pairs";
+      // The same slave surface against the same master twice: each
+      // slave node would carry its contact twice.
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        for (unsigned int j = i + 1; j < pairs.size(); ++j)
+          AssertThrow(!(pairs[i].slave_boundary == pairs[j].slave_boundary &&
+                        pairs[i].master_boundary == pairs[j].master_boundary &&
+                        pairs[i].rigid_surface == pairs[j].rigid_surface),
+                      dealii::ExcMessage(
+                        "Parameter <" + pair_entry + ">: items " +
+                        std::to_string(i + 1) + " <" + pairs[i].text +
+                        "> and " + std::to_string(j + 1) + " <" +
+                        pairs[j].text +
+                        "> are the same slave surface against the "
+                        "same master: its contact would be "
+                        "applied twice. Keep one of them."));
+      // The same interface written twice with slave and master swapped:
+      // with multipliers both sets of node-to-segment constraints hold the
+      // same gap (a singular saddle-point system). Penalty may sum both.
+      const auto meet =
+        [](const std::set<unsigned int> &a, const std::set<unsigned int> &b)
+      {
+        for (const auto id : a)
+          if (b.count(id) > 0)
+            return true;
+        return false;
+      };
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        for (unsigned int j = i + 1; j < pairs.size(); ++j)
+          AssertThrow(
+            !(pairs[i].rigid_surface.empty() &&
+              pairs[j].rigid_surface.empty() &&
+              meet(pairs[i].slave_boundary, pairs[j].master_boundary) &&
+              meet(pairs[i].master_boundary, pairs[j].slave_boundary) &&
+              (pairs[i].method == EnforcementMethod::lagrange_multiplier ||
+               pairs[j].method == EnforcementMethod::lagrange_multiplier)),
+            dealii::ExcMessage(
+              "Parameter <" + pair_entry + ">: pairs <" + pairs[i].text +
+              "> and <" + pairs[j].text +
+              "> are the same interface with slave and master swapped. "
+              "With Lagrange multipliers both sets of constraints hold the "
+              "same gap and over-constrain it (singular system): keep one "
+              "of them (penalty may use both, like Contact/Passes = "
+              "two-pass)."));
+    }
+
+
+
+  } // namespace Parameters
+} // namespace tribos

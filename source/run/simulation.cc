@@ -1,0 +1,236 @@
+#include <tribos/base/exceptions.h>
+#include <tribos/run/simulation.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace tribos
+{
+  template <int dim>
+  Simulation<dim>::Simulation(const Parameters::AllParameters &parameters,
+                              const MPI_Comm                   mpi_communicator,
+                              const Rebalance                 &previous)
+    : parameters(parameters)
+    , mpi_communicator(mpi_communicator)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , problem(parameters,
+              mpi_communicator,
+              timer,
+              [this](const std::string &line) { pcout << line << std::endl; })
+    , last_rebalance(previous)
+  {
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::run()
+  {
+    run_clock.restart();
+    problem.setup(last_rebalance.count > 0 ? &last_rebalance.weights : nullptr);
+    if (!parameters.restart_directory.empty())
+    {
+      restart = std::make_unique<Checkpoint>();
+      restart->load(parameters.restart_directory);
+      problem.check_checkpoint(*restart);
+    }
+    output = std::make_unique<RunOutput<dim>>(problem, timer);
+    output->open(restart.get());
+
+    std::ostringstream header;
+    header << "tribos: " << dim << "D scene <" << parameters.scene.name << ">, "
+           << problem.get_triangulation().n_global_active_cells() << " cells, "
+           << problem.get_dof_handler().n_dofs() << " dofs, "
+           << problem.n_bodies()
+           << (problem.n_bodies() == 1 ? " body, " : " bodies, ")
+           << Utilities::MPI::n_mpi_processes(mpi_communicator)
+           << " MPI process(es)";
+    output->print(header.str());
+    if (problem.contact() != nullptr)
+      for (const auto &line : problem.contact()->describe())
+        output->print("  " + line);
+
+    StepperState start;
+    if (restart)
+    {
+      problem.read_checkpoint(*restart);
+      start = restart->stepper;
+    }
+    else
+      output->write_step(0, 0.);
+    if (last_rebalance.count > 0)
+    {
+      std::ostringstream line;
+      line << "  rebalanced: the contact time's max/min over the processes "
+              "was "
+           << last_rebalance.imbalance << " in step " << last_rebalance.step
+           << "; the mesh is partitioned with the measured contact work";
+      output->print(line.str());
+      // The state was only the means of the rebalance.
+      if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+        std::filesystem::remove_all(last_rebalance.checkpoint);
+    }
+
+    make_solvers();
+    step_clock.restart();
+    stepper->run(problem,
+                 *this,
+                 start,
+                 start.change_increment > 0 ? &problem.restart_change() :
+                                              nullptr);
+
+    if (problem.contact() != nullptr)
+      for (const auto &w : problem.contact()->run_warnings())
+        problem.warn(w);
+    output->write_summary("completed", totals());
+    const auto        &sums = stepper->totals();
+    std::ostringstream line;
+    line << "done: " << sums.n_increments << " increments, "
+         << sums.n_newton_iterations << " Newton iterations ("
+         << totals().n_linear_solves << " with failed attempts), "
+         << sums.n_cutbacks << " cutbacks, "
+         << last_rebalance.elapsed + run_clock.wall_time() << " s; output in "
+         << parameters.output.directory;
+    output->print(line.str());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::make_solvers()
+  {
+    // The solvers: the linear solve of a Newton iteration (AMG gets the
+    // rigid-body modes as its near-null space), Newton, and the load
+    // stepping around it.
+    const auto n_multipliers = problem.n_contact_multipliers();
+    linear_solver = std::make_unique<LinearSolver>(parameters.linear_solver,
+                                                   dim,
+                                                   n_multipliers > 0);
+    linear_solver->set_timer(timer);
+    problem.attach(*linear_solver);
+    if (n_multipliers > 0)
+      linear_solver->set_multiplier_blocks(problem.get_dof_handler().n_dofs(),
+                                           dim);
+    if (linear_solver->iterative(problem.system_matrix()))
+      linear_solver->set_near_null_space(problem.rigid_body_modes(),
+                                         parameters.finite_element.degree > 1);
+    newton  = std::make_unique<NewtonSolver>(parameters.nonlinear_solver,
+                                            *linear_solver);
+    stepper = std::make_unique<LoadStepper>(parameters.time_stepping, *newton);
+  }
+
+
+
+  template <int dim>
+  RunTotals
+  Simulation<dim>::totals() const
+  {
+    RunTotals t;
+    if (stepper)
+      t.stepper = stepper->totals();
+    t.n_linear_solves =
+      (restart ? restart->stepper.totals.n_linear_solves : 0) +
+      (newton ? newton->n_linear_solves() : 0);
+    t.linear_solver  = linear_solver.get();
+    t.n_rebalances   = last_rebalance.count;
+    t.rebalance_step = last_rebalance.step;
+    t.imbalance      = last_rebalance.imbalance;
+    return t;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::attempt(const unsigned int step,
+                           const unsigned int increment,
+                           const double       time)
+  {
+    output->attempt(step, increment, time);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::iteration(const IterationRecord &record)
+  {
+    output->iteration(record);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::increment_converged(const IncrementRecord &record)
+  {
+    output->increment_converged(record);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::message(const std::string &text)
+  {
+    output->message(text);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::step_completed(const StepRecord &record)
+  {
+    output->step_completed(record);
+    const unsigned int step    = record.step;
+    const unsigned int n_steps = parameters.time_stepping.n_steps;
+    if (parameters.output.is_output_step(step, n_steps))
+      output->write_step(step, record.time);
+    const unsigned int every = parameters.output.checkpoint_every;
+    if (every > 0 && (step % every == 0 || step == n_steps))
+      write_checkpoint(step,
+                       parameters.output.directory + "/checkpoint-" +
+                         Utilities::int_to_string(step, 5));
+    check_balance(step);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::failed(const std::string &reason)
+  {
+    if (problem.contact() != nullptr)
+      for (const auto &w : problem.contact()->run_warnings())
+        problem.warn(w);
+    output->write_summary("FAILED: " + reason, totals());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::write_checkpoint(const unsigned int step,
+                                    const std::string &directory)
+  {
+    AssertThrow(stepper->state().step == step,
+                ExcInternalError("checkpoint of another step"));
+    problem.write_checkpoint(stepper->state(),
+                             stepper->last_change(),
+                             output->pvd_records(),
+                             directory);
+  }
+
+
+
+  template class Simulation<2>;
+  template class Simulation<3>;
+} // namespace tribos
