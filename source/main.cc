@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -204,10 +205,57 @@ namespace
 namespace
 {
   /**
+   * The session directory of an MPI singleton: Open MPI's default is one
+   * per user and host under the temporary directory, created by whichever
+   * process gets there first, and singletons started at the same moment
+   * (ctest -j2, a parameter sweep) raced on it: "A call to mkdir was unable
+   * to create the desired directory ... File exists", and the run died in
+   * MPI_Init. Each singleton gets a directory of its own, removed when the
+   * program ends (after MPI_Finalize: this object is static).
+   */
+  class SingletonSessionDirectory
+  {
+  public:
+    /** Create the directory and point Open MPI at it (unless the user set
+     * OMPI_MCA_orte_tmpdir_base). */
+    void
+    create()
+    {
+      if (std::getenv("OMPI_MCA_orte_tmpdir_base") != nullptr)
+        return;
+      const char *tmp = std::getenv("TMPDIR");
+      std::string name =
+        std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") +
+        "/tribos-mpi-XXXXXX";
+      std::vector<char> buffer(name.begin(), name.end());
+      buffer.push_back('\0');
+      if (mkdtemp(buffer.data()) == nullptr)
+        return;
+      directory = buffer.data();
+      setenv("OMPI_MCA_orte_tmpdir_base", directory.c_str(), 1);
+    }
+
+    ~SingletonSessionDirectory()
+    {
+      if (!directory.empty())
+      {
+        std::error_code ignored;
+        std::filesystem::remove_all(directory, ignored);
+      }
+    }
+
+  private:
+    std::string directory;
+  };
+
+
+
+  /**
    * A run that mpirun did not start is an MPI singleton. Open MPI then
    * starts a helper daemon and probes every network transport (0.3 s of
    * MPI_Init and MPI_Finalize, half of a small run): a singleton needs
-   * neither, so it is told so, unless the user set these variables.
+   * neither, so it is told so, unless the user set these variables; and
+   * it gets a session directory of its own.
    */
   void
   configure_singleton_mpi()
@@ -220,6 +268,8 @@ namespace
     setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
     setenv("OMPI_MCA_pml", "ob1", 0);
     setenv("OMPI_MCA_btl", "self,vader", 0);
+    static SingletonSessionDirectory session;
+    session.create();
   }
 } // namespace
 

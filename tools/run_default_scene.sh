@@ -4,6 +4,6 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/tools/install_dependencies.sh"
-bash "$root/tools/build.sh"
+bash "$root/tools/build.sh" tribos
 cd "$root"
 ./build/tribos parameters/cylinder_elastic_3d.prm

@@ -5,4 +5,6 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/tools/install_dependencies.sh"
 bash "$root/tools/build.sh"
 cd "$root/build"
-ctest --output-on-failure "$@"
+# In parallel on every core; the tests that start MPI runs take two cores
+# each and one at a time (tests/CMakeLists.txt).
+ctest --output-on-failure -j "$(nproc)" "$@"

@@ -96,6 +96,8 @@ namespace tribos
         prm.leave_subsection();
       }
 
+      /** 2D only: the 3D one refuses. */
+      using SceneGeometry::create;
       void
       create(const unsigned int refinement,
              Triangulation<2>  &tria) const override
