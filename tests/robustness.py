@@ -15,8 +15,10 @@ sane physics:
   run completes, the contact force balances the load up to the reported
   stabilization force, which ends below the stabilization limit (1e-3 of
   the load), with bounded Newton updates, also with the whole load in one
-  step; without it the first update is the singular rigid-body mode (> 1e6
-  x the size of the block) and increments are cut;
+  step; without it, the default penetration limit lands the block (no
+  cutbacks, the contact force carries the whole load); without both, the
+  first update is the singular rigid-body mode (> 1e6 x the size of the
+  block) or the solver names the singular system;
 * very high penalty (1e4 E/h, 1e6 E/h) on Hertz 2D: converges, a and p0
   within 3 %;
 * frictional upsetting (mu = 0.5, F-bar): the 3D 1/8 model's first 8 of
@@ -131,27 +133,47 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
           % (method, last["pair0_normal_force"],
              last["stabilization_relaxations"], last["stabilization_ratio"]))
     stabilized = read_csv(folder + "/convergence.csv")
-    # Without stabilization the rigid mode is singular: a direct solver
-    # either says so (UMFPACK: the run fails, naming the singular system)
-    # or returns an update of round-off size in that mode (MUMPS, KLU).
-    result = run(tribos, prm("force_control_apart"), folder + "_off",
-                 sets + ["Nonlinear solver/Stabilization factor=0"],
-                 expect_success=False)
-    free = read_csv(folder + "_off/convergence.csv")
+    cutbacks = lambda f: sum(1 for r in read_csv(f + "/history.csv")
+                             if r["cutbacks"] > 0)
     first = lambda rows: max([r["update_norm"] for r in rows
                               if r["increment"] == 1 and
                               math.isfinite(r["update_norm"])] or [0])
-    cutbacks = lambda f: sum(1 for r in read_csv(f + "/history.csv")
-                             if r["cutbacks"] > 0)
+    # Without stabilization and without the penetration limit the rigid
+    # mode is singular: a direct solver either says so (UMFPACK: the run
+    # fails, naming the singular system) or returns an update of
+    # round-off size in that mode (MUMPS, KLU).
+    result = run(tribos, prm("force_control_apart"), folder + "_off",
+                 sets + ["Nonlinear solver/Stabilization factor=0",
+                         "Nonlinear solver/Penetration limit=0"],
+                 expect_success=False)
+    free = read_csv(folder + "_off/convergence.csv")
     singular = (result.returncode != 0 and
                 "singular" in result.stdout + result.stderr)
     check(first(stabilized) < 1 and cutbacks(folder) == 0 and
           (first(free) > 1e6 or singular),
           "%s force control: stabilized updates bounded (%.1e, no "
-          "cutbacks); without stabilization the rigid mode is singular (%s)"
+          "cutbacks); without stabilization and penetration limit the "
+          "rigid mode is singular (%s)"
           % (method, first(stabilized),
              "the solver says so" if singular else
              "update of %.1e" % first(free)))
+    # Without stabilization but with the default penetration limit the
+    # first update of the rigid mode is cut where it would push a node
+    # deeper than half an element into the plane: the block lands, the
+    # run completes without cutbacks and the contact force carries the
+    # whole load (no springs take a share).
+    limited = folder + "_limited"
+    run(tribos, prm("force_control_apart"), limited,
+        sets + ["Nonlinear solver/Stabilization factor=0"])
+    rows = read_csv(limited + "/history.csv")
+    check(len(rows) == 10 and cutbacks(limited) == 0 and
+          abs(rows[-1]["pair0_normal_force"] - 0.5) <= 1e-8 and
+          first(read_csv(limited + "/convergence.csv")) < 1,
+          "%s force control without stabilization: the penetration limit "
+          "lands the block (first update %.2f, %d cutbacks), contact force "
+          "%.9f of 0.5"
+          % (method, first(read_csv(limited + "/convergence.csv")),
+             cutbacks(limited), rows[-1]["pair0_normal_force"]))
 
 # Very high penalty on Hertz 2D.
 E, nu = 1.0, 0.3

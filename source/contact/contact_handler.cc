@@ -6,6 +6,8 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
+#include <cmath>
+#include <set>
 #include <chrono>
 
 namespace tribos
@@ -87,6 +89,108 @@ namespace tribos
 
 
   template <int dim>
+  SlaveInput
+  ContactHandler<dim>::slave_input(const unsigned int               p,
+                                   const unsigned int               k,
+                                   const AffineConstraints<double> &homogeneous)
+  {
+    ContactPair<dim> &pair  = contact_pairs[p];
+    NodeState        &state = pair.current[k];
+    SlaveInput        slave;
+    slave.position          = pair.slave_positions[k];
+    slave.committed         = &pair.committed[k];
+    slave.law = pair.enforcement->law(pair, k, state, homogeneous);
+    slave.law.frozen_closed = monitor.frozen(p, k);
+    slave.law.frozen_stick  = monitor.frozen_stick(p, k);
+    slave.area              = pair.area[k];
+    slave.unknowns   = pair.enforcement->n_node_unknowns() > 0 ? &state.lambda :
+                                                                 nullptr;
+    slave.consistent = parameters.tangent ==
+                       Parameters::ContactTangent::consistent;
+    return slave;
+  }
+
+
+
+  template <int dim>
+  double
+  ContactHandler<dim>::step_limit(const TrilinosWrappers::MPI::Vector &trial,
+                                  const double                         t,
+                                  const double fraction,
+                                  const AffineConstraints<double> &homogeneous)
+  {
+    // What the trial search and evaluation change, to be put back.
+    std::vector<std::vector<NodeState>> states;
+    std::vector<std::set<std::pair<unsigned int, unsigned int>>> couplings;
+    for (const auto &pair : contact_pairs)
+    {
+      states.push_back(pair.current);
+      couplings.push_back(pair.couplings);
+    }
+    const bool   was_outdated = outdated;
+    const double seconds      = own_seconds;
+    const auto   volume       = exchange;
+
+    update(trial, t);
+    unsigned int n_max = 0;
+    for (const auto &pair : contact_pairs)
+      n_max = std::max(n_max, pair.discretization->max_element_dofs());
+    element_residual.resize(n_max);
+    std::vector<types::global_dof_index> dofs;
+    std::string                          refusal;
+    double                               limit = 1;
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+    {
+      auto &pair = contact_pairs[p];
+      pair.discretization->begin_assembly(pair, time, committed_time);
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      {
+        NodeState &state = pair.current[k];
+        if (!pair.owned[k] || pair.excluded[k])
+          continue;
+        // The gap at the trial point: its element's, or the distance to
+        // the master.
+        double gap = state.distance;
+        if (state.paired)
+        {
+          state.result = ContactPointResult();
+          const auto outcome =
+            pair.discretization->evaluate(pair,
+                                          k,
+                                          slave_input(p, k, homogeneous),
+                                          element_residual.data(),
+                                          nullptr,
+                                          dofs,
+                                          refusal);
+          if (outcome.kind == ElementOutcome::Kind::element)
+            gap = state.result.gap;
+        }
+        // From the last evaluation's gap g0 towards it linearly: the
+        // penetration may grow by fraction h.
+        const double g0 = states[p][k].result.gap;
+        if (!std::isfinite(gap) || !std::isfinite(g0) || gap >= g0)
+          continue;
+        const double allowed =
+          std::max(0., -g0) + fraction * pair.slave->nodes()[k].size;
+        if (-gap > allowed)
+          limit = std::min(limit, (g0 + allowed) / (g0 - gap));
+      }
+    }
+
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+    {
+      contact_pairs[p].current.swap(states[p]);
+      contact_pairs[p].couplings.swap(couplings[p]);
+    }
+    outdated    = was_outdated;
+    own_seconds = seconds;
+    exchange    = volume;
+    return Utilities::MPI::min(limit, mpi_communicator);
+  }
+
+
+
+  template <int dim>
   void
   ContactHandler<dim>::assemble(const bool                       with_matrix,
                                 const AffineConstraints<double> &constraints,
@@ -103,9 +207,7 @@ namespace tribos
       n_max = std::max(n_max, pair.discretization->max_element_dofs());
     element_residual.resize(n_max);
     element_matrix.resize(n_max * n_max);
-    double    *R = element_residual.data(), *K = element_matrix.data();
-    const bool consistent =
-      parameters.tangent == Parameters::ContactTangent::consistent;
+    double *R = element_residual.data(), *K = element_matrix.data();
 
     // Element buffers, reused for every slave node (sized per element).
     std::vector<types::global_dof_index> dofs, force_dofs;
@@ -183,15 +285,7 @@ namespace tribos
         state.point                   = x;
         if (state.paired)
         {
-          SlaveInput slave;
-          slave.position  = x;
-          slave.committed = &committed;
-          slave.law       = enforcement.law(pair, k, state, homogeneous);
-          slave.law.frozen_closed = monitor.frozen(p, k);
-          slave.law.frozen_stick  = monitor.frozen_stick(p, k);
-          slave.area              = pair.area[k];
-          slave.unknowns          = n_unknowns > 0 ? &state.lambda : nullptr;
-          slave.consistent        = consistent;
+          const SlaveInput     slave = slave_input(p, k, homogeneous);
           const ElementOutcome outcome =
             discretization.evaluate(pair, k, slave, R, K, dofs, refusal);
           if (outcome.kind == ElementOutcome::Kind::refused)

@@ -410,7 +410,11 @@ namespace tribos
       const double exponent =
         parameters.finite_element.axisymmetric ? 2. / 3. : (dim - 1.) / dim;
       stagnation_bound = 1e-10 * E_max * std::pow(volume, exponent);
-      traction_floor   = 1e-12 * E_max;
+      length_floor =
+        1e-14 *
+        std::pow(volume,
+                 parameters.finite_element.axisymmetric ? 1. / 3. : 1. / dim);
+      traction_floor = 1e-12 * E_max;
     }
     for (unsigned int d = 0; d < dim; ++d)
     {

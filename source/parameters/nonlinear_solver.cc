@@ -1,4 +1,5 @@
 #include <tribos/parameters/nonlinear_solver.h>
+#include <tribos/base/text.h>
 
 namespace tribos
 {
@@ -17,20 +18,23 @@ namespace tribos
                         "that confirm its update).");
       prm.declare_entry("Residual tolerance",
                         "1e-8",
-                        dealii::Patterns::Double(0),
-                        "Converged when |R| <= tol * max(largest |R| of the "
-                        "increment, |f_int - f_ext| over all dofs including "
-                        "the constrained ones, i.e. the reactions) + "
-                        "Absolute residual tolerance.");
+                        dealii::Patterns::Double(0, 0.1),
+                        "Converged when |R| <= tol * max(|R| at the start of "
+                        "the increment, |f_int - f_ext| over all dofs "
+                        "including the constrained ones, i.e. the "
+                        "reactions) + Absolute residual tolerance. At most 0.1: "
+                        "a relative tolerance near 1 accepts the first "
+                        "iterate, far from equilibrium.");
       prm.declare_entry("Absolute residual tolerance",
                         "1e-12",
-                        dealii::Patterns::Double(0),
+                        dealii::Patterns::Double(0, Text::largest_value),
                         "Floor of the residual test, in force units.");
       prm.declare_entry("Increment tolerance",
                         "1e-8",
-                        dealii::Patterns::Double(0),
+                        dealii::Patterns::Double(0, 0.1),
                         "Converged also requires |du| <= tol * |u increment "
-                        "of the step| (or |du| <= tol * |u| if larger).");
+                        "of the step| (or |du| <= tol * |u| if larger); at "
+                        "most 0.1.");
       prm.declare_entry("Line search",
                         "true",
                         dealii::Patterns::Bool(),
@@ -39,6 +43,17 @@ namespace tribos
                         "6",
                         dealii::Patterns::Integer(0, 30),
                         "Halvings of the step length at most.");
+      prm.declare_entry(
+        "Penetration limit",
+        "0.5",
+        dealii::Patterns::Double(0, Text::largest_value),
+        "The most a Newton step may deepen a contact node's penetration, "
+        "in units of its element size (0: no limit). A step that would "
+        "carry a node deeper is shortened to the length at which the first "
+        "node reaches the limit (the gaps at the full step, evaluated "
+        "without the bulk, interpolated): a body held by a few contact "
+        "nodes (a load-controlled first touch) then sinks into the master "
+        "step by step instead of through it in one.");
       prm.declare_entry("Check tangent",
                         "false",
                         dealii::Patterns::Bool(),
@@ -63,7 +78,7 @@ namespace tribos
       prm.declare_entry(
         "Stabilization factor",
         "0",
-        dealii::Patterns::Double(0),
+        dealii::Patterns::Double(0, Text::largest_value),
         "0: off. Otherwise every dof gets a spring to an anchor, its "
         "position at the start of the increment, of stiffness factor * E / "
         "h^2 * (integral of its shape function) (E of the body, h the cell "
@@ -107,6 +122,7 @@ namespace tribos
       line_search           = prm.get_bool("Line search");
       max_line_search_steps = prm.get_integer("Maximum line search steps");
       check_tangent         = prm.get_bool("Check tangent");
+      penetration_limit     = prm.get_double("Penetration limit");
       tangent_shift         = prm.get_double("Tangent shift");
       stabilization         = prm.get_double("Stabilization factor");
       stabilization_limit   = prm.get_double("Stabilization limit");

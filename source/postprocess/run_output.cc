@@ -157,7 +157,8 @@ namespace tribos
                                                   "relative_residual",
                                                   "update_norm",
                                                   "line_search_step",
-                                                  "order"},
+                                                  "order",
+                                                  "correction_norm"},
                          root,
                          keep);
                      });
@@ -320,7 +321,8 @@ namespace tribos
                               r.relative_residual,
                               r.update_norm,
                               r.step_length,
-                              r.order});
+                              r.order,
+                              r.correction_norm});
   }
 
 

@@ -16,6 +16,13 @@ namespace tribos
   namespace Text
   {
     /**
+     * The largest magnitude a number of the input may have: products of
+     * two such numbers stay finite (1e308 as a Young's modulus made the
+     * penalty and the residual infinite, reported as a non-convergence).
+     */
+    constexpr double largest_value = 1e150;
+
+    /**
      * Split @p text at every @p separator that is not inside parentheses, so
      * that function expressions such as `if(t<1, t, 1)` survive a split at
      * commas. Pieces are trimmed; empty input gives an empty list.

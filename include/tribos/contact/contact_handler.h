@@ -138,6 +138,20 @@ namespace tribos
              TrilinosWrappers::MPI::Vector   &contact_forces);
 
     /**
+     * The longest step in (0, 1] from the last evaluated state towards the
+     * unknowns @p trial (ghosted like update()'s) at which no slave node's
+     * penetration grows by more than @p fraction of its element size: the
+     * gaps at @p trial (searched and evaluated, @p homogeneous giving the
+     * laws' fixed components) interpolated linearly from the last
+     * evaluation's. Leaves the contact state as it was. Collective.
+     */
+    double
+    step_limit(const TrilinosWrappers::MPI::Vector &trial,
+               const double                         time,
+               const double                         fraction,
+               const AffineConstraints<double>     &homogeneous);
+
+    /**
      * The weight of the contact forces and tangent in @p rhs, @p matrix
      * and @p free_residual (not in @p full_residual and @p contact_forces):
      * 1 - alpha_f of a generalized-alpha step, 1 otherwise.
@@ -286,6 +300,13 @@ namespace tribos
     }
 
   private:
+    /** The law of slave node @p k of pair @p p at its @p state (the
+     * enforcement's, with the chattering remedy's holds). */
+    SlaveInput
+    slave_input(const unsigned int               p,
+                const unsigned int               k,
+                const AffineConstraints<double> &homogeneous);
+
     const Parameters::Contact    &parameters;
     MPI_Comm                      mpi_communicator;
     std::vector<ContactPair<dim>> contact_pairs;

@@ -108,6 +108,8 @@ namespace tribos
     }
     void
     distribute(Vector &update, const bool first_iteration) const override;
+    double
+    step_limit(const Vector &update, const bool first_iteration) override;
     Vector &
     solution() override
     {
@@ -122,7 +124,7 @@ namespace tribos
     Norms
     round_off_floor() const override
     {
-      return {0, traction_floor};
+      return {length_floor, traction_floor};
     }
     double
     stagnation_residual_bound() const override
@@ -436,6 +438,10 @@ namespace tribos
      * (axisymmetric: V with the ring factor, A = V^(2/3)).
      */
     double stagnation_bound = 0;
+    /** Displacement corrections below this are round-off (1e-14 of the
+     * model's length scale): the update test's floor, without which an
+     * increment that moves nothing (End time 1e-300) never converged. */
+    double length_floor = 0;
     /** Tractions below 1e-12 E_max are round-off: the floor of the
      * multipliers' convergence test. */
     double                   traction_floor = 0;

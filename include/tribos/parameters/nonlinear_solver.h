@@ -20,6 +20,9 @@ namespace tribos
       bool         line_search;
       unsigned int max_line_search_steps;
       bool         check_tangent;
+      /** The largest increase of a contact node's penetration in one
+       * Newton step, over its element size (0: no limit). */
+      double penetration_limit;
       /** Relative shift of the tangent's diagonal before every solve. */
       double tangent_shift;
       /** Stabilization spring factor (0: off). */

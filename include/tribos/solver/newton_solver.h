@@ -55,14 +55,29 @@ namespace tribos
       return linear_solves;
     }
 
+    /** Steps the problem limited so far (NonlinearProblem::step_limit()),
+     * and those the line search shortened. */
+    unsigned int
+    n_limited_steps() const
+    {
+      return n_limited;
+    }
+    unsigned int
+    n_line_search_steps() const
+    {
+      return n_shortened;
+    }
+
   private:
     /** Where the iterations of one solve stand. */
     struct Iterate
     {
       unsigned int iteration = 0;
-      /** The largest free residual since the last relaxation (the scale
-       * of the relative residual test). */
-      double reference = 0;
+      /** The free residual at the start of the increment or of the last
+       * relaxation (the scale of the relative residual test, with the
+       * force scale), and whether to take it at the next assembly. */
+      double reference       = 0;
+      bool   reset_reference = true;
       /** The line search's step length of the last update. */
       double step_length = std::numeric_limits<double>::quiet_NaN();
       /** The undamped Newton correction (a line search shortens the step
@@ -131,6 +146,8 @@ namespace tribos
     const Parameters::NonlinearSolver &parameters;
     LinearSolver                      &linear_solver;
     unsigned int                       linear_solves = 0;
+    unsigned int                       n_limited     = 0;
+    unsigned int                       n_shortened   = 0;
     /** The linear solver methods the log has named. */
     std::set<std::string> announced;
   };

@@ -115,6 +115,18 @@ namespace tribos
     virtual void
     distribute(Vector &update, const bool first_iteration) const = 0;
 
+    /**
+     * The longest step in (0, 1] the problem allows along @p update
+     * (distributed) from the current solution (contact: no node carried
+     * far through a surface); 1 by default. May evaluate the problem at
+     * trial points, but leaves its state as it was.
+     */
+    virtual double
+    step_limit(const Vector & /*update*/, const bool /*first_iteration*/)
+    {
+      return 1;
+    }
+
     /** The unknowns (locally owned entries). */
     virtual Vector &
     solution() = 0;

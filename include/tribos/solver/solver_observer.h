@@ -18,6 +18,9 @@ namespace tribos
     double update_norm = 0;
     /** The line search's step length of that update (NaN at first). */
     double step_length = 0;
+    /** The undamped Newton correction that update was a step along (NaN
+     * at first): the linear solve's answer. */
+    double correction_norm = 0;
     /** The observed order of convergence (NaN until three residuals). */
     double order = 0;
   };
