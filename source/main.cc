@@ -8,6 +8,7 @@
  */
 
 #include <tribos/base/exceptions.h>
+#include <tribos/base/interruption.h>
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/run/simulation.h>
 
@@ -60,6 +61,13 @@ namespace
     catch (const tribos::NonConvergence &error)
     {
       return {2, std::string("NO CONVERGENCE: ") + error.what()};
+    }
+    catch (const tribos::Interrupted &signal)
+    {
+      return {128 + signal.signal_number(),
+              std::string("INTERRUPTED: ") + signal.what() +
+                "; summary.txt says so, outputs of the converged steps are "
+                "kept"};
     }
     catch (const dealii::ExceptionBase &error)
     {
@@ -287,6 +295,9 @@ main(int argc, char **argv)
                                        numbers::invalid_unsigned_int);
   const bool       root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   FailureHandshake handshake;
+  // SIGTERM and SIGINT stop the run between Newton iterations with a
+  // summary (after MPI's start, which may install handlers of its own).
+  tribos::Interruption::install();
 
   try
   {

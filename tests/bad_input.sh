@@ -131,6 +131,60 @@ expect mortar_pair_key "discretization <segment>" "$tribos" \
 expect mortar_rigid "needs a deformable master" "$tribos" \
   "$tests/sliding_block.prm" \
   --set "Contact/Pairs=2 : plane : discretization=mortar"
+# Issue 47: input that ran to a wrong answer or failed late (exit 2, with
+# partial output) before.
+blocks=$tests/sliding_blocks_3d.prm
+expect duplicate_pair "are the same slave surface against the same master" \
+  "$tribos" "$blocks" --set "Contact/Pairs=14 : 5 ; 14 : 5"
+expect extra_body_values "lists 3 values, but the mesh's body ids run from 0 to 1" \
+  "$tribos" "$blocks" --set "Materials/Young's modulus=10, 1, 5"
+for value in inf 1e308 nan -inf; do
+  expect "youngs_modulus_$value" "Materials/Young's modulus" "$tribos" "$good" \
+    --set "Materials/Young's modulus=$value"
+done
+expect density_inf "Materials/Density" "$tribos" "$good" \
+  --set "Materials/Density=inf" --set "Time stepping/Integrator=newmark"
+expect long_value "(131000 bytes)" "$tribos" "$good" \
+  --set "Materials/Young's modulus=$(printf '9%.0s' $(seq 131000))"
+expect huge_radius "1e+150 (inclusive)]" "$tribos" \
+  "$tests/ironing_2d.prm" --set "Scene/Cylinder over block/Radius=1e308"
+expect refinement_too_large "Parameter <Scene/Refinement> = 10: the mesh would have about" \
+  "$tribos" "$blocks" --set "Scene/Refinement=10"
+expect loose_tolerance "<Nonlinear solver/Increment tolerance>" "$tribos" "$good" \
+  --set "Nonlinear solver/Increment tolerance=1e150"
+expect extra_coordinates "<Scene/Block/Upper corner> lists 7 coordinates" \
+  "$tribos" "$contact" --set "Scene/Block/Upper corner=1, 2, 3, 4, 5, 6, 7"
+expect extra_subdivisions "<Scene/Block/Subdivisions> lists 4 cell counts" \
+  "$tribos" "$contact" --set "Scene/Block/Subdivisions=2, 2, 2, 2"
+expect nan_corner "Scene/Block/Upper corner" "$tribos" "$contact" \
+  --set "Scene/Block/Upper corner=1, nan"
+expect zero_width_block "has no width in coordinate 0" "$tribos" "$contact" \
+  --set "Scene/Block/Upper corner=0, 0.05"
+expect nan_plane "Contact/Rigid surfaces" "$tribos" "$contact" \
+  --set "Contact/Rigid surfaces=plane : plane : 0, nan, 0 : 0, 1, 0 : 0, 0"
+expect set_undeclared "is not a declared parameter" "$tribos" "$contact" \
+  --set "Scene/Block/Lower cornr=0, 0"
+expect set_not_allowed "does not match the given pattern <[Integer range 1" \
+  "$tribos" "$contact" --set "Time stepping/Number of steps=1 0"
+expect set_no_break_space "<1<U+00A0>0>" "$tribos" "$good" \
+  --set "Materials/Young's modulus=1$(printf '\xc2\xa0')0"
+# Gmsh files deal.II's reader takes for garbage, reads short, or refuses in
+# its own words.
+meshes=$out/meshes && mkdir -p "$meshes"
+head -c 150 "$tests/two_squares.msh" > "$meshes/truncated.msh"
+printf '$MeshFormat\n2.2 1 8\n' > "$meshes/binary.msh"
+sed -e 's/^3 3 2 1 1 1 2 5 4$/3 10 2 1 1 1 2 5 4 1 2 5 4 5/' \
+  "$tests/two_squares.msh" > "$meshes/quad9.msh"
+echo "not a mesh" > "$meshes/garbage.msh"
+for mesh in truncated:"the file is incomplete" binary:"a binary gmsh file" \
+  quad9:"9-node (second-order) quadrilaterals" garbage:"not a gmsh mesh file"; do
+  expect "gmsh_${mesh%%:*}" "${mesh#*:}" "$tribos" "$tests/gmsh_import.prm" \
+    --set "Scene/Mesh file=$meshes/${mesh%%:*}.msh"
+done
+expect gmsh_boundary_ids "boundary ids are 0, 1, 2 (a gmsh mesh's" "$tribos" \
+  "$tests/gmsh_import.prm" --set "Scene/Mesh file=$tests/two_squares.msh" \
+  --set "Boundary conditions/Dirichlet=7 : xy : 0, 0"
+
 # A boundary id the mesh does not have, on a distributed mesh: the outer
 # faces of a process's ghost layer are boundary faces with id 0, and -np 2
 # accepted a condition on boundary 0 of a mesh whose sides are tagged 1-4

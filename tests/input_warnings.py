@@ -1,7 +1,9 @@
 """Suspicious but legal input runs (exit status 0) and warns on stderr and in
 summary.txt, naming the entry: a parameter file that sets nothing; a
 penalty below 1e-3 E/h or above 1e8 E/h (relative or absolute); a contact
-pair whose slave never comes within the search distance of its master.
+pair whose slave never comes within the search distance of its master;
+a model that nothing loads (no load, no nonzero Dirichlet value, no moving
+rigid surface); a body without support or contact surface.
 Sensible input warns about nothing."""
 
 import sys
@@ -22,6 +24,18 @@ cases = [
     ("soft_tangential_penalty", block,
      ["Contact/Tangential penalty factor=1e-5*E/h"],
      "Contact/Tangential penalty factor"),
+    # Issue 47: nothing loads or prescribes anything (ran to "completed"
+    # silently before); a body that nothing holds.
+    ("nothing_loaded", tests + "/ironing_2d.prm",
+     ["Boundary conditions/Dirichlet=", "Time stepping/Number of steps=2",
+      "Time stepping/End time=0.2"],
+     "nothing loads the model"),
+    ("body_not_held", tests + "/ironing_2d.prm",
+     ["Boundary conditions/Dirichlet=2 : xy : 0, 0",
+      "Boundary conditions/Neumann=3 : 0, -0.01*t", "Contact/Pairs=",
+      "Time stepping/Number of steps=1", "Time stepping/End time=0.1",
+      "Nonlinear solver/Stabilization factor=1e-3"],
+     "nothing holds its rigid-body motion"),
     ("never_near", block,
      ["Contact/Rigid surfaces=plane : plane : 0, -1, 0 : 0, 1, 0 : 0, 0",
       "Contact/Search distance=0.1"],

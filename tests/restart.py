@@ -8,8 +8,10 @@ plasticity with the plate (axisymmetric cylinder: the plastic history),
 dynamics with friction (block sliding to a stop: velocities, energies).
 MPI (only if mpirun is found): a frictional 3D two-block scene run with
 np 2 and restarted with np 1, 2 and 3 from its step-2 checkpoint, and
-with np 2 from the serial run's; with Lagrange multipliers from np 2 to 3. Bad restarts (no checkpoint, another mesh)
-exit 1 with a message and leave the output alone."""
+with np 2 from the serial run's; with Lagrange multipliers from np 2 to 3. Bad restarts (no checkpoint,
+another mesh; the same cells on a moved mesh, other materials, an end time
+before the checkpoint, a checkpoint with one byte changed) exit 1 with a
+message and leave the output alone."""
 
 import os
 import shutil
@@ -102,10 +104,31 @@ if has_mpi:
 # Bad restarts: a clear message, exit 1, the earlier output untouched.
 reference = out + "/sliding_penalty"
 before = open(reference + "/history.csv").read()
+# A copy of the step-4 checkpoint with one byte of its state changed (past
+# the header: before issue 47 it was read without complaint).
+corrupt = out + "/corrupt_checkpoint"
+shutil.rmtree(corrupt, ignore_errors=True)
+shutil.copytree(reference + "/checkpoint-00004", corrupt)
+with open(corrupt + "/state.bin", "r+b") as f:
+    data = bytearray(f.read())
+    data[len(data) // 2] ^= 0x01
+    f.seek(0)
+    f.write(data)
 for name, sets, directory, message in [
         ("missing", [], out + "/no_such_checkpoint", "no checkpoint there"),
         ("other mesh", ["Scene/Refinement=1"],
-         reference + "/checkpoint-00004", "cells")]:
+         reference + "/checkpoint-00004", "cells"),
+        # The same cells and dofs on a moved mesh, other materials, other
+        # pairs, an end time before the checkpoint's t = 1 (all accepted
+        # before issue 47; the last "completed" doing nothing).
+        ("moved mesh", ["Scene/Block/Lower corner=0, 0.1",
+                        "Scene/Block/Upper corner=1, 0.6"],
+         reference + "/checkpoint-00004", "the mesh differs"),
+        ("other material", ["Materials/Young's modulus=50"],
+         reference + "/checkpoint-00004", "Materials/Young's modulus"),
+        ("end time before the checkpoint", ["Time stepping/End time=0.5"],
+         reference + "/checkpoint-00004", "nothing is left to do"),
+        ("changed byte", [], corrupt, "checksum")]:
     result = run(tribos, tests + "/sliding_block.prm", reference, sets,
                  expect_success=False, extra=["--restart", directory])
     check(result.returncode == 1 and message in result.stderr and

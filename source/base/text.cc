@@ -3,6 +3,8 @@
 #include <deal.II/base/exceptions.h>
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace tribos
@@ -17,6 +19,60 @@ namespace tribos
         return "";
       const auto last = text.find_last_not_of(" \t\n\r");
       return text.substr(first, last - first + 1);
+    }
+
+
+
+    std::string
+    abbreviate(const std::string &text, const std::size_t max_length)
+    {
+      std::string       shown;
+      std::size_t       n_shown = 0, i = 0;
+      const std::size_t n   = text.size();
+      const auto        hex = [](const unsigned long value, const int width)
+      {
+        char buffer[16];
+        std::snprintf(buffer, sizeof(buffer), "%0*lX", width, value);
+        return std::string(buffer);
+      };
+      for (; i < n && n_shown < max_length; ++n_shown)
+      {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c < 0x80)
+        {
+          shown += (c < 0x20 || c == 0x7F) ? "<0x" + hex(c, 2) + ">" :
+                                             std::string(1, text[i]);
+          ++i;
+          continue;
+        }
+        // A UTF-8 sequence: its length from the lead byte.
+        const std::size_t length = (c >= 0xF0) ? 4 :
+                                   (c >= 0xE0) ? 3 :
+                                   (c >= 0xC0) ? 2 :
+                                                 0;
+        bool              valid  = length > 0 && i + length <= n;
+        for (std::size_t k = 1; valid && k < length; ++k)
+          valid = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
+        if (!valid)
+        {
+          shown += "<0x" + hex(c, 2) + ">";
+          ++i;
+          continue;
+        }
+        unsigned long code = c & (0xFF >> (length + 1));
+        for (std::size_t k = 1; k < length; ++k)
+          code = (code << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+        const bool invisible =
+          code == 0xA0 || code == 0xAD || (code >= 0x2000 && code <= 0x200F) ||
+          (code >= 0x2028 && code <= 0x202F) || code == 0x2060 ||
+          code == 0xFEFF || code == 0x3000 || (code >= 0x80 && code < 0xA0);
+        shown +=
+          invisible ? "<U+" + hex(code, 4) + ">" : text.substr(i, length);
+        i += length;
+      }
+      if (i < n)
+        shown += "... (" + std::to_string(n) + " bytes)";
+      return shown;
     }
 
 
@@ -61,10 +117,16 @@ namespace tribos
         const double value = std::strtod(piece.c_str(), &end);
         AssertThrow(!piece.empty() && end != nullptr && *end == '\0',
                     dealii::ExcMessage("Parameter <" + entry +
-                                       ">: cannot read <" + piece +
-                                       "> as a number in <" + text +
+                                       ">: cannot read <" + abbreviate(piece) +
+                                       "> as a number in <" + abbreviate(text) +
                                        ">. Expected a comma-separated "
                                        "list of numbers."));
+        AssertThrow(std::isfinite(value) && std::abs(value) <= largest_value,
+                    dealii::ExcMessage(
+                      "Parameter <" + entry + ">: <" + abbreviate(piece) +
+                      "> in <" + abbreviate(text) +
+                      "> is not a finite number of magnitude at most 1e150 "
+                      "(products of two input values must stay finite)."));
         values.push_back(value);
       }
       return values;

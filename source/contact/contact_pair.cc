@@ -1,5 +1,6 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/base/import_constraints.h>
+#include <tribos/base/text.h>
 #include <tribos/contact/contact_pair.h>
 
 #include <deal.II/base/mpi.h>
@@ -230,7 +231,11 @@ namespace tribos
                     ExcMessage("Parameter <Contact/Pairs> names boundary id " +
                                std::to_string(id) +
                                ", which the scene does not have. Its "
-                               "boundary ids are listed in the README."));
+                               "boundary ids are " +
+                               Text::join(existing) +
+                               " (the README lists them per scene; a gmsh "
+                               "mesh's are the physical group tags of its "
+                               "boundary lines in 2D, surfaces in 3D)."));
         boundary_ids.insert(id);
       }
       auto &s = surfaces[boundary_ids];

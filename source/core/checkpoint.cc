@@ -4,15 +4,31 @@
 
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 namespace tribos
 {
   namespace
   {
     const char *const magic = "tribos checkpoint";
-  }
+
+    /** FNV-1a, 64 bits: any change of a byte changes it. */
+    std::uint64_t
+    checksum(const std::string &bytes)
+    {
+      std::uint64_t hash = 14695981039346656037ull;
+      for (const char c : bytes)
+      {
+        hash ^= static_cast<unsigned char>(c);
+        hash *= 1099511628211ull;
+      }
+      return hash;
+    }
+  } // namespace
 
 
 
@@ -31,10 +47,17 @@ namespace tribos
                                      (temporary / "state.bin").string() +
                                      ">."));
       {
+        std::ostringstream payload;
+        {
+          boost::archive::binary_oarchive archive(payload);
+          archive << *this;
+        }
+        const std::string               bytes = payload.str();
         boost::archive::binary_oarchive archive(out);
         const std::string               header  = magic;
         const unsigned int              version = format;
-        archive << header << version << *this;
+        const std::uint64_t             sum     = checksum(bytes);
+        archive << header << version << sum << bytes;
       }
       out.flush();
       AssertThrow(out,
@@ -70,18 +93,31 @@ namespace tribos
     {
       boost::archive::binary_iarchive archive(in);
       archive >> header >> version;
-      AssertThrow(header == magic && version == format,
-                  dealii::ExcMessage("not a tribos checkpoint of format " +
-                                     std::to_string(format)));
-      archive >> *this;
+      if (header != magic || version != format)
+        throw std::runtime_error("not a tribos checkpoint of format " +
+                                 std::to_string(format));
+      std::uint64_t sum = 0;
+      std::string   bytes;
+      archive >> sum >> bytes;
+      if (sum != checksum(bytes))
+        throw std::runtime_error("its checksum does not match its contents: "
+                                 "the file changed after it was written");
+      std::istringstream              payload(bytes);
+      boost::archive::binary_iarchive state(payload);
+      state >> *this;
     }
     catch (const std::exception &e)
     {
-      AssertThrow(false,
-                  dealii::ExcMessage("--restart <" + directory + ">: " + file +
-                                     " is not a readable tribos "
-                                     "checkpoint (" +
-                                     e.what() + ")."));
+      // A message of its own: the text of a deal.II exception would carry
+      // its stack trace into the user's error.
+      std::ostringstream reason;
+      if (const auto *deal_ii = dynamic_cast<const dealii::ExceptionBase *>(&e))
+        deal_ii->print_info(reason);
+      else
+        reason << e.what();
+      throw dealii::ExcMessage("--restart <" + directory + ">: " + file +
+                               " is not a readable tribos checkpoint (" +
+                               reason.str() + ").");
     }
   }
 } // namespace tribos

@@ -17,6 +17,7 @@ namespace tribos
         body_ids.insert(cell->material_id());
     body_ids = Utilities::MPI::compute_set_union(body_ids, mpi_communicator);
     const types::material_id max_body = *body_ids.rbegin();
+    m.check_body_count(max_body);
     // The same per-body data builds the dim materials and, for an
     // axisymmetric model, their 3D versions.
     const auto make = [&m](auto dimension, const unsigned int body)

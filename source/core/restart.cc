@@ -6,6 +6,7 @@
  * no partition changes).
  */
 
+#include <tribos/base/exceptions.h>
 #include <tribos/core/problem.h>
 
 #include <deal.II/base/mpi.h>
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -187,10 +189,63 @@ namespace tribos
       c.scalars = dynamics_state->scalars();
     }
     c.pvd_records = pvd_records;
+    c.fingerprint = fingerprint();
+    c.geometry    = geometry_moments();
 
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       c.save(directory);
     MPI_Barrier(mpi_communicator);
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, std::string>
+  Problem<dim>::fingerprint() const
+  {
+    const auto &m    = parameters.materials;
+    const auto  list = [](const auto &values)
+    {
+      std::ostringstream text;
+      text.precision(17);
+      for (unsigned int i = 0; i < values.size(); ++i)
+        text << (i > 0 ? ", " : "") << values[i];
+      return text.str();
+    };
+    std::string pairs;
+    for (const auto &pair : parameters.contact.pairs)
+      pairs += (pairs.empty() ? "" : " ; ") + pair.text;
+    return {{"Scene/Name", parameters.scene.name},
+            {"Contact/Pairs", pairs},
+            {"Materials/Model", list(m.models)},
+            {"Materials/Young's modulus", list(m.youngs_moduli)},
+            {"Materials/Poisson's ratio", list(m.poissons_ratios)},
+            {"Materials/Yield stress", list(m.yield_stresses)}};
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, double>
+  Problem<dim>::geometry_moments() const
+  {
+    // Two sums over the owned cells' vertices: a weighted first moment (an
+    // irrational weight per coordinate) and the second moment.
+    const double weights[3] = {0.7071067811865476,
+                               0.5773502691896258,
+                               0.3183098861837907};
+    double       first = 0, second = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            first += weights[d] * cell->vertex(v)[d];
+            second += cell->vertex(v)[d] * cell->vertex(v)[d];
+          }
+    return {
+      {"first vertex moment", Utilities::MPI::sum(first, mpi_communicator)},
+      {"second vertex moment", Utilities::MPI::sum(second, mpi_communicator)}};
   }
 
 
@@ -218,6 +273,43 @@ namespace tribos
     require(c.dofs_per_cell, fe->n_dofs_per_cell(), "dofs per cell");
     require(c.n_dofs, dof_handler.n_dofs(), "dofs");
     require(c.n_multipliers, n_multipliers, "contact multipliers");
+    // The same sizes on another geometry or other materials would restart
+    // a state that does not belong to the model.
+    for (const auto &[name, value] : fingerprint())
+    {
+      const auto stored = c.fingerprint.find(name);
+      AssertThrow(stored != c.fingerprint.end() && stored->second == value,
+                  ExcMessage(
+                    where + "the checkpoint was written with " + name + " <" +
+                    (stored == c.fingerprint.end() ? "" : stored->second) +
+                    ">, this run has <" + value +
+                    ">: restart with the parameter file of the run "
+                    "that wrote it."));
+    }
+    for (const auto &[name, value] : geometry_moments())
+    {
+      const auto   stored = c.geometry.find(name);
+      const double scale  = std::max(std::abs(value), 1e-300);
+      AssertThrow(stored != c.geometry.end() &&
+                    std::abs(stored->second - value) <= 1e-9 * scale,
+                  ExcMessage(where +
+                             "the mesh differs from the checkpoint's "
+                             "(its vertices moved: " +
+                             name + " " +
+                             (stored == c.geometry.end() ?
+                                std::string("missing") :
+                                to_scientific(stored->second)) +
+                             " there, " + to_scientific(value) +
+                             " here) although cells and dofs agree: restart "
+                             "with the scene and mesh of the run that wrote "
+                             "it."));
+    }
+    AssertThrow(c.stepper.time < parameters.time_stepping.end_time,
+                ExcMessage(where + "the checkpoint is at t = " +
+                           to_scientific(c.stepper.time) +
+                           ", at or past Time stepping/End time = " +
+                           to_scientific(parameters.time_stepping.end_time) +
+                           ": nothing is left to do."));
     AssertThrow(c.stepper.step < parameters.time_stepping.n_steps,
                 ExcMessage(where + "the checkpoint is at step " +
                            std::to_string(c.stepper.step) +

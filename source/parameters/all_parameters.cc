@@ -1,5 +1,7 @@
+#include <tribos/base/text.h>
 #include <tribos/parameters/all_parameters.h>
 
+#include <algorithm>
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 #include <filesystem>
@@ -188,17 +190,33 @@ namespace tribos
           }
           prm.set(entry, value);
         }
-        catch (const dealii::ExceptionBase &)
+        catch (const dealii::ExceptionBase &error)
         {
+          // Which of the two: an entry that does not exist, or a value its
+          // pattern refuses (the pattern says what it allows).
+          const bool declared =
+            n_entered == sections.size() &&
+            dynamic_cast<const dealii::ParameterHandler::ExcEntryUndeclared *>(
+              &error) == nullptr;
           for (; n_entered > 0; --n_entered)
             prm.leave_subsection();
+          const std::string shown = "--set <" + Text::abbreviate(path) + "=" +
+                                    Text::abbreviate(value) + ">: ";
+          AssertThrow(declared,
+                      dealii::ExcMessage(
+                        shown + "<" + Text::abbreviate(path) +
+                        "> is not a declared parameter. Run 'tribos "
+                        "--print-parameters' for every entry and its "
+                        "allowed values."));
+          std::ostringstream reason;
+          error.print_info(reason);
+          std::string why = reason.str();
+          std::replace(why.begin(), why.end(), '\n', ' ');
           AssertThrow(false,
                       dealii::ExcMessage(
-                        "--set <" + assignment + ">: <" + path +
-                        "> is not a declared parameter, or <" + value +
-                        "> is not an allowed value for it. Run "
-                        "'tribos --print-parameters' for every entry "
-                        "and its allowed values."));
+                        shown + "<" + Text::abbreviate(value) +
+                        "> is not an allowed value of <" + path +
+                        ">: " + Text::abbreviate(Text::trim(why), 400)));
         }
         for (; n_entered > 0; --n_entered)
           prm.leave_subsection();

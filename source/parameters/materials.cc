@@ -26,13 +26,14 @@ namespace tribos
                         "0.3",
                         dealii::Patterns::Anything(),
                         "Per body id or one value for all; in [0, 0.5).");
-      prm.declare_entry("Yield stress",
-                        "1e300",
-                        dealii::Patterns::Anything(),
-                        "J2 plasticity: initial yield stress s0 of (36), per "
-                        "body id or one for all; > 0.");
+      prm.declare_entry(
+        "Yield stress",
+        "1e100",
+        dealii::Patterns::Anything(),
+        "J2 plasticity: initial yield stress s0 of (36) (the default: no yield), per "
+        "body id or one for all; > 0.");
       prm.declare_entry("Saturation yield stress",
-                        "1e300",
+                        "1e100",
                         dealii::Patterns::Anything(),
                         "J2 plasticity: s_inf of (36), >= s0.");
       prm.declare_entry("Hardening exponent",
@@ -122,6 +123,34 @@ namespace tribos
                     "value for all bodies."));
       return values[body_id];
     }
+
+    void
+    Materials::check_body_count(const unsigned int max_body_id) const
+    {
+      const auto check =
+        [max_body_id](const std::size_t n_values, const std::string &entry)
+      {
+        AssertThrow(n_values <= 1 || n_values <= max_body_id + 1,
+                    dealii::ExcMessage(
+                      "Parameter <Materials/" + entry + "> lists " +
+                      std::to_string(n_values) +
+                      " values, but the mesh's "
+                      "body ids run from 0 to " +
+                      std::to_string(max_body_id) +
+                      ": give one value per body id or a single value for "
+                      "all bodies."));
+      };
+      check(models.size(), "Model");
+      check(youngs_moduli.size(), "Young's modulus");
+      check(poissons_ratios.size(), "Poisson's ratio");
+      check(yield_stresses.size(), "Yield stress");
+      check(saturation_yield_stresses.size(), "Saturation yield stress");
+      check(hardening_exponents.size(), "Hardening exponent");
+      check(linear_hardening_moduli.size(), "Linear hardening modulus");
+      check(densities.size(), "Density");
+    }
+
+
 
     template const double &
     Materials::for_body(const std::vector<double> &,

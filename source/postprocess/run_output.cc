@@ -109,13 +109,18 @@ namespace tribos
                       ExcMessage("Parameter <Output/Directory> = <" + dir +
                                  ">: cannot create the directory (" +
                                  error.message() + ")."));
-          // Remove the series files of an earlier run, so that the folder
-          // holds one consistent run; other files are left alone.
-          // A restart keeps those of the steps up to its checkpoint.
+          directory_lock =
+            std::make_unique<DirectoryLock>(dir, "Output/Directory");
+          // Remove the series files and checkpoints of an earlier run, so
+          // that the folder holds one consistent run; other files are left
+          // alone. A restart keeps those of the steps up to its checkpoint
+          // (and the checkpoint it reads).
+          std::vector<std::filesystem::path> stale;
           for (const auto &entry : std::filesystem::directory_iterator(dir))
           {
             const std::string name = entry.path().filename().string();
-            for (const std::string prefix : {"solution-", "contact-"})
+            for (const std::string prefix :
+                 {"solution-", "contact-", "checkpoint-"})
               if (name.rfind(prefix, 0) == 0)
               {
                 unsigned int step = 0;
@@ -126,11 +131,20 @@ namespace tribos
                 catch (...)
                 {
                 }
-                if (entry.is_regular_file() &&
-                    (!restart || step > restart->stepper.step))
-                  std::filesystem::remove(entry.path());
+                const bool      is_checkpoint = prefix == "checkpoint-";
+                std::error_code same;
+                if ((is_checkpoint ? entry.is_directory() :
+                                     entry.is_regular_file()) &&
+                    (!restart || step > restart->stepper.step) &&
+                    !(restart &&
+                      std::filesystem::equivalent(entry.path(),
+                                                  parameters.restart_directory,
+                                                  same)))
+                  stale.push_back(entry.path());
               }
           }
+          for (const auto &path : stale)
+            std::filesystem::remove_all(path);
         }
       });
 

@@ -1,4 +1,5 @@
 #include <tribos/base/exceptions.h>
+#include <tribos/base/interruption.h>
 #include <tribos/run/simulation.h>
 
 #include <deal.II/base/mpi.h>
@@ -79,11 +80,23 @@ namespace tribos
 
     make_solvers();
     step_clock.restart();
-    stepper->run(problem,
-                 *this,
-                 start,
-                 start.change_increment > 0 ? &problem.restart_change() :
-                                              nullptr);
+    try
+    {
+      stepper->run(problem,
+                   *this,
+                   start,
+                   start.change_increment > 0 ? &problem.restart_change() :
+                                                nullptr);
+    }
+    catch (const Interrupted &signal)
+    {
+      // Between iterations: every file written is whole.
+      output->write_summary("INTERRUPTED (" +
+                              Interrupted::name(signal.signal_number()) +
+                              "); outputs of the converged steps are kept",
+                            totals());
+      throw;
+    }
 
     if (problem.contact() != nullptr)
       for (const auto &w : problem.contact()->run_warnings())
@@ -163,6 +176,7 @@ namespace tribos
   Simulation<dim>::iteration(const IterationRecord &record)
   {
     output->iteration(record);
+    Interruption::check(mpi_communicator);
   }
 
 

@@ -9,6 +9,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -52,6 +53,19 @@ namespace tribos
                                            "Scene/Block/Lower corner");
         upper_corner = Text::parse_doubles(prm.get("Upper corner"),
                                            "Scene/Block/Upper corner");
+        // A box of zero or negative width has no volume to mesh.
+        for (unsigned int d = 0;
+             d < std::min(lower_corner.size(), upper_corner.size());
+             ++d)
+          AssertThrow(upper_corner[d] > lower_corner[d],
+                      ExcMessage("Parameters <Scene/Block/Lower corner> = <" +
+                                 prm.get("Lower corner") +
+                                 "> and <Scene/Block/Upper corner> = <" +
+                                 prm.get("Upper corner") +
+                                 ">: every coordinate of the upper corner "
+                                 "must exceed the lower corner's (the box "
+                                 "has no width in coordinate " +
+                                 std::to_string(d) + ")."));
         subdivisions = Text::cell_counts(prm, "Subdivisions");
         prm.leave_subsection();
       }
@@ -102,15 +116,16 @@ namespace tribos
                           "non-matching interfaces.");
         prm.declare_entry("Gap",
                           "0",
-                          Patterns::Double(0),
+                          Patterns::Double(0, Text::largest_value),
                           "Vertical distance between the blocks.");
         prm.declare_entry("Upper block offset",
                           "0",
-                          Patterns::Double(),
+                          Patterns::Double(-Text::largest_value,
+                                           Text::largest_value),
                           "Shift of the upper block in x.");
         prm.declare_entry("Upper bottom radius",
                           "0",
-                          Patterns::Double(0),
+                          Patterns::Double(0, Text::largest_value),
                           "0: flat. Otherwise the bottom of the upper block "
                           "is a circular arc (a cylinder in 3D, axis along "
                           "y) of this radius through the bottom corners, "

@@ -2,14 +2,17 @@
  * Scene "gmsh": a mesh file of quadrilaterals or hexahedra.
  */
 
+#include <tribos/base/text.h>
 #include <tribos/scene/mesh_tools.h>
 #include <tribos/scene/scene.h>
 
 #include <deal.II/grid/grid_in.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
 
 namespace tribos
 {
@@ -60,19 +63,126 @@ namespace tribos
 
 
 
+    /**
+     * What a gmsh element type number is, for the message that refuses it.
+     */
+    std::string
+    gmsh_element_name(const int type)
+    {
+      switch (type)
+      {
+        case 2:
+          return "3-node triangles";
+        case 4:
+          return "4-node tetrahedra";
+        case 6:
+          return "6-node prisms";
+        case 7:
+          return "5-node pyramids";
+        case 8:
+          return "3-node (second-order) lines";
+        case 9:
+          return "6-node (second-order) triangles";
+        case 10:
+          return "9-node (second-order) quadrilaterals";
+        case 11:
+          return "10-node (second-order) tetrahedra";
+        case 12:
+          return "27-node (second-order) hexahedra";
+        case 16:
+          return "8-node (second-order) quadrilaterals";
+        case 17:
+          return "20-node (second-order) hexahedra";
+        default:
+          return "gmsh element type " + std::to_string(type);
+      }
+    }
+
+
+
+    /**
+     * The checks deal.II's reader does not make, before it runs: an ASCII
+     * gmsh file (the reader takes a binary one for garbage) that is
+     * complete (a file cut inside its element list is read as a mesh with
+     * fewer cells, without complaint).
+     */
+    void
+    check_gmsh_file(const std::string &file)
+    {
+      const std::string name = "Parameter <Scene/Mesh file> = <" + file + ">";
+      AssertThrow(std::filesystem::is_regular_file(file),
+                  ExcMessage(name + ": the file does not exist."));
+      std::ifstream input(file, std::ios::binary);
+      std::string   line;
+      std::getline(input, line);
+      AssertThrow(Text::trim(line) == "$MeshFormat",
+                  ExcMessage(name +
+                             ": not a gmsh mesh file (its first line is not "
+                             "$MeshFormat)."));
+      double version   = 0;
+      int    file_type = -1;
+      std::getline(input, line);
+      std::istringstream(line) >> version >> file_type;
+      AssertThrow(file_type == 0,
+                  ExcMessage(name +
+                             ": a binary gmsh file; tribos reads ASCII "
+                             "files. Save it with 'gmsh -save -format msh2' "
+                             "or 'Mesh.Binary = 0;'."));
+      bool complete = false;
+      while (std::getline(input, line))
+        if (Text::trim(line) == "$EndElements")
+          complete = true;
+      AssertThrow(complete,
+                  ExcMessage(name +
+                             ": the file is incomplete (no $EndElements "
+                             "line: cut while it was written or copied?)."));
+    }
+
+
+
     template <int dim>
     void
     read_gmsh(const GmshScene    &p,
               const unsigned int  refinement,
               Triangulation<dim> &tria)
     {
-      AssertThrow(std::filesystem::is_regular_file(p.mesh_file),
-                  ExcMessage("Parameter <Scene/Mesh file> = <" + p.mesh_file +
-                             ">: the file does not exist."));
+      check_gmsh_file(p.mesh_file);
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(tria);
       std::ifstream input(p.mesh_file);
-      grid_in.read_msh(input);
+      try
+      {
+        grid_in.read_msh(input);
+      }
+      catch (const ExceptionBase &e)
+      {
+        // deal.II's message lists its own element codes; say in the
+        // user's terms what the file holds and what tribos takes.
+        std::ostringstream info;
+        e.print_info(info);
+        const std::string what  = info.str();
+        const std::string key   = "Element Identifier <";
+        const auto        start = what.find(key);
+        if (start != std::string::npos)
+        {
+          const int type = std::atoi(what.c_str() + start + key.size());
+          AssertThrow(false,
+                      ExcMessage(
+                        "Parameter <Scene/Mesh file> = <" + p.mesh_file +
+                        ">: the mesh has " + gmsh_element_name(type) +
+                        ", which tribos does not read. It takes "
+                        "first-order quadrilaterals (2D) and hexahedra "
+                        "(3D): mesh with 'Mesh.ElementOrder = 1;'."));
+        }
+        std::string        first_line;
+        std::istringstream lines(what);
+        while (first_line.empty() && std::getline(lines, first_line))
+          first_line = Text::trim(first_line);
+        AssertThrow(false,
+                    ExcMessage(
+                      "Parameter <Scene/Mesh file> = <" + p.mesh_file +
+                      ">: deal.II cannot read the mesh: " + first_line));
+      }
       // Simplices would crash deal.II's FE_Q (segmentation fault in
       // DoFHandler::distribute_dofs): refuse them here with the remedy.
       AssertThrow(tria.all_reference_cells_are_hyper_cube(),

@@ -30,6 +30,27 @@ namespace tribos
     std::vector<std::string>
     split_top_level(const std::string &text, const char separator);
 
+    /**
+     * @p text as an error message may quote it: characters that do not
+     * show (control characters, no-break and zero-width spaces, a byte
+     * order mark, bytes that are not UTF-8) written as <U+XXXX> or <0xXX>,
+     * and at most @p max_length characters of it, with the total length
+     * said after an ellipsis.
+     */
+    std::string
+    abbreviate(const std::string &text, const std::size_t max_length = 200);
+
+    /** The numbers of @p values as "1, 2, 5" (for messages). */
+    template <typename Container>
+    std::string
+    join(const Container &values)
+    {
+      std::string text;
+      for (const auto &v : values)
+        text += (text.empty() ? "" : ", ") + std::to_string(v);
+      return text.empty() ? "none" : text;
+    }
+
     /** Remove leading and trailing white space. */
     std::string
     trim(const std::string &text);

@@ -28,7 +28,7 @@ namespace tribos
   struct Checkpoint
   {
     /** The layout version of this struct. */
-    static constexpr unsigned int format = 3;
+    static constexpr unsigned int format = 4;
 
     unsigned int dimension      = 0;
     unsigned int n_active_cells = 0;
@@ -58,6 +58,12 @@ namespace tribos
     std::map<std::string, double> scalars;
     /** The VTU series written so far (time, file). */
     std::vector<std::pair<double, std::string>> pvd_records;
+    /** What the state depends on beyond the sizes above, by name: the
+     * scene, the contact pairs, the materials (Problem::fingerprint()). */
+    std::map<std::string, std::string> fingerprint;
+    /** Moments of the mesh's vertex coordinates (a moved or reshaped mesh
+     * with the same cells and dofs changes them). */
+    std::map<std::string, double> geometry;
 
     template <class Archive>
     void
@@ -72,16 +78,18 @@ namespace tribos
       archive &t.n_increments &t.n_newton_iterations &t.n_cutbacks;
       archive &t.largest_stabilization_ratio &t.n_linear_solves;
       archive &cells &cell_values &multipliers &history &contact &scalars;
-      archive                                                    &pvd_records;
+      archive &pvd_records &fingerprint                          &geometry;
     }
 
     /** Write to @p directory/state.bin (through a temporary file and a
-     * rename of the directory, so that a checkpoint is whole or absent). */
+     * rename of the directory, so that a checkpoint is whole or absent),
+     * the archive behind a checksum of its bytes. */
     void
     save(const std::string &directory) const;
 
-    /** Read from @p directory/state.bin; a clear error if it is missing or
-     * not a checkpoint of this format. */
+    /** Read from @p directory/state.bin; a clear error if it is missing,
+     * not a checkpoint of this format, or changed since it was written
+     * (the checksum). */
     void
     load(const std::string &directory);
   };

@@ -161,6 +161,17 @@ namespace tribos
      * steps): a clear error before any output is touched. */
     void
     check_checkpoint(const Checkpoint &checkpoint) const;
+    /** Warnings about the model's support: nothing loads it, or a body
+     * that nothing holds (statics). */
+    void
+    support_warnings();
+    /** What a checkpoint's state depends on beyond the sizes of the
+     * mesh and dofs, by name (scene, pairs, materials), as text. */
+    std::map<std::string, std::string>
+    fingerprint() const;
+    /** Moments of the vertex coordinates of the mesh (collective). */
+    std::map<std::string, double>
+    geometry_moments() const;
     /** Read @p checkpoint into the state of this (set up) problem. */
     void
     read_checkpoint(const Checkpoint &checkpoint);

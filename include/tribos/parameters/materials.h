@@ -39,6 +39,11 @@ namespace tribos
       for_body(const std::vector<T> &values,
                const unsigned int    body_id,
                const std::string    &entry);
+
+      /** Refuses a per-body list longer than the mesh's body ids 0 ...
+       * @p max_body_id: its extra values would be ignored silently. */
+      void
+      check_body_count(const unsigned int max_body_id) const;
     };
   } // namespace Parameters
 } // namespace tribos

@@ -1,6 +1,7 @@
 #ifndef tribos_postprocess_run_output_h
 #define tribos_postprocess_run_output_h
 
+#include <tribos/base/directory_lock.h>
 #include <tribos/core/checkpoint.h>
 #include <tribos/core/problem.h>
 #include <tribos/postprocess/contact_output.h>
@@ -122,9 +123,11 @@ namespace tribos
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
     /** Per probe point: the dofs of the nearest vertex. */
     std::vector<std::array<types::global_dof_index, dim>> probe_dofs;
-    std::unique_ptr<CsvWriter>                            history_csv;
-    std::unique_ptr<CsvWriter>                            convergence_csv;
-    std::vector<std::pair<double, std::string>>           records;
+    /** Held by the first process for the run's life (base/DirectoryLock). */
+    std::unique_ptr<DirectoryLock>              directory_lock;
+    std::unique_ptr<CsvWriter>                  history_csv;
+    std::unique_ptr<CsvWriter>                  convergence_csv;
+    std::vector<std::pair<double, std::string>> records;
     /** The attempt the iterations belong to. */
     unsigned int current_step = 0, current_increment = 0;
     double       current_time = 0;

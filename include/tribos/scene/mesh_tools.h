@@ -21,9 +21,13 @@ namespace tribos
                   const unsigned int               refinement,
                   const std::string               &entry)
     {
-      AssertThrow(counts.size() >= dim,
-                  ExcMessage("Parameter <" + entry + "> needs " +
-                             std::to_string(dim) + " cell counts."));
+      AssertThrow(counts.size() == dim || counts.size() == 3,
+                  ExcMessage("Parameter <" + entry + "> lists " +
+                             std::to_string(counts.size()) +
+                             " cell counts; it needs " + std::to_string(dim) +
+                             (dim == 2 ? " (or 3: the entries serve 2D and "
+                                         "3D, and 2D uses the first two)." :
+                                         ".")));
       std::vector<unsigned int> result(counts.begin(), counts.begin() + dim);
       for (auto &n : result)
         n <<= refinement;
@@ -34,9 +38,13 @@ namespace tribos
     inline Point<dim>
     to_point(const std::vector<double> &values, const std::string &entry)
     {
-      AssertThrow(values.size() >= dim,
-                  ExcMessage("Parameter <" + entry + "> needs " +
-                             std::to_string(dim) + " coordinates."));
+      AssertThrow(values.size() == dim || values.size() == 3,
+                  ExcMessage("Parameter <" + entry + "> lists " +
+                             std::to_string(values.size()) +
+                             " coordinates; it needs " + std::to_string(dim) +
+                             (dim == 2 ? " (or 3: the entries serve 2D and "
+                                         "3D, and 2D uses the first two)." :
+                                         ".")));
       Point<dim> p;
       for (unsigned int d = 0; d < dim; ++d)
         p[d] = values[d];

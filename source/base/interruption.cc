@@ -1,0 +1,66 @@
+#include <tribos/base/interruption.h>
+
+#include <csignal>
+
+namespace tribos
+{
+  namespace
+  {
+    volatile std::sig_atomic_t pending_signal = 0;
+
+    extern "C" void
+    note_signal(const int signal_number)
+    {
+      pending_signal = signal_number;
+      // A second signal of the kind takes the default action.
+      std::signal(signal_number, SIG_DFL);
+    }
+  } // namespace
+
+
+
+  Interrupted::Interrupted(const int signal_number)
+    : std::runtime_error("interrupted by " + name(signal_number))
+    , number(signal_number)
+  {
+  }
+
+
+
+  std::string
+  Interrupted::name(const int signal_number)
+  {
+    switch (signal_number)
+    {
+      case SIGTERM:
+        return "SIGTERM";
+      case SIGINT:
+        return "SIGINT";
+      default:
+        return "signal " + std::to_string(signal_number);
+    }
+  }
+
+
+
+  namespace Interruption
+  {
+    void
+    install()
+    {
+      std::signal(SIGTERM, note_signal);
+      std::signal(SIGINT, note_signal);
+    }
+
+
+
+    void
+    check(const MPI_Comm communicator)
+    {
+      int here = pending_signal, any = 0;
+      MPI_Allreduce(&here, &any, 1, MPI_INT, MPI_MAX, communicator);
+      if (any != 0)
+        throw Interrupted(any);
+    }
+  } // namespace Interruption
+} // namespace tribos

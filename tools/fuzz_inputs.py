@@ -1,0 +1,178 @@
+#!/usr/bin/env python3
+"""Fuzz tribos's input: mutate one entry of a parameter file at a time and
+classify what the program does with it.
+
+Each case takes one `set` entry of one of the scenes below and gives it a
+hostile value (NaN, infinities, 0, negative, huge, tiny, empty, text,
+120 000 characters), or deletes the line, or repeats the subsection's
+entries twice. The run gets a time limit. Outcomes:
+
+  input error   exit 1 and the message names the entry (or, for a deleted
+                line, is about the scene): the wanted answer to bad input
+  unclear       exit 1 but the message does not name the entry
+  completed     exit 0: the value was legal (0 friction, a deleted line
+                whose default holds); "completed, warned" if tribos
+                warned about it (a penalty of 1e-308 E/h)
+  no convergence  exit 2: legal input that Newton could not solve; listed
+                so that a bad value slipping through shows
+  crash         killed by a signal or any other exit status
+  hang          no end within the time limit
+  half output   exit 1 with a history.csv written (bad input must write
+                nothing)
+
+Writes one CSV row per case and prints the counts per outcome; exit status
+1 if any crash, hang, unclear message or half output occurred.
+
+  python3 tools/fuzz_inputs.py build/tribos --cases 160 --out fuzz.csv
+"""
+
+import argparse
+import collections
+import csv
+import os
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = ["tests/neo_hookean_stretch.prm", "tests/sliding_block.prm",
+          "tests/sliding_blocks_3d.prm", "parameters/bar_impact.prm",
+          "tests/ring_2d.prm"]
+# Keep every run short: few steps, no VTU.
+SHORT = ["Output/Write VTU=false"]
+VALUES = ["nan", "inf", "-inf", "0", "-1", "1e308", "-1e308", "1e-308", "",
+          "abc", "1, 2, 3, 4, 5, 6, 7", "9" * 120000, "1 : 2 : 3",
+          ";;", "1e150", "-0"]
+
+
+def entries(path):
+    """The (Section/.../Entry, value) pairs set in the file at path."""
+    stack, found = [], []
+    for line in open(path):
+        line = line.split("#", 1)[0].strip()
+        if line.startswith("subsection "):
+            stack.append(line[len("subsection "):].strip())
+        elif line == "end":
+            stack.pop()
+        elif line.startswith("set "):
+            key, _, value = line[4:].partition("=")
+            found.append(("/".join(stack + [key.strip()]), value.strip()))
+    return found
+
+
+def without_line(path, entry, target):
+    """A copy of the parameter file without the line that sets entry."""
+    stack, lines = [], []
+    for line in open(path):
+        text = line.split("#", 1)[0].strip()
+        if text.startswith("subsection "):
+            stack.append(text[len("subsection "):].strip())
+        elif text == "end":
+            stack.pop()
+        elif text.startswith("set "):
+            key = text[4:].partition("=")[0].strip()
+            if "/".join(stack + [key]) == entry:
+                continue
+        lines.append(line)
+    with open(target, "w") as f:
+        f.writelines(lines)
+
+
+def short_run(scene):
+    """Overrides that keep a scene's run to a few seconds."""
+    sets = list(SHORT)
+    steps = {"parameters/bar_impact.prm": 40, "tests/ring_2d.prm": 5}
+    if scene in steps:
+        sets.append("Time stepping/Number of steps=%d" % steps[scene])
+    return sets
+
+
+def classify(result, entry, folder, timed_out):
+    if timed_out:
+        return "hang"
+    code = result.returncode
+    text = result.stderr
+    last = entry.split("/")[-1]
+    if code == 0:
+        return "completed, warned" if "WARNING" in text else "completed"
+    if code == 2:
+        return "no convergence"
+    if code == 1:
+        if os.path.exists(os.path.join(folder, "history.csv")):
+            return "half output"
+        if last in text or entry in text or "Scene" in text:
+            return "input error"
+        return "unclear"
+    return "crash"
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("tribos")
+    parser.add_argument("--cases", type=int, default=160)
+    parser.add_argument("--seed", type=int, default=47)
+    parser.add_argument("--timeout", type=float, default=60)
+    parser.add_argument("--out", default="")
+    args = parser.parse_args()
+    tribos = os.path.abspath(args.tribos)
+    generator = random.Random(args.seed)
+    catalogue = [(scene, entry, value) for scene in SCENES
+                 for entry, value in entries(os.path.join(ROOT, scene))
+                 if not entry.startswith("Output/")]
+    counts = collections.Counter()
+    rows = []
+    work = tempfile.mkdtemp(prefix="tribos_fuzz_")
+    try:
+        for case in range(args.cases):
+            scene, entry, original = generator.choice(catalogue)
+            prm = os.path.join(ROOT, scene)
+            folder = os.path.join(work, "case_%03d" % case)
+            sets = short_run(scene)
+            kind = generator.random()
+            if kind < 0.1:
+                mutation = "deleted"
+                prm = os.path.join(work, "case_%03d.prm" % case)
+                without_line(os.path.join(ROOT, scene), entry, prm)
+            else:
+                mutation = generator.choice(VALUES)
+                sets.append("%s=%s" % (entry, mutation))
+            command = [tribos, prm, "--set", "Output/Directory=" + folder]
+            for s in sets:
+                command += ["--set", s]
+            timed_out = False
+            try:
+                result = subprocess.run(command, capture_output=True,
+                                        text=True, timeout=args.timeout,
+                                        cwd=os.path.dirname(prm))
+            except subprocess.TimeoutExpired:
+                timed_out, result = True, None
+            outcome = classify(result, entry, folder, timed_out)
+            counts[outcome] += 1
+            message = "" if result is None else \
+                (result.stderr.strip().splitlines() or [""])[-1][:160]
+            shown = mutation if len(mutation) <= 30 else \
+                "%s... (%d chars)" % (mutation[:10], len(mutation))
+            rows.append({"case": case, "scene": scene, "entry": entry,
+                         "value": shown, "outcome": outcome,
+                         "exit": "" if result is None else result.returncode,
+                         "message": message})
+            print("%3d %-15s %-30s %-40s %s" % (case, outcome, scene,
+                                                entry[-40:], shown),
+                  flush=True)
+            shutil.rmtree(folder, ignore_errors=True)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    if args.out:
+        with open(args.out, "w", newline="") as f:
+            writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+            writer.writeheader()
+            writer.writerows(rows)
+    print("\n" + ", ".join("%s %d" % kv for kv in sorted(counts.items())))
+    bad = sum(counts[k] for k in ("crash", "hang", "unclear", "half output"))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
