@@ -4,8 +4,8 @@ classify what the program does with it.
 
 Each case takes one `set` entry of one of the scenes below and gives it a
 hostile value (NaN, infinities, 0, negative, huge, tiny, empty, text,
-120 000 characters), or deletes the line, or repeats the subsection's
-entries twice. The run gets a time limit. Outcomes:
+120 000 characters), or deletes its line, or repeats the line with a
+hostile value in the copy. The run gets a time limit. Outcomes:
 
   input error   exit 1 and the message names the entry (or, for a deleted
                 line, is about the scene): the wanted answer to bad input
@@ -62,8 +62,10 @@ def entries(path):
     return found
 
 
-def without_line(path, entry, target):
-    """A copy of the parameter file without the line that sets entry."""
+def without_line(path, entry, target, repeat=None):
+    """A copy of the parameter file without the line that sets entry, or,
+    if repeat is a value, with that line followed by a second one that sets
+    entry to repeat."""
     stack, lines = [], []
     for line in open(path):
         text = line.split("#", 1)[0].strip()
@@ -74,7 +76,10 @@ def without_line(path, entry, target):
         elif text.startswith("set "):
             key = text[4:].partition("=")[0].strip()
             if "/".join(stack + [key]) == entry:
-                continue
+                if repeat is None:
+                    continue
+                lines.append(line)
+                line = "set %s = %s\n" % (key, repeat)
         lines.append(line)
     with open(target, "w") as f:
         f.writelines(lines)
@@ -135,6 +140,13 @@ def main():
                 mutation = "deleted"
                 prm = os.path.join(work, "case_%03d.prm" % case)
                 without_line(os.path.join(ROOT, scene), entry, prm)
+            elif kind < 0.2:
+                # The line twice, the second time with a hostile value
+                # (the later one counts and must be checked).
+                value = generator.choice(VALUES[:12])
+                mutation = "repeated, then " + value[:20]
+                prm = os.path.join(work, "case_%03d.prm" % case)
+                without_line(os.path.join(ROOT, scene), entry, prm, value)
             else:
                 mutation = generator.choice(VALUES)
                 sets.append("%s=%s" % (entry, mutation))

@@ -121,12 +121,14 @@ namespace tribos
                                        "> as a number in <" + abbreviate(text) +
                                        ">. Expected a comma-separated "
                                        "list of numbers."));
-        AssertThrow(std::isfinite(value) && std::abs(value) <= largest_value,
+        AssertThrow(std::isfinite(value) && std::abs(value) <= largest_value &&
+                      (value == 0 || std::abs(value) >= 1. / largest_value),
                     dealii::ExcMessage(
                       "Parameter <" + entry + ">: <" + abbreviate(piece) +
                       "> in <" + abbreviate(text) +
-                      "> is not a finite number of magnitude at most 1e150 "
-                      "(products of two input values must stay finite)."));
+                      "> is not 0 or a finite number of magnitude between "
+                      "1e-150 and 1e150 (products of two input values must "
+                      "neither overflow nor underflow)."));
         values.push_back(value);
       }
       return values;

@@ -128,14 +128,24 @@ namespace tribos
                              ": a binary gmsh file; tribos reads ASCII "
                              "files. Save it with 'gmsh -save -format msh2' "
                              "or 'Mesh.Binary = 0;'."));
-      bool complete = false;
+      // The last section the file opened, for the message of a cut file.
+      std::string section;
+      bool        complete = false;
       while (std::getline(input, line))
-        if (Text::trim(line) == "$EndElements")
+      {
+        line = Text::trim(line);
+        if (line == "$EndElements")
           complete = true;
+        else if (!line.empty() && line[0] == '$' && line.rfind("$End", 0) != 0)
+          section = line;
+      }
       AssertThrow(complete,
-                  ExcMessage(name +
-                             ": the file is incomplete (no $EndElements "
-                             "line: cut while it was written or copied?)."));
+                  ExcMessage(name + ": the file is incomplete: it ends " +
+                             (section.empty() ?
+                                std::string("after its header") :
+                                "inside its " + section + " section") +
+                             " (no $EndElements line: cut while it was "
+                             "written or copied?). Write the mesh again."));
     }
 
 

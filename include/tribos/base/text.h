@@ -19,6 +19,8 @@ namespace tribos
      * The largest magnitude a number of the input may have: products of
      * two such numbers stay finite (1e308 as a Young's modulus made the
      * penalty and the residual infinite, reported as a non-convergence).
+     * Nonzero numbers of a list are also at least its inverse: 1e-308 as a
+     * Young's modulus underflowed to a residual of round-off.
      */
     constexpr double largest_value = 1e150;
 
