@@ -1,7 +1,8 @@
 """Verification: manufactured solution u = a t (phi, phi(, phi)),
 phi = prod sin(pi x_i), for small-strain linear elasticity on a shifted
 box (non-zero Dirichlet data on every face). Asserts the optimal rates
-p + 1 in L2 and p in the H1 seminorm for Q1 and Q2 in 2D and 3D."""
+p + 1 in L2 and p in the H1 seminorm for Q1 and Q2 in 2D and 3D, and for
+P1 and P2 on the same boxes split into triangles and tetrahedra."""
 
 import math
 import sys
@@ -33,33 +34,39 @@ def expressions(dim):
     return u, force
 
 
-cases = {(2, 1): range(0, 4), (2, 2): range(0, 3),
-         (3, 1): range(0, 3), (3, 2): range(0, 3)}
-for (dim, degree), levels in cases.items():
+# (dimension, degree, cells): levels of Scene/Refinement. "simplices":
+# every cell split into 8 triangles or 24 tetrahedra (P1, P2).
+cases = {(2, 1, "as meshed"): range(0, 4), (2, 2, "as meshed"): range(0, 3),
+         (3, 1, "as meshed"): range(0, 3), (3, 2, "as meshed"): range(0, 3),
+         (2, 1, "simplices"): range(0, 3), (2, 2, "simplices"): range(0, 3),
+         (3, 1, "simplices"): range(0, 2), (3, 2, "simplices"): range(0, 2)}
+for (dim, degree, cells), levels in cases.items():
+    name = ("Q%d" if cells == "as meshed" else "P%d") % degree
     u, force = expressions(dim)
     ids = range(2 * dim)
     dirichlet = " ; ".join("%d : %s : %s" % (b, X[:dim], ", ".join(u))
                            for b in ids)
     errors = []
     for level in levels:
-        folder = "%s/%dd_q%d_%d" % (out, dim, degree, level)
+        folder = "%s/%dd_%s_%d" % (out, dim, name, level)
         run(tribos, tests + "/mms_elasticity.prm", folder, [
             "Dimension=%d" % dim,
             "Finite element/Polynomial degree=%d" % degree,
+            "Finite element/Cells=" + cells,
             "Scene/Refinement=%d" % level,
             "Boundary conditions/Dirichlet=" + dirichlet,
             "Boundary conditions/Body force=" + ", ".join(force),
             "Verification/Exact displacement=" + ", ".join(u)])
         row = read_csv(folder + "/history.csv")[-1]
         errors.append((row["error_L2"], row["error_H1"]))
-    print("%dD Q%d errors (L2, H1) by level: %s" % (
-        dim, degree, "; ".join("%.3e, %.3e" % e for e in errors)))
+    print("%dD %s errors (L2, H1) by level: %s" % (
+        dim, name, "; ".join("%.3e, %.3e" % e for e in errors)))
     rate_l2 = math.log2(errors[-2][0] / errors[-1][0])
     rate_h1 = math.log2(errors[-2][1] / errors[-1][1])
     check(rate_l2 > degree + 1 - 0.15,
-          "%dD Q%d L2 rate %.3f, expected %d" % (dim, degree, rate_l2,
-                                                 degree + 1))
+          "%dD %s L2 rate %.3f, expected %d" % (dim, name, rate_l2,
+                                                degree + 1))
     check(rate_h1 > degree - 0.15,
-          "%dD Q%d H1 rate %.3f, expected %d" % (dim, degree, rate_h1,
-                                                 degree))
+          "%dD %s H1 rate %.3f, expected %d" % (dim, name, rate_h1,
+                                                degree))
 finish()

@@ -5,6 +5,8 @@
 //
 //   gmsh -2 -setnumber hf 0.00775 hertz_2d.geo -o hertz_2d_13k.msh  (13790 dofs)
 //   gmsh -2 -setnumber hf 0.00338 hertz_2d.geo -o hertz_2d_49k.msh  (49242 dofs)
+//   gmsh -2 -setnumber hf 0.0078 -setnumber quads 0 hertz_2d.geo \
+//        -o ../../tests/hertz_2d_tri.msh  (triangles, 3578 dofs)
 //
 // (hf is the size before the final subdivision: the quadrilaterals along
 // the contact are hf / 2, 0.0039 and 0.0017, i.e. a / 28 and a / 64 for
@@ -16,7 +18,8 @@
 DefineConstant[ R  = {1.0,  Name "radius"},
                 hf = {0.004, Name "element size in the fine zone"},
                 rf = {0.25, Name "fine zone radius / R"},
-                hc = {0.05, Name "largest element size / R"} ];
+                hc = {0.05, Name "largest element size / R"},
+                quads = {1, Name "1: quadrilaterals (0: triangles)"} ];
 
 Point(1) = {0, 0, 0};      // contact point
 Point(2) = {0, R, 0};      // centre (and top of the symmetry line)
@@ -42,12 +45,14 @@ Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
 
-// all quadrilaterals, first order
+// all quadrilaterals (or all triangles), first order
 Mesh.Algorithm = 6;             // frontal-Delaunay (8, "for quads", crashes
                                 // Debian's gmsh 4.8.4), then recombined
-Mesh.RecombineAll = 1;
-Mesh.RecombinationAlgorithm = 1; // blossom
-Mesh.SubdivisionAlgorithm = 1;   // split what is left into quads (halves h)
+If (quads == 1)
+  Mesh.RecombineAll = 1;
+  Mesh.RecombinationAlgorithm = 1; // blossom
+  Mesh.SubdivisionAlgorithm = 1;   // split what is left into quads (halves h)
+EndIf
 Mesh.ElementOrder = 1;
 Mesh.MshFileVersion = 2.2;
 

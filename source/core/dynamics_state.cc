@@ -86,9 +86,12 @@ namespace tribos
     if (!ts.initial_velocities.empty())
     {
       std::map<types::global_dof_index, Point<dim>> points;
-      DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
-                                           dof_handler,
-                                           points);
+      DoFTools::map_dofs_to_support_points(
+        dof_handler.get_fe()
+          .reference_cell()
+          .template get_default_linear_mapping<dim>(),
+        dof_handler,
+        points);
       std::map<types::material_id, std::unique_ptr<FunctionParser<dim>>>
         functions;
       for (const auto &v : ts.initial_velocities)

@@ -226,19 +226,18 @@ namespace tribos
     // The first iteration carries the increment's Dirichlet values: a
     // shortened step would leave them unreached.
     if (first_iteration &&
-        Utilities::MPI::max(increment_constraints.has_inhomogeneities() ? 1 :
-                                                                          0,
+        Utilities::MPI::max(increment_constraints.has_inhomogeneities() ? 1 : 0,
                             mpi_communicator) > 0)
       return 1;
     TimerOutput::Scope t(timer, "contact search");
-    const Vector start = owned_solution;
+    const Vector       start = owned_solution;
     owned_solution.add(1., update);
     solution_changed();
     const double limit = contact_handler->step_limit(ghosted_solution,
                                                      time,
                                                      fraction,
                                                      homogeneous_constraints);
-    owned_solution = start;
+    owned_solution     = start;
     solution_changed();
     return limit;
   }

@@ -130,7 +130,7 @@ namespace tribos
                                       const Quadrature<dim>    &quadrature)
     : StandardKinematics<dim>(fe, quadrature)
     , centre(fe,
-             QGauss<dim>(1),
+             fe.reference_cell().template get_gauss_type_quadrature<dim>(1),
              update_values | update_gradients | update_quadrature_points)
     , centre_gradients(1, std::vector<Tensor<1, dim>>(dim))
   {
@@ -362,7 +362,7 @@ namespace tribos
     const Quadrature<2>    &quadrature)
     : AxisymmetricKinematics(fe, quadrature)
     , centre(fe,
-             QGauss<2>(1),
+             fe.reference_cell().template get_gauss_type_quadrature<2>(1),
              update_values | update_gradients | update_quadrature_points)
     , centre_gradients(1, std::vector<Tensor<1, 2>>(2))
     , centre_values(1, dealii::Vector<double>(2))

@@ -9,8 +9,10 @@
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -47,8 +49,6 @@ namespace tribos
             mpi_communicator))
     , triangulation(*triangulation_storage)
     , dof_handler(triangulation)
-    , quadrature(parameters.finite_element.n_quadrature_points)
-    , face_quadrature(parameters.finite_element.n_quadrature_points)
   {
     AssertThrow(parameters.dimension == dim, ExcInternalError());
   }
@@ -217,6 +217,97 @@ namespace tribos
 
 
 
+  namespace
+  {
+    /**
+     * The scene into the empty @p triangulation: as its generator makes it,
+     * or with every cell split into simplices (Finite element/Cells).
+     */
+    template <int dim>
+    void
+    create_scene(const Parameters::AllParameters &parameters,
+                 Triangulation<dim>              &triangulation)
+    {
+      const auto &scene = *parameters.scene.geometry;
+      if (!parameters.finite_element.split_into_simplices)
+      {
+        scene.create(parameters.scene.refinement, triangulation);
+        return;
+      }
+      Triangulation<dim> cells;
+      scene.create(parameters.scene.refinement, cells);
+      AssertThrow(cells.all_reference_cells_are_hyper_cube(),
+                  ExcMessage("Parameter <Finite element/Cells> = simplices "
+                             "splits quadrilaterals and hexahedra; the mesh "
+                             "of the scene has simplices already."));
+      // deal.II splits conforming meshes only (a coarse mesh of simplices
+      // has no hanging nodes).
+      bool has_hanging_nodes = false;
+      for (const auto &cell : cells.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (!cell->at_boundary(f) && cell->neighbor(f)->has_children())
+            has_hanging_nodes = true;
+      AssertThrow(!has_hanging_nodes,
+                  ExcMessage("Parameter <Finite element/Cells> = simplices "
+                             "splits conforming meshes only; the scene <" +
+                             parameters.scene.name +
+                             "> refines locally (hanging nodes): set its "
+                             "local refinement to 0 (e.g. Contact "
+                             "refinements) and refine with Scene/Refinement."));
+      GridGenerator::convert_hypercube_to_simplex_mesh(cells, triangulation);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::check_simplex_model()
+  {
+    AssertThrow(triangulation.all_reference_cells_are_simplex(),
+                ExcMessage("Parameter <Scene/Mesh file>: the mesh mixes "
+                           "simplices with quadrilaterals or hexahedra; "
+                           "tribos takes one kind of cell per mesh."));
+    AssertThrow(!parameters.finite_element.f_bar,
+                ExcMessage("Parameter <Finite element/F-bar> = true: F-bar "
+                           "is the remedy of Q1 cells. On triangles and "
+                           "tetrahedra use Polynomial degree = 2 against "
+                           "locking (P1 locks in isochoric plastic flow)."));
+    AssertThrow(dim == 2 || parameters.contact.pairs.empty(),
+                ExcMessage("Parameter <Contact/Pairs>: contact on the "
+                           "triangle faces of tetrahedra is not available "
+                           "yet (contact on simplices: 2D triangles only); "
+                           "mesh the contact bodies with hexahedra."));
+    // deal.II 9.4's no-normal-flux constraints are wrong on linear
+    // tetrahedra (the uniaxial stretch of a split cube: 0.5 % off the
+    // analytic force, with the same planes as Dirichlet components exact).
+    AssertThrow(dim == 2 || parameters.boundary_conditions.symmetry.empty(),
+                ExcMessage("Parameter <Boundary conditions/Symmetry> on "
+                           "tetrahedra is not available yet; for a plane "
+                           "normal to an axis, set its normal component to "
+                           "0 with Dirichlet (e.g. 0 : x : 0)."));
+    // Row sums of the P2 simplex mass matrix put no (triangles) or negative
+    // (tetrahedra) mass on the vertices.
+    AssertThrow(parameters.finite_element.degree == 1 ||
+                  !parameters.time_stepping.dynamic() ||
+                  parameters.time_stepping.mass_matrix !=
+                    Parameters::MassMatrix::lumped,
+                ExcMessage("Parameter <Time stepping/Mass matrix> = lumped "
+                           "on quadratic triangles or tetrahedra: the row "
+                           "sums give the vertices zero or negative mass. "
+                           "Use consistent, or Polynomial degree = 1."));
+    const auto &models = parameters.materials.models;
+    if (parameters.finite_element.degree == 1 &&
+        std::find(models.begin(), models.end(), "J2 plasticity") !=
+          models.end())
+      warn("Materials/Model = J2 plasticity on linear triangles or "
+           "tetrahedra (Finite element/Polynomial degree = 1): P1 locks in "
+           "isochoric plastic flow (too stiff, wrong pressures) except in "
+           "homogeneous deformation. Use Polynomial degree = 2.");
+  }
+
+
+
   template <int dim>
   void
   Problem<dim>::make_grid(
@@ -228,10 +319,11 @@ namespace tribos
                          parameters.finite_element.degree,
                          mpi_communicator);
     if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
-      parameters.scene.geometry->create(parameters.scene.refinement,
-                                        triangulation);
+      create_scene(parameters, triangulation);
     else
       create_distributed_scene(weights);
+    if (!triangulation.all_reference_cells_are_hyper_cube())
+      check_simplex_model();
 
     // Every boundary id named in a condition must exist in the mesh (the
     // faces of own cells: on a distributed mesh the outer faces of the
@@ -284,7 +376,7 @@ namespace tribos
     {
       try
       {
-        parameters.scene.geometry->create(parameters.scene.refinement, serial);
+        create_scene(parameters, serial);
       }
       catch (const ExceptionBase &e)
       {
@@ -395,9 +487,28 @@ namespace tribos
   Problem<dim>::setup_system()
   {
     TimerOutput::Scope t(timer, "setup");
-    fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(
-                                           parameters.finite_element.degree),
-                                         dim);
+    // One kind of cell (make_grid() refuses a mixed mesh): Lagrange
+    // elements on quadrilaterals and hexahedra (FE_Q) or on triangles and
+    // tetrahedra (FE_SimplexP), with the Gauss rules of that kind.
+    const ReferenceCell cell_kind = triangulation.get_reference_cells()[0];
+    const unsigned int  degree    = parameters.finite_element.degree;
+    if (cell_kind.is_hyper_cube())
+      fe = std::make_unique<FESystem<dim>>(FE_Q<dim>(degree), dim);
+    else
+      fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
+    AssertThrow(cell_kind.is_hyper_cube() ||
+                  parameters.finite_element.n_quadrature_points <= 4,
+                ExcMessage("Parameter <Finite element/Quadrature points> = " +
+                           std::to_string(
+                             parameters.finite_element.n_quadrature_points) +
+                           ": the Gauss rules of triangles and tetrahedra "
+                           "have 1 to 4 (points per direction, exact for "
+                           "polynomials of degree 2n - 1)."));
+    quadrature = cell_kind.template get_gauss_type_quadrature<dim>(
+      parameters.finite_element.n_quadrature_points);
+    face_quadrature = cell_kind.face_reference_cell(0)
+                        .template get_gauss_type_quadrature<dim - 1>(
+                          parameters.finite_element.n_quadrature_points);
     dof_handler.distribute_dofs(*fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     owned_per_process =

@@ -109,10 +109,12 @@ namespace tribos
       AffineConstraints<double>          symmetry(system_coupled);
       const std::set<types::boundary_id> ids(bc.symmetry.begin(),
                                              bc.symmetry.end());
-      VectorTools::compute_no_normal_flux_constraints(dof_handler,
-                                                      0,
-                                                      ids,
-                                                      symmetry);
+      VectorTools::compute_no_normal_flux_constraints(
+        dof_handler,
+        0,
+        ids,
+        symmetry,
+        fe->reference_cell().template get_default_linear_mapping<dim>());
       symmetry.close();
       // Merging substitutes the symmetry lines into the hanging-node lines
       // that refer to them. On a distributed mesh the outer faces of the
@@ -157,7 +159,10 @@ namespace tribos
   {
     // The support points of the dofs (reference configuration).
     std::map<types::global_dof_index, Point<dim>> points;
-    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(), dof_handler, points);
+    DoFTools::map_dofs_to_support_points(
+      fe->reference_cell().template get_default_linear_mapping<dim>(),
+      dof_handler,
+      points);
     // About the centroid of all support points (every process the same).
     Tensor<1, dim> sum;
     for (const auto dof : locally_owned_dofs)

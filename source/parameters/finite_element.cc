@@ -11,8 +11,8 @@ namespace tribos
       prm.declare_entry("Polynomial degree",
                         "1",
                         dealii::Patterns::Integer(1, 2),
-                        "Degree of the Lagrange displacement element: 1 (Q1) "
-                        "or 2 (Q2).");
+                        "Degree of the Lagrange displacement element: 1 (Q1, "
+                        "P1 on triangles and tetrahedra) or 2 (Q2, P2).");
       prm.declare_entry("Quadrature points",
                         "0",
                         dealii::Patterns::Integer(0, 6),
@@ -35,6 +35,14 @@ namespace tribos
                         "and reactions are those of the full 360 degrees), "
                         "and stress_zz is the hoop stress. The axis needs "
                         "u_r = 0 (Symmetry or Dirichlet).");
+      prm.declare_entry(
+        "Cells",
+        "as meshed",
+        dealii::Patterns::Selection("as meshed|simplices"),
+        "as meshed: the scene's cells (quadrilaterals and hexahedra, or the "
+        "triangles and tetrahedra of a gmsh mesh); simplices: every cell of "
+        "the scene split into triangles (8 per quadrilateral) or tetrahedra "
+        "(24 per hexahedron), with the same boundary and body ids.");
       prm.leave_subsection();
     }
 
@@ -48,8 +56,9 @@ namespace tribos
       n_quadrature_points = prm.get_integer("Quadrature points");
       if (n_quadrature_points == 0)
         n_quadrature_points = degree + 1;
-      f_bar        = prm.get_bool("F-bar");
-      axisymmetric = prm.get_bool("Axisymmetric");
+      f_bar                = prm.get_bool("F-bar");
+      axisymmetric         = prm.get_bool("Axisymmetric");
+      split_into_simplices = prm.get("Cells") == "simplices";
       AssertThrow(!f_bar || degree == 1,
                   dealii::ExcMessage("Parameter <Finite element/F-bar> = "
                                      "true needs Polynomial degree = 1."));

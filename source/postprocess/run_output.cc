@@ -284,9 +284,17 @@ namespace tribos
     const auto &dof_handler   = problem.get_dof_handler();
     const auto &triangulation = problem.get_triangulation();
     exact_displacement->set_time(time);
-    const QGauss<dim> error_quadrature(parameters.finite_element.degree + 3);
+    const ReferenceCell   cell_kind = problem.get_fe().reference_cell();
+    const Quadrature<dim> error_quadrature =
+      cell_kind.template get_gauss_type_quadrature<dim>(
+        // deal.II's simplex Gauss rules go up to 4 points per direction
+        // (exact for degree 7).
+        cell_kind.is_simplex() ? 4 : parameters.finite_element.degree + 3);
+    const Mapping<dim> &mapping =
+      cell_kind.template get_default_linear_mapping<dim>();
     dealii::Vector<float> cellwise(triangulation.n_active_cells());
-    VectorTools::integrate_difference(dof_handler,
+    VectorTools::integrate_difference(mapping,
+                                      dof_handler,
                                       problem.displacement(),
                                       *exact_displacement,
                                       cellwise,
@@ -295,7 +303,8 @@ namespace tribos
     const double l2 = VectorTools::compute_global_error(triangulation,
                                                         cellwise,
                                                         VectorTools::L2_norm);
-    VectorTools::integrate_difference(dof_handler,
+    VectorTools::integrate_difference(mapping,
+                                      dof_handler,
                                       problem.displacement(),
                                       *exact_displacement,
                                       cellwise,

@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
 
@@ -95,15 +96,19 @@ namespace tribos
     {
       ContactFields(const Triangulation<dim> &triangulation,
                     const unsigned int        degree)
-        : node_fe(degree)
+        : node_fe(triangulation.all_reference_cells_are_hyper_cube() ?
+                    std::unique_ptr<FiniteElement<dim>>(
+                      std::make_unique<FE_Q<dim>>(degree)) :
+                    std::make_unique<FE_SimplexP<dim>>(degree))
         , node_dof_handler(triangulation)
       {
       }
 
-      FE_Q<dim>             node_fe;
-      DoFHandler<dim>       node_dof_handler;
-      std::array<Vector, 4> scalars;
-      Vector                shear, force;
+      /** The scalar element of the mesh's cells and degree. */
+      std::unique_ptr<FiniteElement<dim>> node_fe;
+      DoFHandler<dim>                     node_dof_handler;
+      std::array<Vector, 4>               scalars;
+      Vector                              shear, force;
     };
 
 
@@ -143,10 +148,10 @@ namespace tribos
                                DataOut<dim>::type_dof_data,
                                interpretation);
       auto &node_dof_handler = fields.node_dof_handler;
-      node_dof_handler.distribute_dofs(fields.node_fe);
+      node_dof_handler.distribute_dofs(*fields.node_fe);
       std::map<types::global_dof_index, types::global_dof_index> scalar_dof;
       std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell()),
-        node_dofs(fields.node_fe.n_dofs_per_cell());
+        node_dofs(fields.node_fe->n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (!cell->is_artificial())
         {
@@ -254,7 +259,15 @@ namespace tribos
       Utilities::MPI::this_mpi_process(mpi_communicator);
     if (n_ranks > 1)
       data_out.add_data_vector(cells.subdomain, "subdomain");
-    data_out.build_patches(parameters.finite_element.degree);
+    // Simplices: one patch per cell, whose quadratic geometry and fields
+    // deal.II 9.4 writes only with the cell's vertices.
+    if (problem.get_triangulation().all_reference_cells_are_hyper_cube())
+      data_out.build_patches(parameters.finite_element.degree);
+    else
+      data_out.build_patches(problem.get_fe()
+                               .reference_cell()
+                               .template get_default_linear_mapping<dim>(),
+                             1);
 
     // zlib's fastest level: deal.II's default (best compression) took five
     // times as long for files 12 % smaller (Hertz 2D, doc/benchmarks.md).

@@ -1,5 +1,6 @@
 /**
- * Scene "gmsh": a mesh file of quadrilaterals or hexahedra.
+ * Scene "gmsh": a mesh file of quadrilaterals or hexahedra, or of
+ * triangles or tetrahedra.
  */
 
 #include <tribos/base/text.h>
@@ -181,8 +182,9 @@ namespace tribos
                         "Parameter <Scene/Mesh file> = <" + p.mesh_file +
                         ">: the mesh has " + gmsh_element_name(type) +
                         ", which tribos does not read. It takes "
-                        "first-order quadrilaterals (2D) and hexahedra "
-                        "(3D): mesh with 'Mesh.ElementOrder = 1;'."));
+                        "first-order cells (quadrilaterals or triangles in "
+                        "2D, hexahedra or tetrahedra in 3D): mesh with "
+                        "'Mesh.ElementOrder = 1;'."));
         }
         std::string        first_line;
         std::istringstream lines(what);
@@ -193,20 +195,20 @@ namespace tribos
                       "Parameter <Scene/Mesh file> = <" + p.mesh_file +
                       ">: deal.II cannot read the mesh: " + first_line));
       }
-      // Simplices would crash deal.II's FE_Q (segmentation fault in
-      // DoFHandler::distribute_dofs): refuse them here with the remedy.
-      AssertThrow(tria.all_reference_cells_are_hyper_cube(),
+      // One kind of cell: the finite element follows it (FE_Q or
+      // FE_SimplexP).
+      AssertThrow(tria.all_reference_cells_are_hyper_cube() ||
+                    tria.all_reference_cells_are_simplex(),
                   ExcMessage(
                     "Parameter <Scene/Mesh file> = <" + p.mesh_file +
-                    ">: the mesh has triangles or tetrahedra (alone or "
-                    "mixed with quadrilaterals). tribos supports "
-                    "quadrilaterals (2D) and hexahedra (3D) only. In gmsh, "
-                    "recombine the mesh: 'Mesh.RecombineAll = 1;' (2D "
-                    "quadrilaterals; with 'Mesh.SubdivisionAlgorithm = 1;' "
-                    "no triangle is left) or, in 3D, a structured "
-                    "(transfinite, recombined, extruded) hexahedral mesh, "
-                    "or 'Mesh.SubdivisionAlgorithm = 2;' (tetrahedra split "
-                    "into hexahedra)."));
+                    ">: the mesh mixes triangles or tetrahedra with "
+                    "quadrilaterals or hexahedra (or has prisms or "
+                    "pyramids). tribos takes one kind of cell per mesh: in "
+                    "gmsh, 'Mesh.RecombineAll = 1;' with "
+                    "'Mesh.SubdivisionAlgorithm = 1;' (2D) or '= 2;' (3D) "
+                    "leaves quadrilaterals or hexahedra only; without "
+                    "recombination the mesh is all triangles or "
+                    "tetrahedra."));
       tria.refine_global(refinement);
     }
   } // namespace

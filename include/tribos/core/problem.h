@@ -161,6 +161,10 @@ namespace tribos
      * steps): a clear error before any output is touched. */
     void
     check_checkpoint(const Checkpoint &checkpoint) const;
+    /** Refuse what simplex meshes do not support (mixed cell kinds,
+     * F-bar, contact on triangle faces in 3D); warn of locking. */
+    void
+    check_simplex_model();
     /** Warnings about the model's support: nothing loads it, or a body
      * that nothing holds (statics). */
     void
@@ -379,8 +383,11 @@ namespace tribos
     parallel::TriangulationBase<dim>                 &triangulation;
     std::unique_ptr<FESystem<dim>>                    fe;
     DoFHandler<dim>                                   dof_handler;
-    QGauss<dim>                                       quadrature;
-    QGauss<dim - 1>                                   face_quadrature;
+    /** Gauss rules of the mesh's cell kind (quadrilaterals and hexahedra:
+     * tensor products; triangles and tetrahedra: the simplex rules) and of
+     * its faces, set with the finite element (setup_system()). */
+    Quadrature<dim>     quadrature;
+    Quadrature<dim - 1> face_quadrature;
 
     IndexSet locally_owned_dofs;
     /** The dofs the ghosted vectors hold: those of the own and ghost

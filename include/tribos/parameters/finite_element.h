@@ -21,6 +21,10 @@ namespace tribos
       bool f_bar;
       /** Axisymmetric 2D model (x = r, y = z). */
       bool axisymmetric;
+      /** Split every cell of the scene into triangles (8 per
+       * quadrilateral) or tetrahedra (24 per hexahedron) before the
+       * finite element is chosen (Cells = simplices). */
+      bool split_into_simplices;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -1,0 +1,173 @@
+"""Triangles and tetrahedra (P1 and P2, FE_SimplexP), issue 45.
+
+- Homogeneous deformations are exact on simplices as on hexahedra: the
+  neo-Hookean uniaxial stretch (2D plane strain and 3D, P1 and P2, the
+  scene's cells split by Finite element/Cells = simplices) against the
+  analytic stress to 1e-8; J2 plasticity in uniaxial compression and
+  unloading (3D, P1 and P2 tetrahedra) against the 1D integration of the
+  law to 1e-3; the axisymmetric paper's cylinder between frictionless
+  rigid plates on P1 triangles with the force of the Q1 run to 1e-9.
+- A gmsh triangle mesh (tests/triangles.msh) runs: the uniaxial force
+  E u / L exactly.
+- Contact on triangle faces (2D): the mortar patch test with Lagrange
+  multipliers on split non-matching blocks, P1 and P2, gives the uniform
+  pressure of the quadrilateral run at every active node (to 1e-9), and
+  `mpirun -np 2` gives the serial history; the load-controlled Hertz 2D on
+  a gmsh triangle mesh (tests/hertz_2d_tri.msh, 3578 dofs, from
+  benchmarks/peers/hertz_2d.geo) with penalty and with multipliers: the
+  pressure profile's L2 error against Hertz below 5 % (measured 4.5 %) in
+  at most 8 Newton iterations, with the load carried.
+- A VTU file is written for a P2 triangle run; J2 plasticity on P1 warns
+  of locking."""
+
+import glob
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "benchmarks", "peers"))
+
+import hertz_error  # noqa: E402
+from analytic import J2Uniaxial, neo_hookean_stress  # noqa: E402
+from tribos_test import (setup, run, read_csv, check, finish,  # noqa: E402
+                         mpi_available)
+
+tribos, tests, out = setup(sys.argv)
+split = "Finite element/Cells=simplices"
+
+# Homogeneous: neo-Hookean stretch.
+for dim in (2, 3):
+    for degree in (1, 2):
+        folder = "%s/stretch_%dd_p%d" % (out, dim, degree)
+        sets = [split, "Finite element/Polynomial degree=%d" % degree]
+        if dim == 3:
+            # Symmetry planes as Dirichlet components (Symmetry is refused
+            # on tetrahedra).
+            sets += ["Dimension=3", "Boundary conditions/Symmetry=",
+                     "Boundary conditions/Dirichlet=0 : x : 0 ; 2 : y : 0 ; "
+                     "4 : z : 0 ; 1 : x : 0.6*t"]
+        run(tribos, tests + "/neo_hookean_stretch.prm", folder, sets)
+        worst = 0
+        for row in read_csv(folder + "/history.csv"):
+            exact = neo_hookean_stress(1 + 0.6 * row["time"], 1.0, 0.3,
+                                       dim - 1)
+            worst = max(worst, abs(row["RF1_x"] - exact) / abs(exact))
+        check(worst < 1e-8, "neo-Hookean stretch, %dD P%d: reaction vs "
+              "analytic, worst relative error %.2e < 1e-8"
+              % (dim, degree, worst))
+
+# Homogeneous: J2 uniaxial compression and unloading on tetrahedra.
+for degree in (1, 2):
+    folder = "%s/j2_p%d" % (out, degree)
+    result = run(tribos, tests + "/j2_uniaxial.prm", folder,
+                 [split, "Finite element/Polynomial degree=%d" % degree,
+                  "Boundary conditions/Symmetry=",
+                  "Boundary conditions/Dirichlet=0 : x : 0 ; 2 : y : 0 ; "
+                  "4 : z : 0 ; 5 : z : -0.2*min(t, 1) + 0.02*max(t - 1, 0)"])
+    material, worst = J2Uniaxial(), 0.0
+    for row in read_csv(folder + "/history.csv"):
+        u = -0.2 * min(row["time"], 1) + 0.02 * max(row["time"] - 1, 0)
+        force = material.update(1 + u) / (1 + u)
+        worst = max(worst, abs(row["RF5_z"] - force) / abs(force))
+    check(worst < 1e-3, "J2 uniaxial, P%d tetrahedra: force vs 1D "
+          "integration, worst relative error %.2e < 1e-3" % (degree, worst))
+    warned = "P1 locks" in result.stderr
+    check(warned == (degree == 1), "J2 on P%d %s of locking"
+          % (degree, "warns" if degree == 1 else "does not warn"))
+
+# A traction on tetrahedron faces: the fixed face carries it.
+folder = out + "/traction_3d"
+run(tribos, tests + "/neo_hookean_stretch.prm", folder,
+    [split, "Dimension=3", "Boundary conditions/Symmetry=",
+     "Boundary conditions/Dirichlet=0 : xyz : 0, 0, 0",
+     "Boundary conditions/Neumann=1 : 0.01*t, 0.002*t, 0"])
+row = read_csv(folder + "/history.csv")[-1]
+check(abs(row["RF0_x"] + 0.01) < 1e-10 and abs(row["RF0_y"] + 0.002) < 1e-10,
+      "traction on tetrahedron faces: reaction (%.12g, %.12g), load "
+      "(0.01, 0.002) on the unit face" % (row["RF0_x"], row["RF0_y"]))
+
+# The paper's cylinder (axisymmetric, frictionless plates): P1 triangles
+# and Q1 carry the same force in this homogeneous compression.
+forces = {}
+for cells in ("as meshed", "simplices"):
+    folder = "%s/cylinder_%s" % (out, cells.replace(" ", "_"))
+    run(tribos, tests + "/../parameters/cylinder_compression_axisymmetric.prm",
+        folder, ["Finite element/Cells=" + cells, "Output/Write VTU=false"])
+    forces[cells] = read_csv(folder + "/history.csv")[-1]["pair0_normal_force"]
+check(abs(forces["simplices"] - forces["as meshed"])
+      <= 1e-9 * abs(forces["as meshed"]),
+      "axisymmetric cylinder: P1 triangles %.10g, Q1 %.10g"
+      % (forces["simplices"], forces["as meshed"]))
+
+# A gmsh triangle mesh: the unit square pulled along x (nu = 0).
+folder = out + "/gmsh_triangles"
+run(tribos, tests + "/gmsh_import.prm", folder,
+    ["Scene/Mesh file=%s/triangles.msh" % tests,
+     "Materials/Young's modulus=3", "Materials/Poisson's ratio=0",
+     "Boundary conditions/Symmetry=4",
+     "Boundary conditions/Dirichlet=1 : y : 0 ; 2 : x : 0.01*t"])
+row = read_csv(folder + "/history.csv")[-1]
+check(abs(row["RF2_x"] - 0.03) < 1e-10 * 0.03,
+      "gmsh triangles: uniaxial force %.12g, exact 0.03" % row["RF2_x"])
+
+
+def pressures(folder):
+    rows = read_csv(sorted(glob.glob(folder + "/contact-*.csv"))[-1])
+    return [r["CPRESS"] for r in rows if r["CSTATUS"] != 0]
+
+
+# Mortar patch test on triangles.
+mortar = ["Contact/Discretization=mortar",
+          "Contact/Method=lagrange multiplier"]
+run(tribos, tests + "/patch_test.prm", out + "/patch_quads", mortar)
+reference = pressures(out + "/patch_quads")[0]
+for degree in (1, 2):
+    folder = "%s/patch_p%d" % (out, degree)
+    sets = mortar + [split, "Finite element/Polynomial degree=%d" % degree]
+    run(tribos, tests + "/patch_test.prm", folder, sets)
+    p = pressures(folder)
+    spread = max(abs(x - reference) for x in p) / reference
+    check(len(p) > 4 and spread < 1e-9,
+          "mortar patch test, P%d triangles: %d active nodes, pressure of "
+          "the quadrilateral run %.10g to %.1e" % (degree, len(p), reference,
+                                                   spread))
+    if mpi_available():
+        parallel = folder + "_np2"
+        run(tribos, tests + "/patch_test.prm", parallel, sets, mpi_ranks=2)
+        serial_row = read_csv(folder + "/history.csv")[-1]
+        parallel_row = read_csv(parallel + "/history.csv")[-1]
+        worst = max(abs(parallel_row[k] - serial_row[k])
+                    for k in serial_row if k.startswith(("RF", "pair0")))
+        check(worst < 1e-10, "mortar patch test, P%d triangles: -np 2 "
+              "reactions equal the serial ones (worst difference %.1e)"
+              % (degree, worst))
+
+# Hertz 2D on a gmsh triangle mesh, load control.
+peers = os.path.join(tests, "..", "benchmarks", "peers")
+for method in ("penalty", "lagrange multiplier"):
+    folder = "%s/hertz_%s" % (out, method.split()[0])
+    run(tribos, peers + "/hertz_2d_load.prm", folder,
+        ["Scene/Mesh file=%s/hertz_2d_tri.msh" % tests,
+         "Contact/Method=" + method])
+    points = hertz_error.read_tribos_contact(
+        sorted(glob.glob(folder + "/contact-*.csv"))[-1], 2)
+    force = hertz_error.read_tribos_force(folder + "/history.csv")
+    error = hertz_error.profile_error(points, 2 * force, 1.0,
+                                      1.0 / (1 - 0.3 ** 2), 2)
+    row = read_csv(folder + "/history.csv")[-1]
+    check(error < 0.05 and abs(force - 0.005) < 1e-8
+          and row["newton_iterations_all"] <= 8,
+          "Hertz 2D on triangles, %s: pressure L2 error %.4f < 0.05, "
+          "contact force %.8f (load 0.005), %d Newton iterations (<= 8)"
+          % (method, error, force, row["newton_iterations_all"]))
+
+# VTU on P2 triangles.
+folder = out + "/vtu_p2"
+run(tribos, tests + "/patch_test.prm", folder,
+    mortar + [split, "Finite element/Polynomial degree=2",
+              "Output/Write VTU=true"])
+vtu = open(folder + "/solution-00001.vtu").read()
+check("<VTKFile" in vtu and 'NumberOfCells="' in vtu,
+      "P2 triangles: solution-00001.vtu written")
+finish()
