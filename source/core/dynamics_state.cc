@@ -3,7 +3,6 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -85,11 +84,10 @@ namespace tribos
 
     if (!ts.initial_velocities.empty())
     {
+      const auto &cell_kind = dof_handler.get_fe().reference_cell();
       std::map<types::global_dof_index, Point<dim>> points;
       DoFTools::map_dofs_to_support_points(
-        dof_handler.get_fe()
-          .reference_cell()
-          .template get_default_linear_mapping<dim>(),
+        cell_kind.template get_default_linear_mapping<dim>(),
         dof_handler,
         points);
       std::map<types::material_id, std::unique_ptr<FunctionParser<dim>>>

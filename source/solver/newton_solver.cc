@@ -3,6 +3,9 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <tuple>
+#include <utility>
 
 namespace tribos
 {
@@ -176,6 +179,79 @@ namespace tribos
 
 
 
+  std::pair<bool, bool>
+  NewtonSolver::test_convergence(NonlinearProblem                 &problem,
+                                 const NonlinearProblem::Residual &r,
+                                 const Iterate                    &it,
+                                 const NonlinearProblem::Norms    &floor) const
+  {
+    const auto &p = parameters;
+    const bool  residual_converged =
+      r.free <= p.residual_tolerance * std::max(it.reference, r.force_scale) +
+                  p.absolute_residual_tolerance;
+    const auto change = problem.change_scale();
+    // Round-off stagnation: accepted only below the stated bound.
+    const bool stagnated =
+      it.correction.displacement <= 1e-12 * change.displacement &&
+      it.correction.multipliers <=
+        1e-12 * change.multipliers + floor.multipliers &&
+      r.free <= problem.stagnation_residual_bound();
+    // A residual at round-off (1e-4 of its tolerance) says the iterate
+    // solves the discrete equations: the correction still to come is
+    // round-off too, and the solve that would confirm it is skipped
+    // (Abaqus's test of linear increments). After an active-set change on
+    // a linear body, Newton lands there without the contraction the update
+    // test needs (2D Hertz: 7 solves instead of 6; 3D: 5 for 4). Not where
+    // multipliers are unknowns: their rows' scale is not the residual's.
+    const bool at_round_off = change.multipliers == 0 &&
+                              r.free <= 1e-4 * p.residual_tolerance *
+                                          std::max(it.reference, r.force_scale);
+    const bool converged =
+      (residual_converged &&
+       (at_round_off || update_converged(it.taken,
+                                         it.earlier,
+                                         change,
+                                         floor,
+                                         it.step_length == 1,
+                                         it.iteration))) ||
+      stagnated;
+    return {residual_converged, converged};
+  }
+
+
+
+  void
+  NewtonSolver::take_step(NonlinearProblem               &problem,
+                          const NonlinearProblem::Vector &update,
+                          const double                    residual,
+                          const bool                      line_search_allowed,
+                          Iterate                        &it,
+                          std::optional<NonlinearProblem::Residual> &assembled)
+  {
+    // A step the problem limits is taken as limited: the residual of a node
+    // entering contact may rise, and the Armijo test would only shorten it
+    // more.
+    const double limit = problem.step_limit(update, it.iteration == 0);
+    it.step_length     = 1;
+    if (limit < 1)
+    {
+      it.step_length = limit;
+      ++n_limited;
+      problem.solution().add(limit, update);
+      problem.solution_changed();
+    }
+    else if (line_search_allowed)
+      it.step_length =
+        line_search(problem, update, residual, !it.residual_first, assembled);
+    else
+    {
+      problem.solution().add(1., update);
+      problem.solution_changed();
+    }
+  }
+
+
+
   IncrementReport
   NewtonSolver::solve(NonlinearProblem                     &problem,
                       SolverObserver                       &observer,
@@ -236,37 +312,10 @@ namespace tribos
       bool residual_converged = false;
       if (!first)
       {
-        residual_converged =
-          r.free <=
-          p.residual_tolerance * std::max(it.reference, r.force_scale) +
-            p.absolute_residual_tolerance;
-        const auto change = problem.change_scale();
-        // Round-off stagnation: accepted only below the stated bound.
-        const bool stagnated =
-          it.correction.displacement <= 1e-12 * change.displacement &&
-          it.correction.multipliers <=
-            1e-12 * change.multipliers + floor.multipliers &&
-          r.free <= problem.stagnation_residual_bound();
-        // A residual at round-off (1e-4 of its tolerance) says the iterate
-        // solves the discrete equations: the correction still to come is
-        // round-off too, and the solve that would confirm it is skipped
-        // (Abaqus's test of linear increments). After an active-set change
-        // on a linear body, Newton lands there without the contraction the
-        // update test needs (2D Hertz: 7 solves instead of 6; 3D: 5 for 4).
-        // Not where multipliers are unknowns: their rows' scale is not the
-        // residual's.
-        const bool at_round_off =
-          change.multipliers == 0 &&
-          r.free <= 1e-4 * p.residual_tolerance *
-                      std::max(it.reference, r.force_scale);
-        if ((residual_converged &&
-             (at_round_off || update_converged(it.taken,
-                                               it.earlier,
-                                               change,
-                                               floor,
-                                               it.step_length == 1,
-                                               iteration))) ||
-            stagnated)
+        bool converged = false;
+        std::tie(residual_converged, converged) =
+          test_convergence(problem, r, it, floor);
+        if (converged)
         {
           report.residual = r.free;
           if (problem.at_convergence(report) ==
@@ -340,26 +389,12 @@ namespace tribos
                                                      floor,
                                                      true,
                                                      iteration + 1);
-      // A step the problem limits (a contact node carried far through a
-      // surface) is taken as limited: the residual of a node entering
-      // contact may rise, and the Armijo test would only shorten it more.
-      const double limit = problem.step_limit(update, first);
-      it.step_length     = 1;
-      if (limit < 1)
-      {
-        it.step_length = limit;
-        ++n_limited;
-        problem.solution().add(limit, update);
-        problem.solution_changed();
-      }
-      else if (p.line_search && !first && !residual_converged)
-        it.step_length =
-          line_search(problem, update, r.free, !it.residual_first, assembled);
-      else
-      {
-        problem.solution().add(1., update);
-        problem.solution_changed();
-      }
+      take_step(problem,
+                update,
+                r.free,
+                p.line_search && !first && !residual_converged,
+                it,
+                assembled);
       // A shortened step is not the one the test was passed by.
       it.residual_first     = it.residual_first && it.step_length == 1;
       it.earlier            = it.correction;

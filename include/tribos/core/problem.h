@@ -161,6 +161,10 @@ namespace tribos
      * steps): a clear error before any output is touched. */
     void
     check_checkpoint(const Checkpoint &checkpoint) const;
+    /** Refuse a Scene/Refinement whose mesh would not fit in the memory
+     * of the machines of the run, before it is built. */
+    void
+    check_mesh_size() const;
     /** Refuse what simplex meshes do not support (mixed cell kinds,
      * F-bar, contact on triangle faces in 3D); warn of locking. */
     void

@@ -113,6 +113,29 @@ namespace tribos
                      const bool                     full_step,
                      const unsigned int             iteration) const;
 
+    /** The convergence tests of iterate @p it with residual @p r: whether
+     * the residual test alone passes (first) and whether the iterate is
+     * converged (second: the residual and update tests, the round-off
+     * residual, or accepted stagnation). */
+    std::pair<bool, bool>
+    test_convergence(NonlinearProblem                 &problem,
+                     const NonlinearProblem::Residual &r,
+                     const Iterate                    &it,
+                     const NonlinearProblem::Norms    &floor) const;
+
+    /**
+     * Move the solution along @p update: the step the problem limits
+     * (a contact node carried far through a surface), the line search's,
+     * or the whole step; records the step in @p it.
+     */
+    void
+    take_step(NonlinearProblem                          &problem,
+              const NonlinearProblem::Vector            &update,
+              const double                               residual,
+              const bool                                 line_search_allowed,
+              Iterate                                   &it,
+              std::optional<NonlinearProblem::Residual> &assembled);
+
     /** The relative tolerance of an iterative linear solve at @p it with
      * free residual @p residual (inexact Newton). */
     double

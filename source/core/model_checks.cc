@@ -1,0 +1,207 @@
+/**
+ * The checks of a model that are not about one parameter: its mesh's size
+ * before it is built, what triangles and tetrahedra do not support, and
+ * the warnings about its support (nothing loads it, a body nothing holds).
+ */
+
+#include <tribos/base/text.h>
+#include <tribos/core/problem.h>
+#include <tribos/scene/scene.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace tribos
+{
+  namespace
+  {
+    /** Whether @p expression is a number equal to zero ("0", "0.0",
+     * "-0e3"), not an expression that may vanish. */
+    bool
+    is_zero(const std::string &expression)
+    {
+      const std::string text  = Text::trim(expression);
+      char             *end   = nullptr;
+      const double      value = std::strtod(text.c_str(), &end);
+      return !text.empty() && end != nullptr && *end == '\0' && value == 0;
+    }
+
+    bool
+    all_zero(const std::vector<std::string> &expressions)
+    {
+      return std::all_of(expressions.begin(), expressions.end(), is_zero);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::support_warnings()
+  {
+    // Nothing loads the model: the answer is the initial state.
+    const auto &bc     = parameters.boundary_conditions;
+    bool        loaded = !bc.neumann.empty() || !bc.body_force.empty() ||
+                  parameters.time_stepping.dynamic();
+    for (const auto &d : bc.dirichlet)
+      loaded = loaded || !all_zero(d.expressions);
+    for (const auto &surface : parameters.contact.rigid_surfaces)
+      loaded = loaded || !all_zero(surface.motion);
+    if (!loaded)
+      warn("nothing loads the model: no Neumann load, no body force, no "
+           "Dirichlet value other than 0, no moving rigid surface and no "
+           "dynamics, so the solution stays the initial state. Check "
+           "Boundary conditions and Contact/Rigid surfaces.");
+
+    // A body that neither a Dirichlet condition nor a contact pair touches
+    // has rigid-body modes nothing holds (a singular static system).
+    if (parameters.time_stepping.dynamic())
+      return;
+    std::set<unsigned int> held;
+    for (const auto &d : bc.dirichlet)
+      held.insert(d.boundary_id);
+    held.insert(bc.symmetry.begin(), bc.symmetry.end());
+    for (const auto &pair : parameters.contact.pairs)
+    {
+      held.insert(pair.slave_boundary.begin(), pair.slave_boundary.end());
+      held.insert(pair.master_boundary.begin(), pair.master_boundary.end());
+    }
+    std::set<unsigned int> bodies, touched;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        bodies.insert(cell->material_id());
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              held.count(cell->face(f)->boundary_id()) > 0)
+            touched.insert(cell->material_id());
+      }
+    bodies  = Utilities::MPI::compute_set_union(bodies, mpi_communicator);
+    touched = Utilities::MPI::compute_set_union(touched, mpi_communicator);
+    for (const auto body : bodies)
+      if (touched.count(body) == 0)
+        warn("body " + std::to_string(body) +
+             " has no Dirichlet or symmetry condition and no contact "
+             "surface: nothing holds its rigid-body motion (a singular "
+             "static system). Add a support or a contact pair, or "
+             "Nonlinear solver/Stabilization factor.");
+  }
+
+
+
+  /**
+   * Refuse a Scene/Refinement whose mesh could not fit in memory, before
+   * it is built (refinement 10 of the 3D blocks ran a minute in silence
+   * and then ended in std::bad_alloc). The scene is built unrefined, and
+   * each level multiplies its cells by 2^dim. The bytes per cell are
+   * measured, one process with the direct solver, on the 3D blocks
+   * (17408 Q1 cells: 0.69 GB, 40 kB per cell) and rounded up; they grow
+   * with the element's nodes, degree^dim. The limit is the memory of the
+   * machines the processes run on.
+   */
+  template <int dim>
+  void
+  Problem<dim>::check_mesh_size() const
+  {
+    const SceneGeometry &scene        = *parameters.scene.geometry;
+    const unsigned int   refinement   = parameters.scene.refinement;
+    const unsigned int   degree       = parameters.finite_element.degree;
+    const MPI_Comm       communicator = mpi_communicator;
+    Triangulation<dim>   coarse;
+    scene.create(0, coarse);
+    const double n_cells =
+      coarse.n_active_cells() * std::pow(2.0, dim * refinement);
+    const double bytes_per_cell =
+      (dim == 2 ? 5e3 : 50e3) * std::pow(double(degree), dim);
+    const double bytes = n_cells * bytes_per_cell;
+
+    char name[MPI_MAX_PROCESSOR_NAME];
+    int  length = 0;
+    MPI_Get_processor_name(name, &length);
+    const auto hosts =
+      Utilities::MPI::all_gather(communicator, std::string(name, length));
+    const std::set<std::string> machines(hosts.begin(), hosts.end());
+    const double                memory = double(sysconf(_SC_PHYS_PAGES)) *
+                          sysconf(_SC_PAGE_SIZE) * machines.size();
+    if (bytes <= memory)
+      return;
+    unsigned int largest = 0;
+    while (largest < refinement && coarse.n_active_cells() *
+                                       std::pow(2.0, dim * (largest + 1)) *
+                                       bytes_per_cell <=
+                                     memory)
+      ++largest;
+    std::ostringstream text;
+    text.precision(2);
+    text << "Parameter <Scene/Refinement> = " << refinement
+         << ": the mesh would have about " << n_cells
+         << " cells and need about " << bytes / 1e9
+         << " GB (an estimate: " << bytes_per_cell / 1e3
+         << " kB per cell of degree " << degree << " in " << dim
+         << "D), more than the " << memory / 1e9
+         << " GB of memory of the machine(s) of this run. Allowed for "
+            "this scene here: at most "
+         << largest << ".";
+    AssertThrow(false, ExcMessage(text.str()));
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::check_simplex_model()
+  {
+    AssertThrow(triangulation.all_reference_cells_are_simplex(),
+                ExcMessage("Parameter <Scene/Mesh file>: the mesh mixes "
+                           "simplices with quadrilaterals or hexahedra; "
+                           "tribos takes one kind of cell per mesh."));
+    AssertThrow(!parameters.finite_element.f_bar,
+                ExcMessage("Parameter <Finite element/F-bar> = true: F-bar "
+                           "is the remedy of Q1 cells. On triangles and "
+                           "tetrahedra use Polynomial degree = 2 against "
+                           "locking (P1 locks in isochoric plastic flow)."));
+    AssertThrow(dim == 2 || parameters.contact.pairs.empty(),
+                ExcMessage("Parameter <Contact/Pairs>: contact on the "
+                           "triangle faces of tetrahedra is not available "
+                           "yet (contact on simplices: 2D triangles only); "
+                           "mesh the contact bodies with hexahedra."));
+    // deal.II 9.4's no-normal-flux constraints are wrong on linear
+    // tetrahedra (the uniaxial stretch of a split cube: 0.5 % off the
+    // analytic force, with the same planes as Dirichlet components exact).
+    AssertThrow(dim == 2 || parameters.boundary_conditions.symmetry.empty(),
+                ExcMessage("Parameter <Boundary conditions/Symmetry> on "
+                           "tetrahedra is not available yet; for a plane "
+                           "normal to an axis, set its normal component to "
+                           "0 with Dirichlet (e.g. 0 : x : 0)."));
+    // Row sums of the P2 simplex mass matrix put no (triangles) or negative
+    // (tetrahedra) mass on the vertices.
+    AssertThrow(parameters.finite_element.degree == 1 ||
+                  !parameters.time_stepping.dynamic() ||
+                  parameters.time_stepping.mass_matrix !=
+                    Parameters::MassMatrix::lumped,
+                ExcMessage("Parameter <Time stepping/Mass matrix> = lumped "
+                           "on quadratic triangles or tetrahedra: the row "
+                           "sums give the vertices zero or negative mass. "
+                           "Use consistent, or Polynomial degree = 1."));
+    const auto &models = parameters.materials.models;
+    if (parameters.finite_element.degree == 1 &&
+        std::find(models.begin(), models.end(), "J2 plasticity") !=
+          models.end())
+      warn("Materials/Model = J2 plasticity on linear triangles or "
+           "tetrahedra (Finite element/Polynomial degree = 1): P1 locks in "
+           "isochoric plastic flow (too stiff, wrong pressures) except in "
+           "homogeneous deformation. Use Polynomial degree = 2.");
+  }
+
+
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos
