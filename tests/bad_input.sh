@@ -39,9 +39,6 @@ expect simplex_f_bar "F-bar is the remedy of Q1 cells" "$tribos" "$good" \
   --set "Finite element/Cells=simplices" --set "Finite element/F-bar=true"
 expect simplex_contact_3d "contact on the triangle faces of tetrahedra" \
   "$tribos" "$tests/sliding_blocks_3d.prm" --set "Finite element/Cells=simplices"
-expect simplex_symmetry_3d "<Boundary conditions/Symmetry> on tetrahedra" \
-  "$tribos" "$good" --set "Dimension=3" --set "Finite element/Cells=simplices" \
-  --set "Boundary conditions/Symmetry=0, 2, 4"
 expect simplex_quadrature "<Finite element/Quadrature points> = 5" \
   "$tribos" "$good" --set "Finite element/Cells=simplices" \
   --set "Finite element/Quadrature points=5"

@@ -42,11 +42,9 @@ for dim in (2, 3):
         folder = "%s/stretch_%dd_p%d" % (out, dim, degree)
         sets = [split, "Finite element/Polynomial degree=%d" % degree]
         if dim == 3:
-            # Symmetry planes as Dirichlet components (Symmetry is refused
-            # on tetrahedra).
-            sets += ["Dimension=3", "Boundary conditions/Symmetry=",
-                     "Boundary conditions/Dirichlet=0 : x : 0 ; 2 : y : 0 ; "
-                     "4 : z : 0 ; 1 : x : 0.6*t"]
+            # Three symmetry planes meet at the origin: deal.II 9.4 left
+            # a direction free there on P1 tetrahedra (0.5 % off).
+            sets += ["Dimension=3", "Boundary conditions/Symmetry=0, 2, 4"]
         run(tribos, tests + "/neo_hookean_stretch.prm", folder, sets)
         worst = 0
         for row in read_csv(folder + "/history.csv"):
@@ -61,10 +59,7 @@ for dim in (2, 3):
 for degree in (1, 2):
     folder = "%s/j2_p%d" % (out, degree)
     result = run(tribos, tests + "/j2_uniaxial.prm", folder,
-                 [split, "Finite element/Polynomial degree=%d" % degree,
-                  "Boundary conditions/Symmetry=",
-                  "Boundary conditions/Dirichlet=0 : x : 0 ; 2 : y : 0 ; "
-                  "4 : z : 0 ; 5 : z : -0.2*min(t, 1) + 0.02*max(t - 1, 0)"])
+                 [split, "Finite element/Polynomial degree=%d" % degree])
     material, worst = J2Uniaxial(), 0.0
     for row in read_csv(folder + "/history.csv"):
         u = -0.2 * min(row["time"], 1) + 0.02 * max(row["time"] - 1, 0)

@@ -172,14 +172,6 @@ namespace tribos
                            "triangle faces of tetrahedra is not available "
                            "yet (contact on simplices: 2D triangles only); "
                            "mesh the contact bodies with hexahedra."));
-    // deal.II 9.4's no-normal-flux constraints are wrong on linear
-    // tetrahedra (the uniaxial stretch of a split cube: 0.5 % off the
-    // analytic force, with the same planes as Dirichlet components exact).
-    AssertThrow(dim == 2 || parameters.boundary_conditions.symmetry.empty(),
-                ExcMessage("Parameter <Boundary conditions/Symmetry> on "
-                           "tetrahedra is not available yet; for a plane "
-                           "normal to an axis, set its normal component to "
-                           "0 with Dirichlet (e.g. 0 : x : 0)."));
     // Row sums of the P2 simplex mass matrix put no (triangles) or negative
     // (tetrahedra) mass on the vertices.
     AssertThrow(parameters.finite_element.degree == 1 ||

@@ -12,6 +12,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -53,6 +54,90 @@ namespace tribos
       linear_solver->release_matrix();
     matrix.reinit(system_owned, system_owned, dsp, mpi_communicator);
     ++sparsity_version;
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::fix_symmetry_corners(const std::set<types::boundary_id> &ids,
+                                     AffineConstraints<double> &symmetry) const
+  {
+    // The unit normals of the symmetry faces at each vertex (named by its
+    // first dof, with all its dofs), from the faces' first three corners
+    // (flat faces).
+    std::map<types::global_dof_index,
+             std::pair<std::vector<types::global_dof_index>,
+                       std::vector<Tensor<1, dim>>>>
+      vertices;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              ids.count(cell->face(f)->boundary_id()) == 1)
+          {
+            const auto     face = cell->face(f);
+            Tensor<1, dim> normal;
+            if constexpr (dim == 3)
+              normal = cross_product_3d(face->vertex(1) - face->vertex(0),
+                                        face->vertex(2) - face->vertex(0));
+            if (normal.norm() == 0)
+              continue;
+            normal /= normal.norm();
+            for (const auto v : face->vertex_indices())
+            {
+              auto &vertex = vertices[face->vertex_dof_index(v, 0)];
+              if (vertex.first.empty())
+                for (unsigned int d = 0; d < dim; ++d)
+                  vertex.first.push_back(face->vertex_dof_index(v, d));
+              vertex.second.push_back(normal);
+            }
+          }
+    // A vertex where three independent symmetry planes meet is fixed: its
+    // faces' normals fall into at least three directions (apart by more
+    // than 18 degrees, so that the facets of a curved surface do not count)
+    // that span space.
+    std::set<types::global_dof_index> corner_dofs;
+    for (const auto &[first, vertex] : vertices)
+    {
+      std::vector<Tensor<1, dim>> directions;
+      for (const auto &n : vertex.second)
+        if (std::none_of(directions.begin(),
+                         directions.end(),
+                         [&n](const Tensor<1, dim> &d)
+                         { return std::abs(d * n) > 0.95; }))
+          directions.push_back(n);
+      bool corner = false;
+      for (unsigned int a = 0; a < directions.size() && !corner; ++a)
+        for (unsigned int b = a + 1; b < directions.size() && !corner; ++b)
+          for (unsigned int c = b + 1; c < directions.size() && !corner; ++c)
+          {
+            Tensor<2, dim> m;
+            for (unsigned int d = 0; d < dim; ++d)
+            {
+              m[0][d]       = directions[a][d];
+              m[1][d]       = directions[b][d];
+              m[2 % dim][d] = directions[c][d];
+            }
+            corner = std::abs(determinant(m)) > 0.05;
+          }
+      if (corner)
+        corner_dofs.insert(vertex.first.begin(), vertex.first.end());
+    }
+    if (Utilities::MPI::max(corner_dofs.empty() ? 0 : 1, mpi_communicator) == 0)
+      return;
+    AffineConstraints<double> fixed(symmetry.get_local_lines());
+    for (const auto &line : symmetry.get_lines())
+      if (corner_dofs.count(line.index) == 0)
+      {
+        fixed.add_line(line.index);
+        fixed.add_entries(line.index, line.entries);
+        fixed.set_inhomogeneity(line.index, line.inhomogeneity);
+      }
+    for (const auto dof : corner_dofs)
+      fixed.add_line(dof);
+    fixed.close();
+    symmetry.copy_from(fixed);
   }
 
 
@@ -115,6 +200,8 @@ namespace tribos
         symmetry,
         fe->reference_cell().template get_default_linear_mapping<dim>());
       symmetry.close();
+      if (dim == 3)
+        fix_symmetry_corners(ids, symmetry);
       // Merging substitutes the symmetry lines into the hanging-node lines
       // that refer to them. On a distributed mesh the outer faces of the
       // ghost layer are boundary faces with id 0 of the local mesh, so a

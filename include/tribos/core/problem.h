@@ -161,6 +161,15 @@ namespace tribos
      * steps): a clear error before any output is touched. */
     void
     check_checkpoint(const Checkpoint &checkpoint) const;
+    /**
+     * At a vertex where three independent symmetry planes meet, every
+     * displacement component is zero; deal.II 9.4's no-normal-flux
+     * constraints leave one direction free there on linear tetrahedra
+     * (the corner of a split cube's three planes: u_y = u_x, u_z = -u_x).
+     */
+    void
+    fix_symmetry_corners(const std::set<types::boundary_id> &ids,
+                         AffineConstraints<double>          &symmetry) const;
     /** Refuse a Scene/Refinement whose mesh would not fit in the memory
      * of the machines of the run, before it is built. */
     void
