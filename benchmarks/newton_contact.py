@@ -45,6 +45,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 PEERS = os.path.join(ROOT, "benchmarks", "peers")
 sys.path.insert(0, PEERS)
 import hertz_error  # noqa: E402
+from peer_runs import mesh, summary_value  # noqa: E402
 
 METHODS = [("penalty 100 E/h", ["Contact/Method=penalty",
                                 "Contact/Penalty factor=100*E/h"]),
@@ -69,19 +70,6 @@ CASES = {
                  3, 10.0, 2e5, 0.3, 4.0,
                  "Scene/Cylinder over block/Gap"),
 }
-
-MESHES = {"hertz_2d_13k.msh": "0.00775", "hertz_2d_49k.msh": "0.00338"}
-
-
-def make_meshes():
-    """The 2D gmsh meshes, if missing (gmsh 4.8: the same files)."""
-    for name, size in MESHES.items():
-        path = os.path.join(PEERS, name)
-        if not os.path.exists(path):
-            subprocess.run(["gmsh", "-2", "-setnumber", "hf", size,
-                            os.path.join(PEERS, "hertz_2d.geo"), "-o", path],
-                           stdout=subprocess.DEVNULL, check=True)
-
 
 def shift_mesh(source, target, gap):
     """A copy of the gmsh mesh @p source lifted by @p gap in y (the 2D
@@ -121,13 +109,6 @@ def observed_order(folder):
         last = last[:-1]
     order = float(last[-1]["order"]) if last else float("nan")
     return "" if order != order else "%.2f" % order
-
-
-def summary_value(folder, key):
-    for line in open(os.path.join(folder, "summary.txt")):
-        if line.startswith(key):
-            return line[len(key):].split()[0]
-    return ""
 
 
 def run(tribos, prm, folder, sets):
@@ -229,7 +210,8 @@ def main():
         if args.scenes:
             return scenes(os.path.abspath(args.tribos), args.set, work,
                           args.out)
-        make_meshes()
+        for name in ("hertz_2d_13k.msh", "hertz_2d_49k.msh"):
+            mesh(name)
         fields = ["case", "dofs", "method", "mu", "start", "newton",
                   "newton_all", "cutbacks", "short_steps", "order", "wall",
                   "error", "status"]

@@ -47,39 +47,39 @@ VALUES = ["nan", "inf", "-inf", "0", "-1", "1e308", "-1e308", "1e-308", "",
           ";;", "1e150", "-0"]
 
 
+def lines_with_entries(path):
+    """Each line of the parameter file at path with what it sets: (the
+    entry's Section/.../Entry path, its key, its value), or None."""
+    stack = []
+    for line in open(path):
+        text, entry = line.split("#", 1)[0].strip(), None
+        if text.startswith("subsection "):
+            stack.append(text[len("subsection "):].strip())
+        elif text == "end":
+            stack.pop()
+        elif text.startswith("set "):
+            key, _, value = text[4:].partition("=")
+            entry = ("/".join(stack + [key.strip()]), key.strip(),
+                     value.strip())
+        yield line, entry
+
+
 def entries(path):
     """The (Section/.../Entry, value) pairs set in the file at path."""
-    stack, found = [], []
-    for line in open(path):
-        line = line.split("#", 1)[0].strip()
-        if line.startswith("subsection "):
-            stack.append(line[len("subsection "):].strip())
-        elif line == "end":
-            stack.pop()
-        elif line.startswith("set "):
-            key, _, value = line[4:].partition("=")
-            found.append(("/".join(stack + [key.strip()]), value.strip()))
-    return found
+    return [(e[0], e[2]) for _, e in lines_with_entries(path) if e]
 
 
 def without_line(path, entry, target, repeat=None):
     """A copy of the parameter file without the line that sets entry, or,
     if repeat is a value, with that line followed by a second one that sets
     entry to repeat."""
-    stack, lines = [], []
-    for line in open(path):
-        text = line.split("#", 1)[0].strip()
-        if text.startswith("subsection "):
-            stack.append(text[len("subsection "):].strip())
-        elif text == "end":
-            stack.pop()
-        elif text.startswith("set "):
-            key = text[4:].partition("=")[0].strip()
-            if "/".join(stack + [key]) == entry:
-                if repeat is None:
-                    continue
-                lines.append(line)
-                line = "set %s = %s\n" % (key, repeat)
+    lines = []
+    for line, found in lines_with_entries(path):
+        if found and found[0] == entry:
+            if repeat is None:
+                continue
+            lines.append(line)
+            line = "set %s = %s\n" % (found[1], repeat)
         lines.append(line)
     with open(target, "w") as f:
         f.writelines(lines)

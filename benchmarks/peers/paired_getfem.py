@@ -38,6 +38,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 import hertz_error  # noqa: E402
+from peer_runs import mesh, summary_value  # noqa: E402
 
 # name: tribos parameter file, tribos settings, GetFEM mesh, dim, R, E, nu,
 # symmetry factor
@@ -49,28 +50,6 @@ CASES = {
     "hertz_3d": (os.path.join(ROOT, "parameters", "hertz_3d_load.prm"), None,
                  "hertz_3d_20k.msh", 3, 10.0, 2e5, 0.3, 4.0),
 }
-
-MESHES = {"hertz_2d_13k.msh": ["-2", "-setnumber", "hf", "0.00775",
-                               "hertz_2d.geo"],
-          "hertz_2d_49k.msh": ["-2", "-setnumber", "hf", "0.00338",
-                               "hertz_2d.geo"],
-          "hertz_3d_20k.msh": ["-3", "hertz_3d.geo"]}
-
-
-def mesh(name):
-    path = os.path.join(HERE, name)
-    if not os.path.exists(path):
-        subprocess.run(["gmsh"] + MESHES[name] + ["-o", path], cwd=HERE,
-                       stdout=subprocess.DEVNULL, check=True)
-    return path
-
-
-def summary_value(folder, key):
-    for line in open(os.path.join(folder, "summary.txt")):
-        if line.startswith(key):
-            return line[len(key):].split()[0]
-    return ""
-
 
 def run_tribos(tribos, case, folder, sets):
     prm, tribos_mesh, _, dim, radius, young, nu, factor = CASES[case]

@@ -6,9 +6,9 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <set>
-#include <chrono>
 
 namespace tribos
 {
@@ -89,6 +89,19 @@ namespace tribos
 
 
   template <int dim>
+  void
+  ContactHandler<dim>::size_element_buffers()
+  {
+    unsigned int n_max = 0;
+    for (const auto &pair : contact_pairs)
+      n_max = std::max(n_max, pair.discretization->max_element_dofs());
+    element_residual.resize(n_max);
+    element_matrix.resize(n_max * n_max);
+  }
+
+
+
+  template <int dim>
   SlaveInput
   ContactHandler<dim>::slave_input(const unsigned int               p,
                                    const unsigned int               k,
@@ -97,16 +110,16 @@ namespace tribos
     ContactPair<dim> &pair  = contact_pairs[p];
     NodeState        &state = pair.current[k];
     SlaveInput        slave;
-    slave.position          = pair.slave_positions[k];
-    slave.committed         = &pair.committed[k];
-    slave.law = pair.enforcement->law(pair, k, state, homogeneous);
+    slave.position  = pair.slave_positions[k];
+    slave.committed = &pair.committed[k];
+    slave.law       = pair.enforcement->law(pair, k, state, homogeneous);
     slave.law.frozen_closed = monitor.frozen(p, k);
     slave.law.frozen_stick  = monitor.frozen_stick(p, k);
     slave.area              = pair.area[k];
-    slave.unknowns   = pair.enforcement->n_node_unknowns() > 0 ? &state.lambda :
-                                                                 nullptr;
-    slave.consistent = parameters.tangent ==
-                       Parameters::ContactTangent::consistent;
+    slave.unknowns =
+      pair.enforcement->n_node_unknowns() > 0 ? &state.lambda : nullptr;
+    slave.consistent =
+      parameters.tangent == Parameters::ContactTangent::consistent;
     return slave;
   }
 
@@ -116,11 +129,11 @@ namespace tribos
   double
   ContactHandler<dim>::step_limit(const TrilinosWrappers::MPI::Vector &trial,
                                   const double                         t,
-                                  const double fraction,
+                                  const double                         fraction,
                                   const AffineConstraints<double> &homogeneous)
   {
     // What the trial search and evaluation change, to be put back.
-    std::vector<std::vector<NodeState>> states;
+    std::vector<std::vector<NodeState>>                          states;
     std::vector<std::set<std::pair<unsigned int, unsigned int>>> couplings;
     for (const auto &pair : contact_pairs)
     {
@@ -132,10 +145,7 @@ namespace tribos
     const auto   volume       = exchange;
 
     update(trial, t);
-    unsigned int n_max = 0;
-    for (const auto &pair : contact_pairs)
-      n_max = std::max(n_max, pair.discretization->max_element_dofs());
-    element_residual.resize(n_max);
+    size_element_buffers();
     std::vector<types::global_dof_index> dofs;
     std::string                          refusal;
     double                               limit = 1;
@@ -201,12 +211,8 @@ namespace tribos
                                 TrilinosWrappers::MPI::Vector   &full_residual,
                                 TrilinosWrappers::MPI::Vector   &contact_forces)
   {
-    const auto   start = std::chrono::steady_clock::now();
-    unsigned int n_max = 0;
-    for (const auto &pair : contact_pairs)
-      n_max = std::max(n_max, pair.discretization->max_element_dofs());
-    element_residual.resize(n_max);
-    element_matrix.resize(n_max * n_max);
+    const auto start = std::chrono::steady_clock::now();
+    size_element_buffers();
     double *R = element_residual.data(), *K = element_matrix.data();
 
     // Element buffers, reused for every slave node (sized per element).

@@ -96,44 +96,46 @@ namespace tribos
 
 
 
-  /**
-   * Refuse a Scene/Refinement whose mesh could not fit in memory, before
-   * it is built (refinement 10 of the 3D blocks ran a minute in silence
-   * and then ended in std::bad_alloc). The scene is built unrefined, and
-   * each level multiplies its cells by 2^dim. The bytes per cell are
-   * measured, one process with the direct solver, on the 3D blocks
-   * (17408 Q1 cells: 0.69 GB, 40 kB per cell) and rounded up; they grow
-   * with the element's nodes, degree^dim. The limit is the memory of the
-   * machines the processes run on.
-   */
   template <int dim>
-  void
-  Problem<dim>::check_mesh_size() const
+  double
+  Problem<dim>::machines_memory() const
   {
-    const SceneGeometry &scene        = *parameters.scene.geometry;
-    const unsigned int   refinement   = parameters.scene.refinement;
-    const unsigned int   degree       = parameters.finite_element.degree;
-    const MPI_Comm       communicator = mpi_communicator;
-    Triangulation<dim>   coarse;
-    scene.create(0, coarse);
-    const double n_cells =
-      coarse.n_active_cells() * std::pow(2.0, dim * refinement);
-    const double bytes_per_cell =
-      (dim == 2 ? 5e3 : 50e3) * std::pow(double(degree), dim);
-    const double bytes = n_cells * bytes_per_cell;
-
     char name[MPI_MAX_PROCESSOR_NAME];
     int  length = 0;
     MPI_Get_processor_name(name, &length);
     const auto hosts =
-      Utilities::MPI::all_gather(communicator, std::string(name, length));
+      Utilities::MPI::all_gather(mpi_communicator, std::string(name, length));
     const std::set<std::string> machines(hosts.begin(), hosts.end());
-    const double                memory = double(sysconf(_SC_PHYS_PAGES)) *
-                          sysconf(_SC_PAGE_SIZE) * machines.size();
+    return double(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE) *
+           machines.size();
+  }
+
+
+
+  /**
+   * Refuse a Scene/Refinement whose mesh could not fit in memory, before
+   * it is built (refinement 10 of the 3D blocks ran a minute in silence
+   * and then ended in std::bad_alloc). Each level multiplies its cells by
+   * 2^dim. The bytes per cell are measured, one process with the direct solver,
+   * on the 3D blocks (17408 Q1 cells: 0.69 GB, 40 kB per cell) and rounded up;
+   * they grow with the element's nodes, degree^dim. The limit is the memory of
+   * the machines the processes run on.
+   */
+  template <int dim>
+  void
+  Problem<dim>::check_mesh_size(const unsigned int n_scene_cells,
+                                const double       memory) const
+  {
+    const unsigned int refinement = parameters.scene.refinement;
+    const unsigned int degree     = parameters.finite_element.degree;
+    const double n_cells = n_scene_cells * std::pow(2.0, dim * refinement);
+    const double bytes_per_cell =
+      (dim == 2 ? 5e3 : 50e3) * std::pow(double(degree), dim);
+    const double bytes = n_cells * bytes_per_cell;
     if (bytes <= memory)
       return;
     unsigned int largest = 0;
-    while (largest < refinement && coarse.n_active_cells() *
+    while (largest < refinement && n_scene_cells *
                                        std::pow(2.0, dim * (largest + 1)) *
                                        bytes_per_cell <=
                                      memory)

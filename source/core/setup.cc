@@ -19,7 +19,6 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -85,20 +84,35 @@ namespace tribos
     /**
      * The scene into the empty @p triangulation: as its generator makes it,
      * or with every cell split into simplices (Finite element/Cells).
+     * @p check_size gets the scene's unrefined cell count: before a
+     * refined mesh is built (from the scene built at level 0), or at
+     * Scene/Refinement = 0 from the mesh itself (not built twice).
      */
-    template <int dim>
+    template <int dim, typename SizeCheck>
     void
     create_scene(const Parameters::AllParameters &parameters,
-                 Triangulation<dim>              &triangulation)
+                 Triangulation<dim>              &triangulation,
+                 const SizeCheck                 &check_size)
     {
-      const auto &scene = *parameters.scene.geometry;
+      const auto        &scene      = *parameters.scene.geometry;
+      const unsigned int refinement = parameters.scene.refinement;
+      if (refinement > 0)
+      {
+        Triangulation<dim> coarse;
+        scene.create(0, coarse);
+        check_size(coarse.n_active_cells());
+      }
       if (!parameters.finite_element.split_into_simplices)
       {
-        scene.create(parameters.scene.refinement, triangulation);
+        scene.create(refinement, triangulation);
+        if (refinement == 0)
+          check_size(triangulation.n_active_cells());
         return;
       }
       Triangulation<dim> cells;
-      scene.create(parameters.scene.refinement, cells);
+      scene.create(refinement, cells);
+      if (refinement == 0)
+        check_size(cells.n_active_cells());
       AssertThrow(cells.all_reference_cells_are_hyper_cube(),
                   ExcMessage("Parameter <Finite element/Cells> = simplices "
                              "splits quadrilaterals and hexahedra; the mesh "
@@ -129,9 +143,13 @@ namespace tribos
     const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights)
   {
     TimerOutput::Scope t(timer, "setup");
-    check_mesh_size();
     if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
-      create_scene(parameters, triangulation);
+    {
+      const double memory = machines_memory();
+      create_scene(parameters,
+                   triangulation,
+                   [&](const unsigned int n) { check_mesh_size(n, memory); });
+    }
     else
       create_distributed_scene(weights);
     if (!triangulation.all_reference_cells_are_hyper_cube())
@@ -182,13 +200,17 @@ namespace tribos
     // ghosts. A bad scene is reported on every process.
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
+    // Collective, so before the first process builds the scene.
+    const double       memory = machines_memory();
     Triangulation<dim> serial;
     std::string        error;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     {
       try
       {
-        create_scene(parameters, serial);
+        create_scene(parameters,
+                     serial,
+                     [&](const unsigned int n) { check_mesh_size(n, memory); });
       }
       catch (const ExceptionBase &e)
       {

@@ -200,7 +200,7 @@ namespace tribos
         symmetry,
         fe->reference_cell().template get_default_linear_mapping<dim>());
       symmetry.close();
-      if (dim == 3)
+      if (dim == 3 && !triangulation.all_reference_cells_are_hyper_cube())
         fix_symmetry_corners(ids, symmetry);
       // Merging substitutes the symmetry lines into the hanging-node lines
       // that refer to them. On a distributed mesh the outer faces of the

@@ -102,7 +102,7 @@ namespace tribos
         prm.declare_entry(
           "Friction coefficient",
           "0",
-          dealii::Patterns::Double(0, Text::largest_value),
+          Text::non_negative_number(),
           "Coulomb coefficient mu (>= 0); 0 is frictionless and "
           "stores no tangential state.");
       }
@@ -144,7 +144,7 @@ namespace tribos
           "coarse curved slave.");
         prm.declare_entry("Search distance",
                           "0",
-                          dealii::Patterns::Double(0, Text::largest_value),
+                          Text::non_negative_number(),
                           "Slave nodes farther than this from every master "
                           "face are not projected (open, no gap). 0: no "
                           "limit. Under MPI each process receives the master "
@@ -163,7 +163,7 @@ namespace tribos
       {
         prm.declare_entry("Augmentation tolerance",
                           "1e-4",
-                          dealii::Patterns::Double(0, Text::largest_value),
+                          Text::non_negative_number(),
                           "augmented lagrangian: Uzawa updates of the "
                           "multipliers repeat an increment until every closed "
                           "slave node penetrates less than this fraction of "

@@ -70,7 +70,7 @@ namespace tribos
         "the solve is UMFPACK's LU of the whole system, as with false.");
       prm.declare_entry("Tolerance",
                         "1e-10",
-                        dealii::Patterns::Double(0, Text::largest_value),
+                        Text::non_negative_number(),
                         "The smallest relative residual asked of the "
                         "iterative solver: inexact Newton asks between this "
                         "and 1e-3, following the Newton residual.");

@@ -1,5 +1,5 @@
-#include <tribos/parameters/nonlinear_solver.h>
 #include <tribos/base/text.h>
+#include <tribos/parameters/nonlinear_solver.h>
 
 namespace tribos
 {
@@ -16,18 +16,19 @@ namespace tribos
                         "increment is cut back (an iterate whose residual "
                         "meets its tolerance still gets up to two solves "
                         "that confirm its update).");
-      prm.declare_entry("Residual tolerance",
-                        "1e-8",
-                        dealii::Patterns::Double(0, 0.1),
-                        "Converged when |R| <= tol * max(|R| at the start of "
-                        "the increment, |f_int - f_ext| over all dofs "
-                        "including the constrained ones, i.e. the "
-                        "reactions) + Absolute residual tolerance. At most 0.1: "
-                        "a relative tolerance near 1 accepts the first "
-                        "iterate, far from equilibrium.");
+      prm.declare_entry(
+        "Residual tolerance",
+        "1e-8",
+        dealii::Patterns::Double(0, 0.1),
+        "Converged when |R| <= tol * max(|R| at the start of "
+        "the increment, |f_int - f_ext| over all dofs "
+        "including the constrained ones, i.e. the "
+        "reactions) + Absolute residual tolerance. At most 0.1: "
+        "a relative tolerance near 1 accepts the first "
+        "iterate, far from equilibrium.");
       prm.declare_entry("Absolute residual tolerance",
                         "1e-12",
-                        dealii::Patterns::Double(0, Text::largest_value),
+                        Text::non_negative_number(),
                         "Floor of the residual test, in force units.");
       prm.declare_entry("Increment tolerance",
                         "1e-8",
@@ -46,7 +47,7 @@ namespace tribos
       prm.declare_entry(
         "Penetration limit",
         "0.5",
-        dealii::Patterns::Double(0, Text::largest_value),
+        Text::non_negative_number(),
         "The most a Newton step may deepen a contact node's penetration, "
         "in units of its element size (0: no limit). A step that would "
         "carry a node deeper is shortened to the length at which the first "
@@ -78,7 +79,7 @@ namespace tribos
       prm.declare_entry(
         "Stabilization factor",
         "0",
-        dealii::Patterns::Double(0, Text::largest_value),
+        Text::non_negative_number(),
         "0: off. Otherwise every dof gets a spring to an anchor, its "
         "position at the start of the increment, of stiffness factor * E / "
         "h^2 * (integral of its shape function) (E of the body, h the cell "

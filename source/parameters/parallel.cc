@@ -36,7 +36,7 @@ namespace tribos
       prm.declare_entry(
         "Rebalance threshold",
         "0",
-        dealii::Patterns::Double(0, Text::largest_value),
+        Text::non_negative_number(),
         "Mesh = distributed, several processes: at the end of a step in "
         "which the busiest process spent more than this many times the "
         "idlest one's time on contact (and the difference was more than 5 % "

@@ -11,8 +11,7 @@ namespace tribos
       prm.enter_subsection("Time stepping");
       prm.declare_entry("End time",
                         "1",
-                        dealii::Patterns::Double(-Text::largest_value,
-                                                 Text::largest_value),
+                        Text::any_number(),
                         "Pseudo-time at the end of the run; boundary "
                         "expressions see it as t. > 0.");
       prm.declare_entry("Number of steps",
@@ -69,12 +68,12 @@ namespace tribos
         "End time are then physical times.");
       prm.declare_entry("Newmark beta",
                         "0.25",
-                        dealii::Patterns::Double(0, Text::largest_value),
+                        Text::non_negative_number(),
                         "newmark: beta in (0, 0.5]; unconditionally stable "
                         "for beta >= gamma/2.");
       prm.declare_entry("Newmark gamma",
                         "0.5",
-                        dealii::Patterns::Double(0, Text::largest_value),
+                        Text::non_negative_number(),
                         "newmark: gamma in [0.5, 1]; > 0.5 damps the high "
                         "frequencies (first order).");
       prm.declare_entry("Spectral radius",

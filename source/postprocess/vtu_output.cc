@@ -4,8 +4,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
 
@@ -95,16 +93,13 @@ namespace tribos
     struct ContactFields
     {
       ContactFields(const Triangulation<dim> &triangulation,
-                    const unsigned int        degree)
-        : node_fe(triangulation.all_reference_cells_are_hyper_cube() ?
-                    std::unique_ptr<FiniteElement<dim>>(
-                      std::make_unique<FE_Q<dim>>(degree)) :
-                    std::make_unique<FE_SimplexP<dim>>(degree))
+                    const FiniteElement<dim> &displacement_fe)
+        : node_fe(displacement_fe.base_element(0).clone())
         , node_dof_handler(triangulation)
       {
       }
 
-      /** The scalar element of the mesh's cells and degree. */
+      /** The scalar element of the displacement (FE_Q or FE_SimplexP). */
       std::unique_ptr<FiniteElement<dim>> node_fe;
       DoFHandler<dim>                     node_dof_handler;
       std::array<Vector, 4>               scalars;
@@ -249,7 +244,7 @@ namespace tribos
       data_out.add_data_vector(cells.plastic_strain, "PEEQ");
     data_out.add_data_vector(cells.body_id, "body_id");
     ContactFields<dim> contact_fields(problem.get_triangulation(),
-                                      parameters.finite_element.degree);
+                                      problem.get_fe());
     if (contact_output)
       add_contact_fields(problem, *contact_output, contact_fields, data_out);
 

@@ -116,16 +116,15 @@ namespace tribos
                           "non-matching interfaces.");
         prm.declare_entry("Gap",
                           "0",
-                          Patterns::Double(0, Text::largest_value),
+                          Text::non_negative_number(),
                           "Vertical distance between the blocks.");
         prm.declare_entry("Upper block offset",
                           "0",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
+                          Text::any_number(),
                           "Shift of the upper block in x.");
         prm.declare_entry("Upper bottom radius",
                           "0",
-                          Patterns::Double(0, Text::largest_value),
+                          Text::non_negative_number(),
                           "0: flat. Otherwise the bottom of the upper block "
                           "is a circular arc (a cylinder in 3D, axis along "
                           "y) of this radius through the bottom corners, "

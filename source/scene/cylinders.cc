@@ -50,24 +50,21 @@ namespace tribos
         prm.enter_subsection("Cylinder over block");
         prm.declare_entry("Radius",
                           "1",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
+                          Text::any_number(),
                           "Indenter radius.");
         prm.declare_entry("Gap",
                           "0",
-                          Patterns::Double(0, Text::largest_value),
+                          Text::non_negative_number(),
                           "Distance between the indenter's lowest point and "
                           "the block's top.");
         prm.declare_entry("Block width",
                           "4",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
+                          Text::any_number(),
                           "2D: the block spans x in [-w/2, w/2]; 3D (quarter "
                           "model): x, y in [0, w/2].");
         prm.declare_entry("Block height",
                           "2",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
+                          Text::any_number(),
                           "Depth of the block below y = 0 (2D) or z = 0 (3D).");
         prm.declare_entry("Block subdivisions",
                           "8, 4",
@@ -100,7 +97,7 @@ namespace tribos
                           "on its manifold).");
         prm.declare_entry("Refinement radius",
                           "0.25",
-                          Patterns::Double(0, Text::largest_value),
+                          Text::non_negative_number(),
                           "Cells that reach within this distance of the "
                           "initial contact point (a vertex or the centre "
                           "inside it), relative to the radius, are refined "
@@ -163,15 +160,10 @@ namespace tribos
       declare_parameters(ParameterHandler &prm)
       {
         prm.enter_subsection("Cylinder compression");
-        prm.declare_entry("Radius",
-                          "6.35",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
-                          "");
+        prm.declare_entry("Radius", "6.35", Text::any_number(), "");
         prm.declare_entry("Height",
                           "12.7",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
+                          Text::any_number(),
                           "Full height; the model holds the upper half.");
         prm.declare_entry("Radial refinements",
                           "2",

@@ -37,44 +37,27 @@ namespace tribos
       declare_parameters(ParameterHandler &prm)
       {
         prm.enter_subsection("Ring on foundation");
-        prm.declare_entry("Inner radius",
-                          "90",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
-                          "");
+        prm.declare_entry("Inner radius", "90", Text::any_number(), "");
         prm.declare_entry("Interface radius",
                           "95",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
+                          Text::any_number(),
                           "Radius between the inner (body 0) and the outer "
                           "(body 1) layer.");
-        prm.declare_entry("Outer radius",
-                          "100",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
-                          "");
+        prm.declare_entry("Outer radius", "100", Text::any_number(), "");
         prm.declare_entry("Circumferential cells",
                           "64",
                           Patterns::Integer(2),
                           "Cells along the half circumference.");
         prm.declare_entry("Radial cells per layer", "1", Patterns::Integer(1));
-        prm.declare_entry("Foundation width",
-                          "260",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
-                          "");
-        prm.declare_entry("Foundation height",
-                          "50",
-                          Patterns::Double(-Text::largest_value,
-                                           Text::largest_value),
-                          "");
+        prm.declare_entry("Foundation width", "260", Text::any_number(), "");
+        prm.declare_entry("Foundation height", "50", Text::any_number(), "");
         prm.declare_entry("Foundation cells",
                           "52, 10",
                           Patterns::Anything(),
                           "Cells in x and y of the foundation.");
         prm.declare_entry("Gap",
                           "20",
-                          Patterns::Double(0, Text::largest_value),
+                          Text::non_negative_number(),
                           "Distance between the ring's bottom and the "
                           "foundation's top (y = 0).");
         prm.declare_entry("Whole ring",

@@ -53,10 +53,7 @@ namespace tribos
           k >= parameters.max_line_search_steps)
       {
         if (k > 0)
-        {
           assembled.reset();
-          ++n_shortened;
-        }
         return step;
       }
       step *= 0.5;
@@ -231,21 +228,13 @@ namespace tribos
     // A step the problem limits is taken as limited: the residual of a node
     // entering contact may rise, and the Armijo test would only shorten it
     // more.
-    const double limit = problem.step_limit(update, it.iteration == 0);
-    it.step_length     = 1;
-    if (limit < 1)
-    {
-      it.step_length = limit;
-      ++n_limited;
-      problem.solution().add(limit, update);
-      problem.solution_changed();
-    }
-    else if (line_search_allowed)
+    it.step_length = problem.step_limit(update, it.iteration == 0);
+    if (it.step_length == 1 && line_search_allowed)
       it.step_length =
         line_search(problem, update, residual, !it.residual_first, assembled);
     else
     {
-      problem.solution().add(1., update);
+      problem.solution().add(it.step_length, update);
       problem.solution_changed();
     }
   }

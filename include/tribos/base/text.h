@@ -24,6 +24,20 @@ namespace tribos
      */
     constexpr double largest_value = 1e150;
 
+    /** The pattern of a number entry: any number within +-largest_value. */
+    inline dealii::Patterns::Double
+    any_number()
+    {
+      return dealii::Patterns::Double(-largest_value, largest_value);
+    }
+
+    /** The pattern of a number entry >= 0 (and <= largest_value). */
+    inline dealii::Patterns::Double
+    non_negative_number()
+    {
+      return dealii::Patterns::Double(0, largest_value);
+    }
+
     /**
      * Split @p text at every @p separator that is not inside parentheses, so
      * that function expressions such as `if(t<1, t, 1)` survive a split at

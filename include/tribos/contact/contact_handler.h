@@ -300,6 +300,10 @@ namespace tribos
     }
 
   private:
+    /** Size the element buffers for the largest element of any pair. */
+    void
+    size_element_buffers();
+
     /** The law of slave node @p k of pair @p p at its @p state (the
      * enforcement's, with the chattering remedy's holds). */
     SlaveInput

@@ -166,14 +166,20 @@ namespace tribos
      * displacement component is zero; deal.II 9.4's no-normal-flux
      * constraints leave one direction free there on linear tetrahedra
      * (the corner of a split cube's three planes: u_y = u_x, u_z = -u_x).
+     * Called on tetrahedral meshes only (on hexahedra deal.II fixes such
+     * corners itself).
      */
     void
     fix_symmetry_corners(const std::set<types::boundary_id> &ids,
                          AffineConstraints<double>          &symmetry) const;
-    /** Refuse a Scene/Refinement whose mesh would not fit in the memory
-     * of the machines of the run, before it is built. */
+    /** The memory of the machines the processes run on (collective). */
+    double
+    machines_memory() const;
+    /** Refuse a Scene/Refinement whose mesh would not fit in @p memory:
+     * the scene's @p n_scene_cells unrefined cells times 2^(dim level). */
     void
-    check_mesh_size() const;
+    check_mesh_size(const unsigned int n_scene_cells,
+                    const double       memory) const;
     /** Refuse what simplex meshes do not support (mixed cell kinds,
      * F-bar, contact on triangle faces in 3D); warn of locking. */
     void

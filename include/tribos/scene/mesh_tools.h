@@ -14,6 +14,26 @@ namespace tribos
   /** Small helpers shared by the scene generators (source/scene/). */
   namespace MeshTools
   {
+    /**
+     * Refuse a list of @p size @p what ("coordinates", "cell counts") for
+     * entry @p entry unless it has dim values, or 3: the entries' defaults
+     * serve 2D and 3D, and 2D uses the first two.
+     */
+    template <int dim>
+    inline void
+    check_list_size(const std::size_t  size,
+                    const std::string &what,
+                    const std::string &entry)
+    {
+      AssertThrow(size == dim || size == 3,
+                  ExcMessage("Parameter <" + entry + "> lists " +
+                             std::to_string(size) + " " + what + "; it needs " +
+                             std::to_string(dim) +
+                             (dim == 2 ? " (or 3: the entries serve 2D and "
+                                         "3D, and 2D uses the first two)." :
+                                         ".")));
+    }
+
     /** Cell counts of @p counts (first dim entries) times 2^refinement. */
     template <int dim>
     inline std::vector<unsigned int>
@@ -21,13 +41,7 @@ namespace tribos
                   const unsigned int               refinement,
                   const std::string               &entry)
     {
-      AssertThrow(counts.size() == dim || counts.size() == 3,
-                  ExcMessage("Parameter <" + entry + "> lists " +
-                             std::to_string(counts.size()) +
-                             " cell counts; it needs " + std::to_string(dim) +
-                             (dim == 2 ? " (or 3: the entries serve 2D and "
-                                         "3D, and 2D uses the first two)." :
-                                         ".")));
+      check_list_size<dim>(counts.size(), "cell counts", entry);
       std::vector<unsigned int> result(counts.begin(), counts.begin() + dim);
       for (auto &n : result)
         n <<= refinement;
@@ -38,13 +52,7 @@ namespace tribos
     inline Point<dim>
     to_point(const std::vector<double> &values, const std::string &entry)
     {
-      AssertThrow(values.size() == dim || values.size() == 3,
-                  ExcMessage("Parameter <" + entry + "> lists " +
-                             std::to_string(values.size()) +
-                             " coordinates; it needs " + std::to_string(dim) +
-                             (dim == 2 ? " (or 3: the entries serve 2D and "
-                                         "3D, and 2D uses the first two)." :
-                                         ".")));
+      check_list_size<dim>(values.size(), "coordinates", entry);
       Point<dim> p;
       for (unsigned int d = 0; d < dim; ++d)
         p[d] = values[d];

@@ -55,19 +55,6 @@ namespace tribos
       return linear_solves;
     }
 
-    /** Steps the problem limited so far (NonlinearProblem::step_limit()),
-     * and those the line search shortened. */
-    unsigned int
-    n_limited_steps() const
-    {
-      return n_limited;
-    }
-    unsigned int
-    n_line_search_steps() const
-    {
-      return n_shortened;
-    }
-
   private:
     /** Where the iterations of one solve stand. */
     struct Iterate
@@ -169,8 +156,6 @@ namespace tribos
     const Parameters::NonlinearSolver &parameters;
     LinearSolver                      &linear_solver;
     unsigned int                       linear_solves = 0;
-    unsigned int                       n_limited     = 0;
-    unsigned int                       n_shortened   = 0;
     /** The linear solver methods the log has named. */
     std::set<std::string> announced;
   };
