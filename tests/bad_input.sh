@@ -37,8 +37,9 @@ expect simplex_mixed_cells "tribos takes one kind of cell per mesh" \
 # What triangles and tetrahedra do not support (yet), issue 45.
 expect simplex_f_bar "F-bar is the remedy of Q1 cells" "$tribos" "$good" \
   --set "Finite element/Cells=simplices" --set "Finite element/F-bar=true"
-expect simplex_contact_3d "contact on the triangle faces of tetrahedra" \
-  "$tribos" "$tests/sliding_blocks_3d.prm" --set "Finite element/Cells=simplices"
+expect simplex_contact_p2_3d "six-node triangle faces of quadratic tetrahedra" \
+  "$tribos" "$tests/sliding_blocks_3d.prm" --set "Finite element/Cells=simplices" \
+  --set "Finite element/Polynomial degree=2"
 expect simplex_quadrature "<Finite element/Quadrature points> = 5" \
   "$tribos" "$good" --set "Finite element/Cells=simplices" \
   --set "Finite element/Quadrature points=5"

@@ -3,15 +3,15 @@
  * consistent) against central finite differences of its residual, where
  * every perturbed residual is evaluated with a fresh closest-point
  * projection. Random configurations in 2D (segments) and 3D (warped
- * bilinear faces), open, stick and slip, projections inside a face,
- * clamped at its edge (a node beyond a convex corner) and onto the face's
- * extension (unclamped, as the handler keeps a face within its edge band
- * and at the free end of a master), and rigid plane, sphere and cylinder;
- * each with the penalty law and with the Lagrange multiplier law (the
- * element's rows and columns of the node's multipliers included). Asserts
- * a relative error below 1e-6, and that the `paper` tangent differs (it
- * drops the geometric terms). Then two iterates the semismooth Newton
- * meets: a tensile multiplier on the closed branch, whose Coulomb bound
+ * bilinear faces and the flat triangles of tetrahedra), open, stick and slip,
+ * projections inside a face, clamped at its edge (a node beyond a convex
+ * corner) and onto the face's extension (unclamped, as the handler keeps a face
+ * within its edge band and at the free end of a master), and rigid plane,
+ * sphere and cylinder; each with the penalty law and with the Lagrange
+ * multiplier law (the element's rows and columns of the node's multipliers
+ * included). Asserts a relative error below 1e-6, and that the `paper` tangent
+ * differs (it drops the geometric terms). Then two iterates the semismooth
+ * Newton meets: a tensile multiplier on the closed branch, whose Coulomb bound
  * must be mu max(0, t_N - c g_N), never negative; a node whose tangential
  * motion is fixed in both directions (on the axis of a symmetric model),
  * whose residual and tangent must be finite.
@@ -73,7 +73,8 @@ segment_element(const Vec3<double> &x,
                 const bool          consistent,
                 double             *R,
                 double             *K,
-                const Vec3<double> *unknowns = nullptr)
+                const Vec3<double> *unknowns = nullptr,
+                const bool          triangle = false)
 {
   FaceInput<dim> face;
   for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
@@ -83,6 +84,7 @@ segment_element(const Vec3<double> &x,
   }
   face.projection = projection;
   face.same_face  = same_face;
+  face.triangle   = triangle;
   return NodeToSegment<dim>::evaluate(
     slave_input(x, committed, law, area, consistent, unknowns),
     face,
@@ -233,6 +235,8 @@ random_multiplier(std::mt19937 &random, const unsigned int dim)
  * @p multipliers: the Lagrange multiplier element (dim more dofs). With
  * @p extended the slave is projected onto the face's extension (not
  * clamped), as for a node kept within the edge band or at a free end.
+ * With @p triangle (3D) the master face is the triangle of a tetrahedron
+ * (TriangleFace), clamped at one of its three edges or at a corner.
  */
 template <int dim>
 void
@@ -240,17 +244,27 @@ check_segment(std::mt19937 &random,
               Tally        &tally,
               bool         &ok,
               const bool    multipliers = false,
-              const bool    extended    = false)
+              const bool    extended    = false,
+              const bool    triangle    = false)
 {
-  using Element        = NodeToSegment<dim>;
-  const unsigned int n = Element::n_dofs + (multipliers ? dim : 0);
+  const unsigned int n_master        = triangle ? 3 : MasterFace<dim>::n_nodes;
+  const unsigned int n_displacements = dim * (1 + n_master);
+  const unsigned int n = n_displacements + (multipliers ? dim : 0);
   std::uniform_real_distribution<double> u(-1, 1);
+  const auto                             project_onto =
+    [&](const Vec3<double> &x, const Vec3<double> *m, const bool clamp)
+  {
+    if (triangle)
+      return project_triangle(x, m, clamp);
+    return project<dim>(x, m, clamp);
+  };
 
   for (unsigned int sample = 0; sample < 300; ++sample)
   {
-    // A warped face around the unit square/segment, normal about +y/+z.
-    Vec3<double> master[4];
-    for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
+    // A warped face around the unit square/segment, normal about +y/+z
+    // (a triangle: its half below the diagonal).
+    Vec3<double> master[4] = {};
+    for (unsigned int k = 0; k < n_master; ++k)
     {
       master[k]    = {{0, 0, 0}};
       master[k][0] = (k % 2) + 0.1 * u(random);
@@ -260,9 +274,11 @@ check_segment(std::mt19937 &random,
     }
     // Slave mostly above the face's interior, sometimes beyond an edge.
     const bool   beyond = (sample % 4 == 0);
-    Vec3<double> slave{{0.5 + 0.4 * u(random) + (beyond ? 0.7 : 0.), 0, 0}};
+    const double centre = triangle ? 0.33 : 0.5, spread = triangle ? 0.2 : 0.4;
+    Vec3<double> slave{
+      {centre + spread * u(random) + (beyond ? 0.7 : 0.), 0, 0}};
     if (dim == 3)
-      slave[1] = 0.5 + 0.4 * u(random);
+      slave[1] = centre + spread * u(random) - (triangle && sample % 8 == 4);
     slave[dim - 1] = -0.05 + 0.1 * u(random);
 
     ContactLaw law;
@@ -270,8 +286,8 @@ check_segment(std::mt19937 &random,
     law.tangential_penalty   = 5e2 * (1 + 0.5 * u(random));
     law.friction_coefficient = 0.3;
     // Positions at the last converged step: a tangential history.
-    Vec3<double> master_old[4];
-    for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
+    Vec3<double> master_old[4] = {};
+    for (unsigned int k = 0; k < n_master; ++k)
     {
       master_old[k] = master[k];
       for (unsigned int d = 0; d < dim; ++d)
@@ -283,7 +299,7 @@ check_segment(std::mt19937 &random,
     history.result.status = ContactStatus::stick;
     {
       // Near where the slave projects on the old face: small slips.
-      const Projection old = project<dim>(slave, master_old, false);
+      const Projection old = project_onto(slave, master_old, false);
       history.result.xi[0] = old.xi[0] + 0.05 * u(random);
       history.result.xi[1] = dim == 3 ? old.xi[1] + 0.05 * u(random) : 0.;
     }
@@ -291,11 +307,19 @@ check_segment(std::mt19937 &random,
     history.face    = same ? 0 : 1;
     {
       Vec3<double> a[2];
-      MasterFace<dim>::geometry(master_old,
-                                history.result.xi,
-                                history.point,
-                                a,
-                                history.result.normal);
+      if constexpr (dim == 3)
+        if (triangle)
+          TriangleFace::geometry(master_old,
+                                 history.result.xi,
+                                 history.point,
+                                 a,
+                                 history.result.normal);
+      if (!triangle)
+        MasterFace<dim>::geometry(master_old,
+                                  history.result.xi,
+                                  history.point,
+                                  a,
+                                  history.result.normal);
     }
     const Vec3<double> traction{{3 * u(random), 3 * u(random), 3 * u(random)}};
     history.result.traction =
@@ -307,18 +331,18 @@ check_segment(std::mt19937 &random,
 
     const auto residual = [&](const std::vector<double> &x, double *R)
     {
-      Vec3<double> s = slave, m[4], l = lambda;
-      for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
+      Vec3<double> s = slave, m[4] = {}, l = lambda;
+      for (unsigned int k = 0; k < n_master; ++k)
         m[k] = master[k];
       for (unsigned int d = 0; d < dim; ++d)
       {
         s[d] += x[d];
-        for (unsigned int k = 0; k < MasterFace<dim>::n_nodes; ++k)
+        for (unsigned int k = 0; k < n_master; ++k)
           m[k][d] += x[dim * (1 + k) + d];
         if (multipliers)
-          l[d] += x[Element::n_dofs + d];
+          l[d] += x[n_displacements + d];
       }
-      const Projection p = project<dim>(s, m, !extended);
+      const Projection p = project_onto(s, m, !extended);
       return segment_element<dim>(s,
                                   m,
                                   p,
@@ -330,11 +354,12 @@ check_segment(std::mt19937 &random,
                                   true,
                                   R,
                                   nullptr,
-                                  multipliers ? &l : nullptr);
+                                  multipliers ? &l : nullptr,
+                                  triangle);
     };
 
     std::vector<double> R(n), K(n * n), Kp(n * n);
-    const Projection    p      = project<dim>(slave, master, !extended);
+    const Projection    p      = project_onto(slave, master, !extended);
     const auto          result = segment_element<dim>(slave,
                                              master,
                                              p,
@@ -346,7 +371,8 @@ check_segment(std::mt19937 &random,
                                              true,
                                              R.data(),
                                              K.data(),
-                                             multipliers ? &lambda : nullptr);
+                                             multipliers ? &lambda : nullptr,
+                                             triangle);
     segment_element<dim>(slave,
                          master,
                          p,
@@ -358,7 +384,8 @@ check_segment(std::mt19937 &random,
                          false,
                          R.data(),
                          Kp.data(),
-                         multipliers ? &lambda : nullptr);
+                         multipliers ? &lambda : nullptr,
+                         triangle);
 
     const bool compared = compare_with_differences(
       n,
@@ -371,8 +398,11 @@ check_segment(std::mt19937 &random,
       ok);
     // Beyond the face: clamped, or on its extension (|xi| > 1).
     bool outside = !p.inside();
-    for (unsigned int c = 0; c < dim - 1; ++c)
-      outside = outside || std::abs(p.xi[c]) > 1;
+    if (triangle)
+      outside = outside || !TriangleFace::within(p.xi, 0.);
+    else
+      for (unsigned int c = 0; c < dim - 1; ++c)
+        outside = outside || std::abs(p.xi[c]) > 1;
     if (compared && outside && result.status != ContactStatus::open)
       ++tally.n_clamped;
   }
@@ -807,6 +837,22 @@ main()
       report("3D rigid " + type + law, t3, ok3);
     }
   }
+
+  // The triangle faces of tetrahedra: clamped to an edge, at a corner, on
+  // the extension; penalty and multipliers.
+  for (const bool multipliers : {false, true})
+    for (const bool extended : {false, true})
+    {
+      Tally t;
+      bool  ok = true;
+      check_segment<3>(random, t, ok, multipliers, extended, true);
+      ok = ok && t.n_clamped > 5 && (multipliers || t.paper_error > 1e-3);
+      report(std::string("3D node-to-triangle") +
+               (extended ? ", extended faces" : "") +
+               (multipliers ? ", multipliers" : ""),
+             t,
+             ok);
+    }
 
   all_ok = check_tensile_multiplier() && all_ok;
   all_ok = check_fixed_tangents() && all_ok;

@@ -9,7 +9,9 @@
  * coverage: the blend towards the standard basis), dual and standard
  * basis; frictionless, stick and slip; with the penalty law and with the
  * Lagrange multiplier law (the rows and columns of the node's multipliers
- * included). Asserts a relative error below 1e-6 and that the forces of
+ * included). Then the same with each quadrilateral split into two
+ * triangles (the faces of tetrahedra) on the slave side, the master side
+ * or both. Asserts a relative error below 1e-6 and that the forces of
  * the element balance (sum_k D_jk = sum_l M_jl).
  */
 
@@ -30,7 +32,8 @@ using namespace tribos;
  * A random 3D mortar element input of @p sample (its kinds by the sample
  * number); @p carries (node j carries half of a neighbour's function),
  * @p short_master (the master ends under the slave patch) and the slave's
- * face size @p h_slave are set.
+ * face size @p h_slave are set. With @p slave_triangles or
+ * @p master_triangles each quadrilateral of that side is two triangles.
  */
 MortarInput3D
 random_input(std::mt19937                           &random,
@@ -38,8 +41,28 @@ random_input(std::mt19937                           &random,
              const unsigned int                      sample,
              bool                                   &carries,
              bool                                   &short_master,
-             double                                 &h_slave)
+             double                                 &h_slave,
+             const bool                              slave_triangles  = false,
+             const bool                              master_triangles = false)
 {
+  // The quadrilateral (lexicographic, counter-clockwise 0 1 3 2) as itself
+  // or as the triangles (0, 1, 3) and (0, 3, 2), with the same normal.
+  const auto add_faces = [](const std::array<unsigned int, 4> &quad,
+                            const bool                         split,
+                            MortarFace3D                      *faces,
+                            unsigned int                      &n_faces)
+  {
+    if (!split)
+    {
+      faces[n_faces].nodes = quad;
+      faces[n_faces++].n   = 4;
+      return;
+    }
+    faces[n_faces].nodes = {{quad[0], quad[1], quad[3], 0}};
+    faces[n_faces++].n   = 3;
+    faces[n_faces].nodes = {{quad[0], quad[3], quad[2], 0}};
+    faces[n_faces++].n   = 3;
+  };
   // Slave: a 3 x 3 patch of nodes, node j in the middle (local 0), the
   // body above: vertex order (y before x) so that the faces' normal
   // points down, out of the slave.
@@ -56,11 +79,14 @@ random_input(std::mt19937                           &random,
                                0.03 * h_slave * u(random)}};
     }
   input.n_slave_nodes = 9;
-  input.n_slave_faces = 4;
+  input.n_slave_faces = 0;
   for (unsigned int i = 0; i < 2; ++i)
     for (unsigned int j = 0; j < 2; ++j)
-      input.slave_face[2 * i + j] = {
-        {local[i][j], local[i][j + 1], local[i + 1][j], local[i + 1][j + 1]}};
+      add_faces(
+        {{local[i][j], local[i][j + 1], local[i + 1][j], local[i + 1][j + 1]}},
+        slave_triangles,
+        input.slave_face,
+        input.n_slave_faces);
   // Node j's multiplier function; in some samples plus half of a
   // neighbour's, as when j carries a hanging node (Phi_j + 0.5 Phi_h).
   carries                    = sample % 7 == 3;
@@ -68,7 +94,7 @@ random_input(std::mt19937                           &random,
   for (unsigned int f = 0; f < input.n_slave_faces; ++f)
   {
     input.n_carriers[f] = 0;
-    for (unsigned int v = 0; v < 4; ++v)
+    for (unsigned int v = 0; v < input.slave_face[f].n; ++v)
     {
       if (input.slave_face[f][v] == 0)
         input.carriers[f][input.n_carriers[f]++] = {v, 1.};
@@ -94,13 +120,15 @@ random_input(std::mt19937                           &random,
         {start_x + a * h_master * reach + 0.05 * h_master * u(random),
          start_y + b * h_master + 0.05 * h_master * u(random),
          0.01 * u(random) - 0.02 * std::abs(u(random))}};
-  input.n_master_faces = n_master * n_master;
+  input.n_master_faces = 0;
   for (unsigned int b = 0; b < n_master; ++b)
     for (unsigned int a = 0; a < n_master; ++a)
     {
-      const unsigned int c                = b * (n_master + 1) + a;
-      input.master_face[b * n_master + a] = {
-        {c, c + 1, c + n_master + 1, c + n_master + 2}};
+      const unsigned int c = b * (n_master + 1) + a;
+      add_faces({{c, c + 1, c + n_master + 1, c + n_master + 2}},
+                master_triangles,
+                input.master_face,
+                input.n_master_faces);
     }
   for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
     for (unsigned int d = 0; d < 3; ++d)
@@ -129,89 +157,104 @@ main()
   static const Penalty<3>                penalty;
   static const LagrangeMultiplier<3>     multipliers(parameters);
 
-  bool         ok          = true;
-  double       worst_error = 0, worst_balance = 0;
-  unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0}, n_partial = 0,
-               n_carrying = 0;
-  for (unsigned int sample = 0; sample < 80; ++sample)
+  bool ok = true;
+  // Round 0: quadrilaterals; round 1: triangles on the slave side, the
+  // master side or both.
+  for (unsigned int round = 0; round < 2; ++round)
   {
-    const bool            with_multipliers = sample % 2 == 1;
-    const Enforcement<3> &enforcement =
-      with_multipliers ? static_cast<const Enforcement<3> &>(multipliers) :
-                         static_cast<const Enforcement<3> &>(penalty);
-
-    bool                carries, short_master;
-    double              h_slave;
-    const MortarInput3D input =
-      random_input(random, u, sample, carries, short_master, h_slave);
-    n_carrying += carries;
-    n_partial += short_master;
-    ContactLaw law;
-    law.normal_penalty       = 1e3;
-    law.tangential_penalty   = (sample % 4 == 0 ? 1e5 : 1e2);
-    law.friction_coefficient = sample % 6 == 0 ? 0. : 0.3;
-    NodeState history;
-    history.result.status   = ContactStatus::stick;
-    history.result.normal   = {{0, 0, 1}};
-    history.result.traction = {{2 * u(random), 2 * u(random), 0}};
-    history.point           = {{input.xs_old[0][0] + 0.01 * u(random),
-                                input.xs_old[0][1] + 0.01 * u(random),
-                                input.xs_old[0][2] - 0.01}};
-    const Vec3<double> lambda{
-      {3 * u(random), 3 * u(random), 5 + 3 * u(random)}};
-
-    SlaveInput slave;
-    slave.position   = input.xs[0];
-    slave.committed  = &history;
-    slave.law        = law;
-    slave.area       = h_slave * h_slave;
-    slave.consistent = true;
-    slave.unknowns   = with_multipliers ? &lambda : nullptr;
-
-    const MortarCheck check =
-      check_mortar_element<3, Mortar3D>(input,
-                                        slave,
-                                        lambda,
-                                        with_multipliers,
-                                        enforcement);
-    if (!check.paired)
-      continue;
-    const ContactStatus status = check.status;
-    ++n_status[static_cast<int>(status)];
-    worst_balance = std::max(worst_balance, check.balance);
-    if (!check.checked)
-      continue;
-    ++n_checked;
-    const double relative = check.relative_error;
-    worst_error           = std::max(worst_error, relative);
-    if (relative > 1e-6)
+    double       worst_error = 0, worst_balance = 0;
+    unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0}, n_partial = 0,
+                 n_carrying = 0;
+    for (unsigned int sample = 0; sample < 80; ++sample)
     {
-      ok = false;
-      std::cout << "sample " << sample << ": tangent error " << relative
-                << " (status " << static_cast<int>(status)
-                << (with_multipliers ? ", multipliers" : ", penalty")
-                << (input.dual ? ", dual" : ", standard")
-                << (short_master ? ", partial" : "")
-                << (carries ? ", carrying" : "") << ")\n";
+      const bool            slave_triangles  = round == 1 && sample % 3 != 1;
+      const bool            master_triangles = round == 1 && sample % 3 != 0;
+      const bool            with_multipliers = sample % 2 == 1;
+      const Enforcement<3> &enforcement =
+        with_multipliers ? static_cast<const Enforcement<3> &>(multipliers) :
+                           static_cast<const Enforcement<3> &>(penalty);
+
+      bool                carries, short_master;
+      double              h_slave;
+      const MortarInput3D input = random_input(random,
+                                               u,
+                                               sample,
+                                               carries,
+                                               short_master,
+                                               h_slave,
+                                               slave_triangles,
+                                               master_triangles);
+      n_carrying += carries;
+      n_partial += short_master;
+      ContactLaw law;
+      law.normal_penalty       = 1e3;
+      law.tangential_penalty   = (sample % 4 == 0 ? 1e5 : 1e2);
+      law.friction_coefficient = sample % 6 == 0 ? 0. : 0.3;
+      NodeState history;
+      history.result.status   = ContactStatus::stick;
+      history.result.normal   = {{0, 0, 1}};
+      history.result.traction = {{2 * u(random), 2 * u(random), 0}};
+      history.point           = {{input.xs_old[0][0] + 0.01 * u(random),
+                                  input.xs_old[0][1] + 0.01 * u(random),
+                                  input.xs_old[0][2] - 0.01}};
+      const Vec3<double> lambda{
+        {3 * u(random), 3 * u(random), 5 + 3 * u(random)}};
+
+      SlaveInput slave;
+      slave.position   = input.xs[0];
+      slave.committed  = &history;
+      slave.law        = law;
+      slave.area       = h_slave * h_slave;
+      slave.consistent = true;
+      slave.unknowns   = with_multipliers ? &lambda : nullptr;
+
+      const MortarCheck check =
+        check_mortar_element<3, Mortar3D>(input,
+                                          slave,
+                                          lambda,
+                                          with_multipliers,
+                                          enforcement);
+      if (!check.paired)
+        continue;
+      const ContactStatus status = check.status;
+      ++n_status[static_cast<int>(status)];
+      worst_balance = std::max(worst_balance, check.balance);
+      if (!check.checked)
+        continue;
+      ++n_checked;
+      const double relative = check.relative_error;
+      worst_error           = std::max(worst_error, relative);
+      if (relative > 1e-6)
+      {
+        ok = false;
+        std::cout << "sample " << sample << ": tangent error " << relative
+                  << " (status " << static_cast<int>(status)
+                  << (with_multipliers ? ", multipliers" : ", penalty")
+                  << (input.dual ? ", dual" : ", standard")
+                  << (short_master ? ", partial" : "")
+                  << (carries ? ", carrying" : "")
+                  << (slave_triangles ? ", slave triangles" : "")
+                  << (master_triangles ? ", master triangles" : "") << ")\n";
+      }
     }
-  }
-  std::cout << "checked " << n_checked << " 3D mortar elements (open "
-            << n_status[0] << ", stick " << n_status[1] << ", slip "
-            << n_status[2] << ", frictionless " << n_status[3]
-            << "; partially covered " << n_partial
-            << ", carrying a hanging node " << n_carrying
-            << "); worst relative tangent error " << worst_error
-            << ", worst force balance " << worst_balance << "\n";
-  if (n_checked < 40 || n_status[1] < 8 || n_status[2] < 8 || n_status[3] < 3 ||
-      n_carrying < 5)
-  {
-    std::cout << "FAILED: too few elements of some kind were checked\n";
-    ok = false;
-  }
-  if (worst_balance > 1e-10)
-  {
-    std::cout << "FAILED: the forces of a mortar element do not balance\n";
-    ok = false;
+    std::cout << "checked " << n_checked << " 3D mortar elements"
+              << (round == 1 ? " on triangles" : "") << " (open " << n_status[0]
+              << ", stick " << n_status[1] << ", slip " << n_status[2]
+              << ", frictionless " << n_status[3] << "; partially covered "
+              << n_partial << ", carrying a hanging node " << n_carrying
+              << "); worst relative tangent error " << worst_error
+              << ", worst force balance " << worst_balance << "\n";
+    if (n_checked < 40 || n_status[1] < 8 || n_status[2] < 8 ||
+        n_status[3] < 3 || n_carrying < 5)
+    {
+      std::cout << "FAILED: too few elements of some kind were checked\n";
+      ok = false;
+    }
+    if (worst_balance > 1e-10)
+    {
+      std::cout << "FAILED: the forces of a mortar element do not balance\n";
+      ok = false;
+    }
   }
   std::cout << (ok ? "OK" : "FAILED") << std::endl;
   return ok ? 0 : 1;

@@ -242,6 +242,151 @@ namespace tribos
 
 
 
+  namespace
+  {
+    /** NodeToSegment::evaluate() on a master face of shape @p Face
+     * (MasterFace<dim> or TriangleFace). */
+    template <int dim, class Face>
+    ContactPointResult
+    evaluate_on_face(const SlaveInput       &slave,
+                     const FaceInput<dim>   &face,
+                     const Enforcement<dim> &enforcement,
+                     double                 *R,
+                     double                 *K)
+    {
+      constexpr unsigned int n_nodes = Face::n_nodes;
+      constexpr unsigned int n_dofs  = dim * (1 + n_nodes);
+      ContactPointResult     result;
+      const unsigned int     n_out = n_dofs + enforcement.n_node_unknowns();
+      Vec3<AD>               xs    = seed<dim>(slave.position, 0, n_out);
+      Vec3<AD>               xm[n_nodes];
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        xm[k] = seed<dim>(face.x[k], dim * (1 + k), n_out);
+
+      // Geometry at the converged projection, in double, for the update.
+      Vec3<double> xbar0, a0[2], n0;
+      Face::geometry(face.x, face.projection.xi, xbar0, a0, n0);
+
+      // xi as a function of the positions (see the class documentation).
+      AD xi[2] = {AD(face.projection.xi[0]), AD(face.projection.xi[1])};
+      {
+        Vec3<AD> xbar_fixed_xi, a_ad[2], n_ad;
+        Face::geometry(xm, face.projection.xi, xbar_fixed_xi, a_ad, n_ad);
+        const Vec3<AD> r = xs - xbar_fixed_xi;
+        AD             residual[2];
+        double         J[2][2] = {{0, 0}, {0, 0}};
+        for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
+        {
+          residual[alpha] =
+            slave.consistent ? dot(r, a_ad[alpha]) : dot(r, to<AD>(a0[alpha]));
+          for (unsigned int beta = 0; beta < Face::n_coords; ++beta)
+            J[alpha][beta] = dot(a0[alpha], a0[beta]);
+        }
+        if constexpr (dim == 3)
+          if (slave.consistent)
+          {
+            Vec3<double> a12{{0, 0, 0}};
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              a12 = a12 + scale(Face::mixed_derivative(k), face.x[k]);
+            const double curvature = dot(slave.position - xbar0, a12);
+            J[0][1] -= curvature;
+            J[1][0] -= curvature;
+          }
+        double t[2];
+        if (face.projection.inside())
+        {
+          if constexpr (dim == 2)
+            xi[0] += residual[0] / J[0][0];
+          else
+          {
+            const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+            xi[0] += (J[1][1] * residual[0] - J[0][1] * residual[1]) / det;
+            xi[1] += (J[0][0] * residual[1] - J[1][0] * residual[0]) / det;
+          }
+        }
+        else if (dim == 3 && face.projection.free_direction(t))
+        {
+          // Clamped to one edge: the projection moves along it.
+          const AD     along     = t[0] * residual[0] + t[1] * residual[1];
+          const double stiffness = t[0] * (J[0][0] * t[0] + J[0][1] * t[1]) +
+                                   t[1] * (J[1][0] * t[0] + J[1][1] * t[1]);
+          xi[0] += t[0] * along / stiffness;
+          xi[1] += t[1] * along / stiffness;
+        }
+      }
+
+      Vec3<AD> xbar, a[2], normal;
+      Face::geometry(xm, xi, xbar, a, normal);
+      if (!slave.consistent)
+      {
+        normal = to<AD>(n0);
+        for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
+          a[alpha] = to<AD>(a0[alpha]);
+      }
+      const AD gap = dot(xs - xbar, normal);
+
+      AD N[n_nodes], dN[n_nodes][2];
+      Face::shape(xi, N, dN);
+
+      PointKinematics kinematics;
+      kinematics.gap    = gap;
+      kinematics.normal = normal;
+      // Slip: the projection point's motion relative to the master material
+      // point it left, measured on the master as it was.
+      Vec3<AD> moved = {{AD(0.), AD(0.), AD(0.)}};
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        moved = moved + scale(N[k], to<AD>(face.x_old[k]));
+      const NodeState &committed = *slave.committed;
+      kinematics.slip            = slip_increment(moved, committed, normal);
+
+      // The committed traction turned with the face (on the same face, at
+      // the committed coordinates: its spin about the normal too), else with
+      // the normal.
+      kinematics.committed = committed_traction(committed, normal);
+      if (face.same_face && committed.closed() &&
+          dot(committed.result.normal, n0) > 0)
+      {
+        Vec3<double> xbar_old, a_old[2], n_old;
+        Face::geometry(face.x_old, committed.result.xi, xbar_old, a_old, n_old);
+        Vec3<AD> xbar_now, a_now[2], n_now;
+        if (slave.consistent)
+          Face::geometry(xm, committed.result.xi, xbar_now, a_now, n_now);
+        else
+        {
+          Vec3<double> x_value, a_value[2], n_value;
+          Face::geometry(face.x,
+                         committed.result.xi,
+                         x_value,
+                         a_value,
+                         n_value);
+          n_now = to<AD>(n_value);
+          for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
+            a_now[alpha] = to<AD>(a_value[alpha]);
+        }
+        kinematics.committed = turn_with_face<dim>(a_old,
+                                                   n_old,
+                                                   a_now,
+                                                   n_now,
+                                                   committed.result.traction);
+      }
+
+      finish<dim>(kinematics,
+                  N,
+                  n_nodes,
+                  n_dofs,
+                  slave,
+                  enforcement,
+                  R,
+                  K,
+                  result);
+      result.xi[0] = value_of(xi[0]);
+      result.xi[1] = value_of(xi[1]);
+      return result;
+    }
+  } // namespace
+
+
+
   template <int dim>
   ContactPointResult
   NodeToSegment<dim>::evaluate(const SlaveInput       &slave,
@@ -250,123 +395,18 @@ namespace tribos
                                double                 *R,
                                double                 *K)
   {
-    using Face = MasterFace<dim>;
-    ContactPointResult result;
-    const unsigned int n_out = n_dofs + enforcement.n_node_unknowns();
-    Vec3<AD>           xs    = seed<dim>(slave.position, 0, n_out);
-    Vec3<AD>           xm[n_nodes];
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      xm[k] = seed<dim>(face.x[k], dim * (1 + k), n_out);
-
-    // Geometry at the converged projection, in double, for the update.
-    Vec3<double> xbar0, a0[2], n0;
-    Face::geometry(face.x, face.projection.xi, xbar0, a0, n0);
-
-    // xi as a function of the positions (see the class documentation).
-    AD xi[2] = {AD(face.projection.xi[0]), AD(face.projection.xi[1])};
-    {
-      Vec3<AD> xbar_fixed_xi, a_ad[2], n_ad;
-      Face::geometry(xm, face.projection.xi, xbar_fixed_xi, a_ad, n_ad);
-      const Vec3<AD> r = xs - xbar_fixed_xi;
-      AD             residual[2];
-      double         J[2][2] = {{0, 0}, {0, 0}};
-      for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-      {
-        residual[alpha] =
-          slave.consistent ? dot(r, a_ad[alpha]) : dot(r, to<AD>(a0[alpha]));
-        for (unsigned int beta = 0; beta < Face::n_coords; ++beta)
-          J[alpha][beta] = dot(a0[alpha], a0[beta]);
-      }
-      if constexpr (dim == 3)
-        if (slave.consistent)
-        {
-          Vec3<double> a12{{0, 0, 0}};
-          for (unsigned int k = 0; k < 4; ++k)
-            a12 = a12 + scale(Face::mixed_derivative(k), face.x[k]);
-          const double curvature = dot(slave.position - xbar0, a12);
-          J[0][1] -= curvature;
-          J[1][0] -= curvature;
-        }
-      if (face.projection.inside())
-      {
-        if constexpr (dim == 2)
-          xi[0] += residual[0] / J[0][0];
-        else
-        {
-          const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-          xi[0] += (J[1][1] * residual[0] - J[0][1] * residual[1]) / det;
-          xi[1] += (J[0][0] * residual[1] - J[1][0] * residual[0]) / det;
-        }
-      }
-      else
-        for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-          if (face.projection.clamped[alpha] == 0)
-            xi[alpha] += residual[alpha] / J[alpha][alpha];
-    }
-
-    Vec3<AD> xbar, a[2], normal;
-    Face::geometry(xm, xi, xbar, a, normal);
-    if (!slave.consistent)
-    {
-      normal = to<AD>(n0);
-      for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-        a[alpha] = to<AD>(a0[alpha]);
-    }
-    const AD gap = dot(xs - xbar, normal);
-
-    AD N[n_nodes], dN[n_nodes][2];
-    Face::shape(xi, N, dN);
-
-    PointKinematics kinematics;
-    kinematics.gap    = gap;
-    kinematics.normal = normal;
-    // Slip: the projection point's motion relative to the master material
-    // point it left, measured on the master as it was.
-    Vec3<AD> moved = {{AD(0.), AD(0.), AD(0.)}};
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      moved = moved + scale(N[k], to<AD>(face.x_old[k]));
-    const NodeState &committed = *slave.committed;
-    kinematics.slip            = slip_increment(moved, committed, normal);
-
-    // The committed traction turned with the face (on the same face, at
-    // the committed coordinates: its spin about the normal too), else with
-    // the normal.
-    kinematics.committed = committed_traction(committed, normal);
-    if (face.same_face && committed.closed() &&
-        dot(committed.result.normal, n0) > 0)
-    {
-      Vec3<double> xbar_old, a_old[2], n_old;
-      Face::geometry(face.x_old, committed.result.xi, xbar_old, a_old, n_old);
-      Vec3<AD> xbar_now, a_now[2], n_now;
-      if (slave.consistent)
-        Face::geometry(xm, committed.result.xi, xbar_now, a_now, n_now);
-      else
-      {
-        Vec3<double> x_value, a_value[2], n_value;
-        Face::geometry(face.x, committed.result.xi, x_value, a_value, n_value);
-        n_now = to<AD>(n_value);
-        for (unsigned int alpha = 0; alpha < Face::n_coords; ++alpha)
-          a_now[alpha] = to<AD>(a_value[alpha]);
-      }
-      kinematics.committed = turn_with_face<dim>(a_old,
-                                                 n_old,
-                                                 a_now,
-                                                 n_now,
-                                                 committed.result.traction);
-    }
-
-    finish<dim>(kinematics,
-                N,
-                n_nodes,
-                n_dofs,
-                slave,
-                enforcement,
-                R,
-                K,
-                result);
-    result.xi[0] = value_of(xi[0]);
-    result.xi[1] = value_of(xi[1]);
-    return result;
+    if constexpr (dim == 3)
+      if (face.triangle)
+        return evaluate_on_face<3, TriangleFace>(slave,
+                                                 face,
+                                                 enforcement,
+                                                 R,
+                                                 K);
+    return evaluate_on_face<dim, MasterFace<dim>>(slave,
+                                                  face,
+                                                  enforcement,
+                                                  R,
+                                                  K);
   }
 
 

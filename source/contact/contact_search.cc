@@ -51,7 +51,9 @@ namespace tribos
   struct ContactSearch<dim>::Tree
   {
     std::vector<typename Primitives<dim>::Element> elements;
-    typename Primitives<dim>::Tree                 tree;
+    /** The face of each element (a quadrilateral gives two triangles). */
+    std::vector<unsigned int>      face_of_element;
+    typename Primitives<dim>::Tree tree;
   };
 
 
@@ -82,15 +84,20 @@ namespace tribos
                             const std::vector<unsigned int> &faces,
                             const std::vector<Vec3<double>> &positions)
   {
-    face_numbers   = faces;
     auto &elements = tree->elements;
+    auto &owner    = tree->face_of_element;
     elements.clear();
+    owner.clear();
     elements.reserve(faces.size() * Primitives<dim>::per_face);
     for (const unsigned int f : faces)
     {
       const auto &n = surface.faces()[f].nodes;
       if constexpr (dim == 2)
         elements.emplace_back(point(positions[n[0]]), point(positions[n[1]]));
+      else if (surface.faces()[f].triangle())
+        elements.emplace_back(point(positions[n[0]]),
+                              point(positions[n[1]]),
+                              point(positions[n[2]]));
       else
       {
         // Lexicographic quad 0 1 / 2 3 as triangles (0,1,3), (0,3,2).
@@ -101,6 +108,7 @@ namespace tribos
                               point(positions[n[3]]),
                               point(positions[n[2]]));
       }
+      owner.resize(elements.size(), f);
     }
     tree->tree.clear();
     tree->tree.insert(elements.cbegin(), elements.cend());
@@ -119,9 +127,8 @@ namespace tribos
     if (tree->elements.empty())
       return false;
     const auto result = tree->tree.closest_point_and_primitive(point(x));
-    face              = face_numbers[(result.second - tree->elements.cbegin()) /
-                        Primitives<dim>::per_face];
-    squared_distance  = CGAL::squared_distance(result.first, point(x));
+    face = tree->face_of_element[result.second - tree->elements.cbegin()];
+    squared_distance = CGAL::squared_distance(result.first, point(x));
     return true;
   }
 

@@ -53,19 +53,29 @@ namespace tribos
           if (!face->at_boundary() || ids.count(face->boundary_id()) == 0)
             continue;
 
+          // A tetrahedron's faces are triangles (TriangleFace).
+          const unsigned int n_vertices = face->n_vertices();
           std::array<unsigned int, n_face_nodes> order;
           for (unsigned int v = 0; v < n_face_nodes; ++v)
             order[v] = v;
           Vec3<double> x[4];
-          for (unsigned int v = 0; v < n_face_nodes; ++v)
+          for (unsigned int v = 0; v < n_vertices; ++v)
           {
             x[v] = {{0, 0, 0}};
             for (unsigned int d = 0; d < dim; ++d)
               x[v][d] = face->vertex(v)[d];
           }
           Vec3<double> xbar, a[2], normal, outward{{0, 0, 0}};
-          const double xi[2] = {0, 0};
-          MasterFace<dim>::geometry(x, xi, xbar, a, normal);
+          if (n_vertices == 3)
+          {
+            const double xi[2] = {1. / 3, 1. / 3};
+            TriangleFace::geometry(x, xi, xbar, a, normal);
+          }
+          else
+          {
+            const double xi[2] = {0, 0};
+            MasterFace<dim>::geometry(x, xi, xbar, a, normal);
+          }
           for (unsigned int d = 0; d < dim; ++d)
             outward[d] = face->center()[d] - cell->center()[d];
           if (dot(normal, outward) < 0)
@@ -77,11 +87,12 @@ namespace tribos
           }
 
           FaceRecord record;
-          record.cell  = cell->id().template to_binary<dim>();
-          record.face  = f;
-          record.body  = cell->material_id();
-          record.owner = cell->subdomain_id();
-          for (unsigned int v = 0; v < n_face_nodes; ++v)
+          record.cell       = cell->id().template to_binary<dim>();
+          record.face       = f;
+          record.body       = cell->material_id();
+          record.owner      = cell->subdomain_id();
+          record.n_vertices = n_vertices;
+          for (unsigned int v = 0; v < n_vertices; ++v)
             for (unsigned int d = 0; d < dim; ++d)
             {
               record.dofs[v * dim + d] = face->vertex_dof_index(order[v], d);
@@ -128,11 +139,12 @@ namespace tribos
     for (const auto &record : records)
     {
       Face contact_face;
-      contact_face.body  = record.body;
-      contact_face.owner = record.owner;
-      contact_face.cell  = record.cell;
+      contact_face.body       = record.body;
+      contact_face.owner      = record.owner;
+      contact_face.cell       = record.cell;
+      contact_face.n_vertices = record.n_vertices;
       body_ids.insert(record.body);
-      for (unsigned int v = 0; v < n_face_nodes; ++v)
+      for (unsigned int v = 0; v < record.n_vertices; ++v)
       {
         auto it = node_of_dof.find(record.dofs[v * dim]);
         if (it == node_of_dof.end())
@@ -180,14 +192,26 @@ namespace tribos
       Vec3<double> x[4];
       for (unsigned int v = 0; v < face.n_nodes(); ++v)
         node_list[face.node(v)].faces.push_back(f);
-      for (unsigned int v = 0; v < n_face_nodes; ++v)
+      for (unsigned int v = 0; v < face.n_vertices; ++v)
         x[v] = node_list[face.nodes[v]].reference;
+      if (face.triangle())
+      {
+        // A flat triangle: each vertex's shape function integrates to a
+        // third of its area.
+        const double area = 0.5 * norm(cross(x[1] - x[0], x[2] - x[0]));
+        for (unsigned int v = 0; v < 3; ++v)
+        {
+          node_list[face.nodes[v]].area += area / 3.;
+          node_list[face.nodes[v]].size += area;
+        }
+        continue;
+      }
       for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
         double xi[2] = {0, 0};
         for (unsigned int c = 0; c < dim - 1; ++c)
           xi[c] = 2 * quadrature.point(q)[c] - 1;
-        double N[4], dN[4][2];
+        double N[4] = {}, dN[4][2] = {};
         MasterFace<dim>::shape(xi, N, dN);
         if (is_quadratic)
         {
@@ -231,35 +255,46 @@ namespace tribos
   ContactSurface<dim>::find_neighbours()
   {
     // Local node numbers along each edge: 2D ends; 3D edges of xi_1 = -+1
-    // (nodes 0,2 / 1,3) and xi_2 = -+1 (nodes 0,1 / 2,3).
-    const std::vector<std::vector<unsigned int>> edge_nodes[2] = {
-      (dim == 2 ? std::vector<std::vector<unsigned int>>{{0}, {1}} :
-                  std::vector<std::vector<unsigned int>>{{0, 2}, {1, 3}}),
-      std::vector<std::vector<unsigned int>>{{0, 1}, {2, 3}}};
+    // (nodes 0,2 / 1,3) and xi_2 = -+1 (nodes 0,1 / 2,3); triangles: xi_1 =
+    // 0 (nodes 0,2), xi_2 = 0 (nodes 0,1), xi_1 + xi_2 = 1 (nodes 1,2).
+    using Edges                   = std::vector<std::vector<unsigned int>>;
+    const Edges edge_nodes[3]     = {(dim == 2 ? Edges{{0}, {1}} :
+                                                 Edges{{0, 2}, {1, 3}}),
+                                     Edges{{0, 1}, {2, 3}},
+                                     Edges{}};
+    const Edges triangle_edges[3] = {Edges{{0, 2}, {}},
+                                     Edges{{0, 1}, {}},
+                                     Edges{{}, {1, 2}}};
     for (unsigned int f = 0; f < face_list.size(); ++f)
     {
       auto                  &face = face_list[f];
       std::set<unsigned int> neighbours;
-      for (const unsigned int n : face.nodes)
-        for (const unsigned int g : node_list[n].faces)
+      for (unsigned int v = 0; v < face.n_vertices; ++v)
+        for (const unsigned int g : node_list[face.nodes[v]].faces)
           if (g != f)
             neighbours.insert(g);
       face.neighbours.assign(neighbours.begin(), neighbours.end());
 
-      for (unsigned int c = 0; c < dim - 1; ++c)
+      const Edges       *edges = face.triangle() ? triangle_edges : edge_nodes;
+      const unsigned int n_c   = face.triangle() ? 3 : dim - 1;
+      for (unsigned int c = 0; c < n_c; ++c)
         for (unsigned int side = 0; side < 2; ++side)
         {
+          if (side >= edges[c].size() || edges[c][side].empty())
+            continue;
           // Another face contains every node of this edge.
           for (const unsigned int g : face.neighbours)
           {
-            bool shares_all = true;
-            for (const unsigned int local : edge_nodes[c][side])
+            bool        shares_all = true;
+            const auto &other      = face_list[g];
+            for (const unsigned int local : edges[c][side])
             {
-              const unsigned int n     = face.nodes[local];
-              const auto        &other = face_list[g].nodes;
+              const unsigned int n = face.nodes[local];
               shares_all =
                 shares_all &&
-                std::find(other.begin(), other.end(), n) != other.end();
+                std::find(other.nodes.begin(),
+                          other.nodes.begin() + other.n_vertices,
+                          n) != other.nodes.begin() + other.n_vertices;
             }
             if (shares_all)
               face.continues[c][side] = true;

@@ -416,10 +416,11 @@ namespace tribos
       const unsigned int i   = input.n_slave_faces++;
       input.slave_face_id[i] = f;
       input.n_carriers[i]    = 0;
-      for (unsigned int v = 0; v < 4; ++v)
+      input.slave_face[i].n  = pair.slave->faces()[f].n_vertices;
+      for (unsigned int v = 0; v < input.slave_face[i].n; ++v)
       {
-        const unsigned int node = pair.slave->faces()[f].nodes[v];
-        input.slave_face[i][v]  = local(slave_nodes, node);
+        const unsigned int node      = pair.slave->faces()[f].nodes[v];
+        input.slave_face[i].nodes[v] = local(slave_nodes, node);
         if (node == k)
           input.carriers[i][input.n_carriers[i]++] = {v, 1.};
         for (const auto &[h, weight] : pair.carried[k])
@@ -437,9 +438,10 @@ namespace tribos
                     " master faces");
     for (const unsigned int f : master_faces)
     {
-      std::array<unsigned int, 4> face;
-      for (unsigned int v = 0; v < 4; ++v)
-        face[v] = local(master_nodes, pair.master->faces()[f].nodes[v]);
+      MortarFace3D face;
+      face.n = pair.master->faces()[f].n_vertices;
+      for (unsigned int v = 0; v < face.n; ++v)
+        face.nodes[v] = local(master_nodes, pair.master->faces()[f].nodes[v]);
       if (master_nodes.size() > max_mortar_master_nodes_3d)
         return refuse("overlaps more than " +
                       std::to_string(max_mortar_master_nodes_3d) +

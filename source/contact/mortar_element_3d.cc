@@ -10,6 +10,20 @@ namespace tribos
 {
   namespace internal
   {
+    namespace
+    {
+      /** Vertex @p k of a face of @p n vertices, counter-clockwise seen
+       * from the side its normal points to, in clockwise order (a master
+       * face seen along the slave's normal). */
+      unsigned int
+      reversed(const unsigned int n, const unsigned int k)
+      {
+        return n == 3 ? 2 - k : counter_clockwise[3 - k];
+      }
+    } // namespace
+
+
+
     template <typename Number>
     Number
     polygon_area(const std::array<Number, 2> *polygon, const unsigned int n)
@@ -120,25 +134,33 @@ namespace tribos
 
     bool
     overlaps_in_plane(const AuxiliaryPlane<double> &plane,
-                      const Vec3<double>           *Y)
+                      const Vec3<double>           *Y,
+                      const unsigned int            n_m)
     {
       const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
       Vec3<double> b_1{{0, 0, 0}}, b_2{{0, 0, 0}};
-      for (unsigned int k = 0; k < 4; ++k)
+      if (n_m == 3)
       {
-        b_1 = b_1 + scale(sign_1[k], Y[k]);
-        b_2 = b_2 + scale(sign_2[k], Y[k]);
+        b_1 = Y[1] - Y[0];
+        b_2 = Y[2] - Y[0];
       }
-      const Vec3<double> n_m = cross(b_1, b_2);
-      if (dot(n_m, plane.n0) >= -0.25 * norm(n_m))
+      else
+        for (unsigned int k = 0; k < 4; ++k)
+        {
+          b_1 = b_1 + scale(sign_1[k], Y[k]);
+          b_2 = b_2 + scale(sign_2[k], Y[k]);
+        }
+      const Vec3<double> normal = cross(b_1, b_2);
+      if (dot(normal, plane.n0) >= -0.25 * norm(normal))
         return false;
       // The master face's projection, counter-clockwise seen along n0.
       std::array<double, 2> Q[4], clipped[8];
-      for (unsigned int k = 0; k < 4; ++k)
-        Q[k] = plane.project(Y[counter_clockwise[3 - k]]);
-      if (polygon_area(Q, 4) <= 0)
+      for (unsigned int k = 0; k < n_m; ++k)
+        Q[k] = plane.project(Y[reversed(n_m, k)]);
+      if (polygon_area(Q, n_m) <= 0)
         return false;
-      const unsigned int n = clip_polygon(Q, 4, plane.P_ccw, 4, clipped);
+      const unsigned int n =
+        clip_polygon(Q, n_m, plane.P_ccw, plane.n, clipped);
       return n >= 3 && polygon_area(clipped, n) > 1e-12 * plane.area;
     }
   } // namespace internal
@@ -164,28 +186,48 @@ namespace tribos
     template <typename Number>
     using Plane = internal::AuxiliaryPlane<Number>;
 
+    /** Shape functions of a face of @p n nodes: MasterFace<3> (4) or
+     * TriangleFace (3). */
+    template <typename Number>
+    void
+    face_shape(const unsigned int n,
+               const Number      *xi,
+               Number            *N,
+               Number (*dN)[2])
+    {
+      if (n == 3)
+        TriangleFace::shape(xi, N, dN);
+      else
+        MasterFace<3>::shape(xi, N, dN);
+    }
+
     /**
-     * The coordinates xi of the point @p p in the bilinear map of the
-     * quadrilateral @p P (lexicographic) in the plane: Newton from the
-     * centre on the values, then one Newton step in AD numbers from the
-     * converged values, which gives the derivatives of the exact inverse
-     * (at a root, the step's derivative is -J^-1 times that of the
-     * residual: the implicit function theorem).
+     * The coordinates xi of the point @p p in the map of the face @p P
+     * of @p n nodes (bilinear quadrilateral, lexicographic; or linear
+     * triangle) in the plane: Newton from the centre on the values, then one
+     * Newton step in AD numbers from the converged values, which gives the
+     * derivatives of the exact inverse (at a root, the step's derivative is
+     * -J^-1 times that of the residual: the implicit function theorem).
      */
     void
-    inverse_map(const Point<FaceAD> *P, const Point<FaceAD> &p, FaceAD *xi)
+    inverse_map(const Point<FaceAD> *P,
+                const unsigned int   n,
+                const Point<FaceAD> &p,
+                FaceAD              *xi)
     {
       double x[2] = {0., 0.};
+      if (n == 3)
+        x[0] = x[1] = 1. / 3.;
       double N[4], dN[4][2];
       for (unsigned int iteration = 0; iteration < 30; ++iteration)
       {
-        MasterFace<3>::shape(x, N, dN);
+        face_shape(n, x, N, dN);
         double r[2], J[2][2];
         for (unsigned int a = 0; a < 2; ++a)
         {
           r[a]    = -p[a].val();
           J[a][0] = J[a][1] = 0.;
-          for (unsigned int k = 0; k < 4; ++k)
+          for (unsigned int k = 0; k < n; ++k)
           {
             r[a] += N[k] * P[k][a].val();
             for (unsigned int b = 0; b < 2; ++b)
@@ -204,14 +246,14 @@ namespace tribos
       }
       // The AD step: r's value is zero to round-off, so J^-1 r is the
       // derivative of the root; J is used at its value.
-      MasterFace<3>::shape(x, N, dN);
+      face_shape(n, x, N, dN);
       FaceAD r[2];
       double J[2][2];
       for (unsigned int a = 0; a < 2; ++a)
       {
         r[a]    = -p[a];
         J[a][0] = J[a][1] = 0.;
-        for (unsigned int k = 0; k < 4; ++k)
+        for (unsigned int k = 0; k < n; ++k)
         {
           r[a] += N[k] * P[k][a];
           for (unsigned int b = 0; b < 2; ++b)
@@ -250,7 +292,7 @@ namespace tribos
 
     /**
      * The overlap of the slave face of @p plane with the master face with
-     * (lexicographic) nodes @p Y: its area and the integrals of the slave
+     * the @p n_m nodes @p Y: its area and the integrals of the slave
      * functions against the slave's (@p slave[i][k] = int N_i N_k) and the
      * master's (@p master[i][l] = int N_i N_l) over it. Returns false if
      * they do not overlap.
@@ -258,19 +300,21 @@ namespace tribos
     bool
     overlap_integrals(const Plane<FaceAD> &plane,
                       const Vec3<FaceAD>  *Y,
+                      const unsigned int   n_m,
                       FaceAD              &area,
                       FaceAD (&slave)[4][4],
                       FaceAD (&master)[4][4])
     {
-      Point<FaceAD> Q[4], Q_ccw[4], polygon[8];
-      for (unsigned int k = 0; k < 4; ++k)
+      const unsigned int n_s = plane.n;
+      Point<FaceAD>      Q[4], Q_ccw[4], polygon[8];
+      for (unsigned int k = 0; k < n_m; ++k)
         Q[k] = plane.project(Y[k]);
-      for (unsigned int k = 0; k < 4; ++k)
-        Q_ccw[k] = Q[counter_clockwise[3 - k]];
-      if (internal::polygon_area(Q_ccw, 4).val() <= 0)
+      for (unsigned int k = 0; k < n_m; ++k)
+        Q_ccw[k] = Q[n_m == 3 ? 2 - k : counter_clockwise[3 - k]];
+      if (internal::polygon_area(Q_ccw, n_m).val() <= 0)
         return false;
       const unsigned int n =
-        internal::clip_polygon(Q_ccw, 4, plane.P_ccw, 4, polygon);
+        internal::clip_polygon(Q_ccw, n_m, plane.P_ccw, n_s, polygon);
       if (n < 3)
         return false;
       area = internal::polygon_area(polygon, n);
@@ -296,19 +340,18 @@ namespace tribos
           for (unsigned int d = 0; d < 2; ++d)
             p[d] = t.l[0] * v_0[d] + t.l[1] * v_1[d] + t.l[2] * v_2[d];
           FaceAD xi_s[2], xi_m[2], N_s[4], N_m[4], dN[4][2];
-          inverse_map(plane.P, p, xi_s);
-          inverse_map(Q, p, xi_m);
-          MasterFace<3>::shape(xi_s, N_s, dN);
-          MasterFace<3>::shape(xi_m, N_m, dN);
+          inverse_map(plane.P, n_s, p, xi_s);
+          inverse_map(Q, n_m, p, xi_m);
+          face_shape(n_s, xi_s, N_s, dN);
+          face_shape(n_m, xi_m, N_m, dN);
           const FaceAD weight = t.weight * triangle;
-          for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int i = 0; i < n_s; ++i)
           {
             const FaceAD w_i = weight * N_s[i];
-            for (unsigned int k = 0; k < 4; ++k)
-            {
+            for (unsigned int k = 0; k < n_s; ++k)
               slave[i][k] += w_i * N_s[k];
+            for (unsigned int k = 0; k < n_m; ++k)
               master[i][k] += w_i * N_m[k];
-            }
           }
         }
       }
@@ -330,18 +373,19 @@ namespace tribos
      * node's numbers of @p integrals.
      */
     AD
-    carry(const FaceAD                      &x,
-          const MortarIntegrals<3>          &integrals,
-          const std::array<unsigned int, 4> &q,
-          const std::array<unsigned int, 4> &c)
+    carry(const FaceAD             &x,
+          const MortarIntegrals<3> &integrals,
+          const MortarFace3D       &q,
+          const MortarFace3D       &c)
     {
       AD y(integrals.n_out, x.val());
       if (x.size() > 0)
-        for (unsigned int t = 0; t < 12; ++t)
-        {
-          y.fastAccessDx(3 * q[t / 3] + t % 3)                   = x.dx(t);
+      {
+        for (unsigned int t = 0; t < 3 * q.n; ++t)
+          y.fastAccessDx(3 * q[t / 3] + t % 3) = x.dx(t);
+        for (unsigned int t = 0; t < 3 * c.n; ++t)
           y.fastAccessDx(3 * (integrals.n_s + c[t / 3]) + t % 3) = x.dx(12 + t);
-        }
+      }
       return y;
     }
 
@@ -387,25 +431,27 @@ namespace tribos
         if (!computed)
         {
           Vec3<double> Y_value[4];
-          for (unsigned int k = 0; k < 4; ++k)
+          for (unsigned int k = 0; k < c.n; ++k)
             Y_value[k] = input.xm[c[k]];
-          entry->overlaps = internal::overlaps_in_plane(plane_value, Y_value);
+          entry->overlaps =
+            internal::overlaps_in_plane(plane_value, Y_value, c.n);
           if (entry->overlaps)
           {
             if (!plane_face)
             {
               Vec3<FaceAD> X_face[4];
-              for (unsigned int k = 0; k < 4; ++k)
+              for (unsigned int k = 0; k < q.n; ++k)
                 for (unsigned int d = 0; d < 3; ++d)
                   X_face[k][d] = FaceAD(24, 3 * k + d, input.xs[q[k]][d]);
-              plane_face = internal::auxiliary_plane(X_face);
+              plane_face = internal::auxiliary_plane(X_face, q.n);
             }
             Vec3<FaceAD> Y[4];
-            for (unsigned int k = 0; k < 4; ++k)
+            for (unsigned int k = 0; k < c.n; ++k)
               for (unsigned int d = 0; d < 3; ++d)
                 Y[k][d] = FaceAD(24, 12 + 3 * k + d, Y_value[k][d]);
             entry->overlaps = overlap_integrals(*plane_face,
                                                 Y,
+                                                c.n,
                                                 entry->area,
                                                 entry->slave,
                                                 entry->master);
@@ -417,12 +463,13 @@ namespace tribos
         Overlap &o = overlaps.back();
         o.face     = m;
         o.area     = carry(entry->area, integrals, q, c);
-        for (unsigned int i = 0; i < 4; ++i)
-          for (unsigned int k = 0; k < 4; ++k)
-          {
-            o.slave[i][k]  = carry(entry->slave[i][k], integrals, q, c);
+        for (unsigned int i = 0; i < q.n; ++i)
+        {
+          for (unsigned int k = 0; k < q.n; ++k)
+            o.slave[i][k] = carry(entry->slave[i][k], integrals, q, c);
+          for (unsigned int k = 0; k < c.n; ++k)
             o.master[i][k] = carry(entry->master[i][k], integrals, q, c);
-          }
+        }
         covered += o.area;
       }
       return covered;
@@ -451,41 +498,50 @@ namespace tribos
           a[input.carriers[f][c].first] += input.carriers[f][c].second;
         return;
       }
-      AD           mass[4][4];
-      const double g = 1. / std::sqrt(3.);
+      // The face's mass matrix, exactly: 2 x 2 Gauss on the bilinear
+      // quadrilateral, the 3-point rule of degree 2 on the triangle.
+      const unsigned int n = plane.n;
+      AD                 mass[4][4];
       for (unsigned int i = 0; i < 4; ++i)
         for (unsigned int k = 0; k < 4; ++k)
           mass[i][k] = zero;
-      for (const double g_1 : {-g, g})
-        for (const double g_2 : {-g, g})
-        {
-          const double xi[2] = {g_1, g_2};
-          double       N[4], dN[4][2];
-          MasterFace<3>::shape(xi, N, dN);
-          AD J[2][2] = {{zero, zero}, {zero, zero}};
-          for (unsigned int k = 0; k < 4; ++k)
-            for (unsigned int r = 0; r < 2; ++r)
-              for (unsigned int s = 0; s < 2; ++s)
-                J[r][s] += dN[k][s] * plane.P[k][r];
-          const AD det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-          for (unsigned int i = 0; i < 4; ++i)
-            for (unsigned int k = 0; k < 4; ++k)
-              mass[i][k] += (N[i] * N[k]) * det;
-        }
+      const double g = 1. / std::sqrt(3.);
+      using Rule     = std::vector<std::array<double, 3>>;
+      const Rule rule =
+        n == 3 ?
+          Rule{{{1. / 6, 1. / 6, 1. / 6}},
+               {{2. / 3, 1. / 6, 1. / 6}},
+               {{1. / 6, 2. / 3, 1. / 6}}} :
+          Rule{{{-g, -g, 1.}}, {{g, -g, 1.}}, {{-g, g, 1.}}, {{g, g, 1.}}};
+      for (const auto &point : rule)
+      {
+        const double xi[2] = {point[0], point[1]};
+        double       N[4], dN[4][2];
+        face_shape(n, xi, N, dN);
+        AD J[2][2] = {{zero, zero}, {zero, zero}};
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int r = 0; r < 2; ++r)
+            for (unsigned int s = 0; s < 2; ++s)
+              J[r][s] += dN[k][s] * plane.P[k][r];
+        const AD det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int k = 0; k < n; ++k)
+            mass[i][k] += (point[2] * N[i] * N[k]) * det;
+      }
       AD row_sum[4];
-      for (unsigned int i = 0; i < 4; ++i)
+      for (unsigned int i = 0; i < n; ++i)
       {
         row_sum[i] = zero;
-        for (unsigned int k = 0; k < 4; ++k)
+        for (unsigned int k = 0; k < n; ++k)
           row_sum[i] += mass[i][k];
       }
       // M_e = L U (symmetric positive definite: no pivoting).
       AD lower[4][4];
-      for (unsigned int p = 0; p < 4; ++p)
-        for (unsigned int i = p + 1; i < 4; ++i)
+      for (unsigned int p = 0; p < n; ++p)
+        for (unsigned int i = p + 1; i < n; ++i)
         {
           lower[i][p] = mass[i][p] / mass[p][p];
-          for (unsigned int k = p; k < 4; ++k)
+          for (unsigned int k = p; k < n; ++k)
             mass[i][k] -= lower[i][p] * mass[p][k];
         }
       for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
@@ -494,16 +550,16 @@ namespace tribos
         // y = M_e^-1 e_j.
         AD y[4]    = {zero, zero, zero, zero};
         y[j_local] = 1.;
-        for (unsigned int p = 0; p < 4; ++p)
-          for (unsigned int i = p + 1; i < 4; ++i)
+        for (unsigned int p = 0; p < n; ++p)
+          for (unsigned int i = p + 1; i < n; ++i)
             y[i] -= lower[i][p] * y[p];
-        for (unsigned int p = 4; p-- > 0;)
+        for (unsigned int p = n; p-- > 0;)
         {
-          for (unsigned int k = p + 1; k < 4; ++k)
+          for (unsigned int k = p + 1; k < n; ++k)
             y[p] -= mass[p][k] * y[k];
           y[p] /= mass[p][p];
         }
-        for (unsigned int k = 0; k < 4; ++k)
+        for (unsigned int k = 0; k < n; ++k)
           a[k] += weight * (theta * row_sum[j_local] * y[k] +
                             (k == j_local ? 1. - theta : zero));
       }
@@ -529,17 +585,17 @@ namespace tribos
       const auto  &q = input.slave_face[f];
       Vec3<AD>     X[4];
       Vec3<double> X_value[4];
-      for (unsigned int k = 0; k < 4; ++k)
+      for (unsigned int k = 0; k < q.n; ++k)
       {
         X[k]       = integrals.xs[q[k]];
         X_value[k] = input.xs[q[k]];
       }
-      const Plane<AD> plane = internal::auxiliary_plane(X);
+      const Plane<AD> plane = internal::auxiliary_plane(X, q.n);
       if (plane.area.val() <= 0)
         continue;
       const AD covered = find_overlaps(integrals,
                                        f,
-                                       internal::auxiliary_plane(X_value),
+                                       internal::auxiliary_plane(X_value, q.n),
                                        overlaps);
       if (overlaps.empty())
         continue;
@@ -552,17 +608,18 @@ namespace tribos
       for (const Overlap &o : overlaps)
       {
         const auto &c = input.master_face[o.face];
-        for (unsigned int i = 0; i < 4; ++i)
+        for (unsigned int i = 0; i < q.n; ++i)
         {
           if (a[i].val() == 0 && a[i].size() == 0)
             continue;
-          for (unsigned int k = 0; k < 4; ++k)
+          for (unsigned int k = 0; k < q.n; ++k)
           {
             const AD w_s = a[i] * o.slave[i][k];
             integrals.D[q[k]] += w_s;
-            integrals.M[c[k]] += a[i] * o.master[i][k];
             face_weight += w_s;
           }
+          for (unsigned int k = 0; k < c.n; ++k)
+            integrals.M[c[k]] += a[i] * o.master[i][k];
         }
       }
       integrals.normal_j = integrals.normal_j + scale(face_weight, plane.n0);

@@ -85,8 +85,7 @@ namespace tribos
        */
       template <class Classify>
       bool
-      walk(const std::initializer_list<Vec3<double>> starts,
-           const Classify                           &classify)
+      walk(const std::vector<Vec3<double>> &starts, const Classify &classify)
       {
         const auto               &faces = pair.master->faces();
         std::vector<unsigned int> queue;
@@ -222,14 +221,15 @@ namespace tribos
       const bool            was_closed  = pair.committed[k].closed();
       for (const unsigned int f : pair.slave->nodes()[k].faces)
       {
-        Vec3<double> x[4];
-        for (unsigned int v = 0; v < 4; ++v)
+        const unsigned int n_s = slave_faces[f].n_vertices;
+        Vec3<double>       x[4];
+        for (unsigned int v = 0; v < n_s; ++v)
           x[v] = pair.slave_positions[slave_faces[f].nodes[v]];
         const internal::AuxiliaryPlane<double> plane =
-          internal::auxiliary_plane(x);
+          internal::auxiliary_plane(x, n_s);
         double height_min = std::numeric_limits<double>::max(),
                height_max = -height_min;
-        for (unsigned int v = 0; v < 4; ++v)
+        for (unsigned int v = 0; v < n_s; ++v)
         {
           height_min = std::min(height_min, dot(x[v] - plane.x0, plane.n0));
           height_max = std::max(height_max, dot(x[v] - plane.x0, plane.n0));
@@ -240,17 +240,18 @@ namespace tribos
         // is not too deep behind it (as in 2D).
         const auto classify = [&](const unsigned int m)
         {
-          Vec3<double> y[4];
-          double       gap_min = std::numeric_limits<double>::max(),
-                 gap_max       = -gap_min;
-          for (unsigned int v = 0; v < 4; ++v)
+          const unsigned int n_m = faces[m].n_vertices;
+          Vec3<double>       y[4];
+          double             gap_min = std::numeric_limits<double>::max(),
+                 gap_max             = -gap_min;
+          for (unsigned int v = 0; v < n_m; ++v)
           {
             y[v]               = pair.master_positions[faces[m].nodes[v]];
             const double above = dot(y[v] - plane.x0, plane.n0);
             gap_min            = std::min(gap_min, above - height_max);
             gap_max            = std::max(gap_max, above - height_min);
           }
-          if (!internal::overlaps_in_plane(plane, y))
+          if (!internal::overlaps_in_plane(plane, y, n_m))
             return 0;
           if (gap_max < -length && !was_closed)
             return 1;
@@ -258,7 +259,11 @@ namespace tribos
           return 2;
         };
 
-        if (!walker.walk({x[0], x[1], x[2], x[3], plane.x0}, classify))
+        if (!walker.walk(
+              n_s == 3 ?
+                std::vector<Vec3<double>>{x[0], x[1], x[2], plane.x0} :
+                std::vector<Vec3<double>>{x[0], x[1], x[2], x[3], plane.x0},
+              classify))
           return false;
       }
       return true;

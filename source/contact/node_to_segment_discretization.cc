@@ -49,9 +49,16 @@ namespace tribos
     const auto project_onto   = [&](const unsigned int f, const bool clamp)
     {
       Vec3<double> xm[4];
-      for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+      for (unsigned int v = 0; v < faces[f].n_vertices; ++v)
         xm[v] = pair.master_positions[faces[f].nodes[v]];
+      if (faces[f].triangle())
+        return project_triangle(x, xm, clamp);
       return project<dim>(x, xm, clamp);
+    };
+    const auto within_band = [&](const unsigned int f, const Projection &p)
+    {
+      return faces[f].triangle() ? TriangleFace::within(p.xi, edge_band) :
+                                   MasterFace<dim>::within(p.xi, edge_band);
     };
 
     // Keep the face of the last evaluation while the node projects onto it
@@ -60,10 +67,8 @@ namespace tribos
     if (state.paired && pair.face_known[state.face])
     {
       const Projection kept = project_onto(state.face, false);
-      bool             near = kept.distance <= parameters.search_distance;
-      for (unsigned int c = 0; c < dim - 1; ++c)
-        near = near && std::abs(kept.xi[c]) <= 1. + edge_band;
-      if (near)
+      if (kept.distance <= parameters.search_distance &&
+          within_band(state.face, kept))
       {
         state.projection = kept;
         return couple_face(pair, k);
@@ -101,17 +106,15 @@ namespace tribos
     // out it has slid off: no contact.
     state.paired = true;
     bool at_end  = false;
-    for (unsigned int c = 0; c < dim - 1; ++c)
+    for (unsigned int c = 0; c < 3; ++c)
       if (state.projection.clamped[c] != 0 &&
           !faces[state.face].continues[c][state.projection.clamped[c] > 0])
         at_end = true;
     if (at_end)
     {
       const Projection extended = project_onto(state.face, false);
-      for (unsigned int c = 0; c < dim - 1; ++c)
-        if (std::abs(extended.xi[c]) > 1. + edge_band)
-          state.paired = false;
-      state.projection = extended;
+      state.paired              = within_band(state.face, extended);
+      state.projection          = extended;
     }
     return couple_face(pair, k);
   }
@@ -161,7 +164,8 @@ namespace tribos
     const int      face  = state.face;
     FaceInput<dim> input;
     const auto    &nodes = pair.master->faces()[face].nodes;
-    for (unsigned int v = 0; v < MasterFace<dim>::n_nodes; ++v)
+    input.triangle       = pair.master->faces()[face].triangle();
+    for (unsigned int v = 0; v < pair.master->faces()[face].n_vertices; ++v)
     {
       input.x[v]     = pair.master_positions[nodes[v]];
       input.x_old[v] = pair.old_master_positions[nodes[v]];

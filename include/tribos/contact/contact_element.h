@@ -88,6 +88,9 @@ namespace tribos
     Vec3<double> x[4], x_old[4];
     Projection   projection;
     bool         same_face = false;
+    /** 3D: the face is a triangle (TriangleFace, nodes x[0..2]), else a
+     * MasterFace. */
+    bool triangle = false;
   };
 
   /** A segment of a smoothed 2D master: x_0, x_1, the node before, the
@@ -155,6 +158,8 @@ namespace tribos
   template <int dim>
   struct NodeToSegment
   {
+    /** The most master nodes and dofs (a triangle face has 3 nodes, and
+     * 3 fewer dofs). */
     static constexpr unsigned int n_nodes = MasterFace<dim>::n_nodes;
     static constexpr unsigned int n_dofs  = dim * (1 + n_nodes);
 

@@ -51,8 +51,6 @@ namespace tribos
   private:
     struct Tree;
     std::unique_ptr<Tree> tree;
-    /** The surface's number of each face of the tree. */
-    std::vector<unsigned int> face_numbers;
   };
 } // namespace tribos
 

@@ -18,11 +18,11 @@ namespace tribos
 
   /**
    * The faces and nodes of a boundary part (one or more boundary ids) of a
-   * Q1 mesh, or of a Q2 mesh in 2D, as seen by contact: as a slave, its nodes
-   * with their tributary areas; as a master, its faces (vertex order such that
-   * the normal of MasterFace points out of the body) with their neighbours.
-   * Built once from the reference configuration; positions are looked up per
-   * evaluation.
+   * Q1 or P1 mesh, or of a Q2 or P2 mesh in 2D, as seen by contact: as a slave,
+   * its nodes with their tributary areas; as a master, its faces (vertex order
+   * such that the normal of MasterFace points out of the body) with their
+   * neighbours. Built once from the reference configuration; positions are
+   * looked up per evaluation.
    *
    * Every process holds the whole surface, also on a distributed mesh:
    * each contributes the faces of its own cells and all gather them
@@ -55,8 +55,17 @@ namespace tribos
 
     struct Face
     {
-      /** The face's vertices (MasterFace order). */
+      /** The face's vertices (MasterFace or TriangleFace order). */
       std::array<unsigned int, n_face_nodes> nodes;
+      /** The number of vertices: n_face_nodes, or 3 for the triangle face
+       * of a tetrahedron (TriangleFace; nodes[3] is then not used). */
+      unsigned int n_vertices = n_face_nodes;
+      /** Whether the face is a triangle (TriangleFace). */
+      bool
+      triangle() const
+      {
+        return n_vertices == 3;
+      }
       /**
        * 2D Q2: the node at the face's middle support point; -1 on Q1. The
        * face is then the quadratic segment through nodes[0], middle,
@@ -67,21 +76,22 @@ namespace tribos
       unsigned int
       n_nodes() const
       {
-        return middle >= 0 ? n_face_nodes + 1 : n_face_nodes;
+        return middle >= 0 ? n_vertices + 1 : n_vertices;
       }
       /** Node @p i of the face: the vertices, then the middle. */
       unsigned int
       node(const unsigned int i) const
       {
-        return i < n_face_nodes ? nodes[i] : static_cast<unsigned int>(middle);
+        return i < n_vertices ? nodes[i] : static_cast<unsigned int>(middle);
       }
       /** Faces sharing at least one node with this one (itself excluded). */
       std::vector<unsigned int> neighbours;
       /**
        * Per local coordinate and side (-1, +1): whether another face of the
-       * surface continues across that edge (false: the surface ends).
+       * surface continues across that edge (false: the surface ends). On a
+       * triangle entry 2 is xi_1 + xi_2 (Projection::clamped).
        */
-      bool continues[2][2] = {{false, false}, {false, false}};
+      bool continues[3][2] = {{false, false}, {false, false}, {false, false}};
       /**
        * 2D only: the surface node before node 0 and after node 1 along the
        * surface (of the neighbouring faces with the same orientation), or
@@ -140,12 +150,13 @@ namespace tribos
      * and per node (in MasterFace order) its dofs and reference position. */
     struct FaceRecord
     {
-      CellId::binary_type                                     cell;
-      unsigned int                                            face  = 0;
-      types::material_id                                      body  = 0;
-      unsigned int                                            owner = 0;
-      std::array<types::global_dof_index, n_face_nodes * dim> dofs;
-      std::array<double, n_face_nodes * dim>                  x;
+      CellId::binary_type cell;
+      unsigned int        face       = 0;
+      types::material_id  body       = 0;
+      unsigned int        owner      = 0;
+      unsigned int        n_vertices = n_face_nodes;
+      std::array<types::global_dof_index, n_face_nodes * dim> dofs{};
+      std::array<double, n_face_nodes * dim>                  x{};
       /** 2D Q2: the dofs of the face's middle support point. */
       std::array<types::global_dof_index, dim> middle_dofs{};
 
@@ -155,7 +166,7 @@ namespace tribos
       {
         for (auto &c : cell)
           archive &c;
-        archive &face &body &owner;
+        archive &face &body &owner &n_vertices;
         for (auto &d : dofs)
           archive &d;
         for (auto &v : x)

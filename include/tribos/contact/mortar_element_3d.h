@@ -38,24 +38,44 @@ namespace tribos
   };
 
   /**
+   * A face of the mortar element: its nodes' local numbers, 4 of a
+   * bilinear quadrilateral (lexicographic) or 3 of a triangle
+   * (TriangleFace).
+   */
+  struct MortarFace3D
+  {
+    std::array<unsigned int, 4> nodes{};
+    unsigned int                n = 4;
+    unsigned int
+    operator[](const unsigned int i) const
+    {
+      return nodes[i];
+    }
+  };
+
+
+
+  /**
    * What the 3D mortar element of one slave node j needs: the slave nodes
    * of its faces (j first, then its neighbours), now and at the last
-   * converged step, the faces (bilinear quadrilaterals, deal.II's
-   * lexicographic vertex order, ordered so that the MasterFace normal
-   * points out of the slave body) as quadruples of those local numbers,
+   * converged step, the faces (bilinear quadrilaterals in deal.II's
+   * lexicographic vertex order, or triangles, ordered so that the
+   * MasterFace or TriangleFace normal points out of the slave body) in
+   * those local numbers,
    * and the master nodes and faces that the search found facing them.
    */
   struct MortarInput3D
   {
     /** Faces around a node: 4 on a structured surface, 3 to 6 where the
      * mesh is irregular (a sphere's), and one more per hanging node the
-     * node carries (ContactPair::carried, at most 4). */
-    static constexpr unsigned int max_slave_faces = 10;
+     * node carries (ContactPair::carried, at most 4); triangles: 4 to 8
+     * on split cubes, up to 12 on a gmsh surface. */
+    static constexpr unsigned int max_slave_faces = 16;
     static constexpr unsigned int max_slave_nodes = 1 + 2 * max_slave_faces;
     unsigned int                  n_slave_nodes   = 0;
     Vec3<double>                  xs[max_slave_nodes], xs_old[max_slave_nodes];
     unsigned int                  n_slave_faces = 0;
-    std::array<unsigned int, 4>   slave_face[max_slave_faces];
+    MortarFace3D                  slave_face[max_slave_faces];
     /**
      * Per slave face, the nodes whose multiplier functions the element
      * integrates on it (their positions 0-3 in the face) with their
@@ -69,8 +89,8 @@ namespace tribos
     unsigned int n_master_nodes = 0;
     Vec3<double> xm[max_mortar_master_nodes_3d],
       xm_old[max_mortar_master_nodes_3d];
-    unsigned int                n_master_faces = 0;
-    std::array<unsigned int, 4> master_face[max_mortar_master_nodes_3d];
+    unsigned int n_master_faces = 0;
+    MortarFace3D master_face[max_mortar_master_nodes_3d];
 
     /** Mortar basis = dual (else standard). */
     bool dual = true;
@@ -165,14 +185,16 @@ namespace tribos
     constexpr unsigned int counter_clockwise[4] = {0, 1, 3, 2};
 
     /** The auxiliary plane of a slave face: its centre, unit normal (out
-     * of the slave), in-plane basis and the face projected onto it
-     * (lexicographic P, counter-clockwise P_ccw) with its area. */
+     * of the slave), in-plane basis and the face's n vertices projected
+     * onto it (in the face's order P, counter-clockwise P_ccw) with its
+     * area. */
     template <typename Number>
     struct AuxiliaryPlane
     {
       Vec3<Number>          x0, n0, e1, e2;
       std::array<Number, 2> P[4], P_ccw[4];
       Number                area;
+      unsigned int          n = 4;
 
       /** The projection of @p x along n0, in the basis e1, e2. */
       std::array<Number, 2>
@@ -183,37 +205,47 @@ namespace tribos
       }
     };
 
-    /** The auxiliary plane of the slave face with (lexicographic) nodes
-     * @p X: through its centre, normal to a_1 x a_2 there, e1 along a_1. */
+    /** The auxiliary plane of the slave face with the @p n nodes @p X
+     * (lexicographic quadrilateral, or triangle): through its centre,
+     * normal to a_1 x a_2 there, e1 along a_1. */
     template <typename Number>
     AuxiliaryPlane<Number>
-    auxiliary_plane(const Vec3<Number> *X)
+    auxiliary_plane(const Vec3<Number> *X, const unsigned int n = 4)
     {
       const double sign_1[4] = {-1, 1, -1, 1}, sign_2[4] = {-1, -1, 1, 1};
       AuxiliaryPlane<Number> plane;
       const Number           zero(0.);
       Vec3<Number>           a_1 = {{zero, zero, zero}}, a_2 = a_1;
       plane.x0 = a_1;
-      for (unsigned int k = 0; k < 4; ++k)
+      plane.n  = n;
+      if (n == 3)
       {
-        plane.x0 = plane.x0 + scale(0.25, X[k]);
-        a_1      = a_1 + scale(0.25 * sign_1[k], X[k]);
-        a_2      = a_2 + scale(0.25 * sign_2[k], X[k]);
+        plane.x0 = scale(1. / 3., X[0] + X[1] + X[2]);
+        a_1      = X[1] - X[0];
+        a_2      = X[2] - X[0];
       }
+      else
+        for (unsigned int k = 0; k < 4; ++k)
+        {
+          plane.x0 = plane.x0 + scale(0.25, X[k]);
+          a_1      = a_1 + scale(0.25 * sign_1[k], X[k]);
+          a_2      = a_2 + scale(0.25 * sign_2[k], X[k]);
+        }
       plane.n0 = cross(a_1, a_2);
       plane.n0 = scale(1. / norm(plane.n0), plane.n0);
       plane.e1 = scale(1. / norm(a_1), a_1);
       plane.e2 = cross(plane.n0, plane.e1);
-      for (unsigned int k = 0; k < 4; ++k)
+      for (unsigned int k = 0; k < n; ++k)
         plane.P[k] = plane.project(X[k]);
-      for (unsigned int k = 0; k < 4; ++k)
-        plane.P_ccw[k] = plane.P[counter_clockwise[k]];
-      plane.area = polygon_area(plane.P_ccw, 4);
+      for (unsigned int k = 0; k < n; ++k)
+        plane.P_ccw[k] = plane.P[n == 3 ? k : counter_clockwise[k]];
+      plane.area = polygon_area(plane.P_ccw, n);
       return plane;
     }
 
     /**
-     * Whether the master face with (lexicographic) nodes @p Y can carry
+     * Whether the master face with the @p n nodes @p Y (lexicographic
+     * quadrilateral, or triangle) can carry
      * the contact of the slave face of @p plane: it faces it (unit normals
      * more than 75 degrees apart: not the side of a body above the slave)
      * and its projection overlaps the slave's in the plane (by more than
@@ -222,7 +254,8 @@ namespace tribos
      */
     bool
     overlaps_in_plane(const AuxiliaryPlane<double> &plane,
-                      const Vec3<double>           *Y);
+                      const Vec3<double>           *Y,
+                      const unsigned int            n = 4);
   } // namespace internal
 } // namespace tribos
 

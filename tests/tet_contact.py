@@ -1,0 +1,141 @@
+"""Contact on the triangle faces of linear tetrahedra (issue 45).
+
+- Mortar patch test on non-matching tetrahedral meshes (the two blocks of
+  tests/patch_test_3d.prm split by Finite element/Cells = simplices, 5 x 5
+  and 3 x 3 hexahedra per layer before the split), either block the
+  slave, penalty and Lagrange multipliers: every active node carries the
+  pressure of the hexahedral run to 1e-9. Node-to-segment on matching
+  split meshes: the same.
+- The punch on a block (parameters/punch_on_block_tet.prm: two gmsh
+  tetrahedral meshes, non-matching, pressed and then slid with Coulomb
+  friction mu = 0.3, mortar with multipliers): at full slip the
+  tangential contact force is mu times the normal one to 1e-6;
+  `mpirun -np 2` gives the serial history (1e-9); restarted from its
+  step-5 checkpoint it gives the uninterrupted history, every force bit
+  for bit.
+- The same scene with node-to-segment contact and penalty: mu at full
+  slip too.
+- Hertz 3D under load control on a gmsh tetrahedral mesh
+  (tests/hertz_3d_tet.msh: benchmarks/peers/hertz_3d.geo with
+  -setnumber hex 0 -setnumber hf 0.15, 2433 dofs), rigid plane, penalty
+  and multipliers: pressure L2 error against Hertz below 10 % (measured
+  8.9 % and 9.1 %), at most 8 Newton iterations (5 and 6)."""
+
+import glob
+import os
+import shutil
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "benchmarks", "peers"))
+
+import hertz_error  # noqa: E402
+from tribos_test import (setup, run, read_csv, check, finish,  # noqa: E402
+                         mpi_available)
+
+tribos, tests, out = setup(sys.argv)
+parameters = os.path.join(tests, "..", "parameters")
+split = "Finite element/Cells=simplices"
+
+
+def pressures(folder):
+    rows = read_csv(sorted(glob.glob(folder + "/contact-*.csv"))[-1])
+    return [r["CPRESS"] for r in rows if r["CSTATUS"] != 0]
+
+
+# Patch tests.
+for method in ("penalty", "lagrange multiplier"):
+    sets = ["Contact/Method=" + method]
+    run(tribos, tests + "/patch_test_3d.prm", out + "/patch_hex", sets)
+    reference = pressures(out + "/patch_hex")[0]
+    for pairs in ("14 : 5", "5 : 14"):
+        folder = "%s/patch_%s_%s" % (out, method.split()[0], pairs[0])
+        run(tribos, tests + "/patch_test_3d.prm", folder,
+            sets + [split, "Contact/Pairs=" + pairs])
+        p = pressures(folder)
+        spread = max(abs(x - reference) for x in p) / reference
+        check(len(p) > 20 and spread < 1e-9,
+              "mortar patch test on non-matching tetrahedra, %s, pair %s: "
+              "%d active nodes, the hexahedral pressure %.10g to %.1e"
+              % (method, pairs, len(p), reference, spread))
+    folder = "%s/patch_nts_%s" % (out, method.split()[0])
+    matching = sets + [split, "Contact/Discretization=node to segment",
+                       "Scene/Two blocks/Lower subdivisions=3, 3, 2"]
+    run(tribos, tests + "/patch_test_3d.prm", folder, matching)
+    p = pressures(folder)
+    spread = max(abs(x - 0.01) for x in p) / 0.01
+    check(len(p) == 25 and spread < 1e-9,
+          "node-to-segment patch test on matching tetrahedra, %s: the "
+          "applied pressure 0.01 at all 25 nodes to %.1e" % (method, spread))
+
+
+# The punch on a block.
+def slip_ratio(folder):
+    row = read_csv(folder + "/history.csv")[-1]
+    check(row["n_slip"] == row["n_active"] and row["n_active"] > 20,
+          "%s: all %d active nodes slip at the end"
+          % (os.path.basename(folder), row["n_active"]))
+    return row["pair0_tangential_force"] / row["pair0_normal_force"]
+
+
+punch = parameters + "/punch_on_block_tet.prm"
+serial = out + "/punch"
+run(tribos, punch, serial, ["Output/Checkpoint every=5",
+                            "Output/Write VTU=false"])
+ratio = slip_ratio(serial)
+check(abs(ratio - 0.3) < 1e-6, "punch on a block, mortar, multipliers: "
+      "tangential / normal force %.9f at full slip (mu = 0.3)" % ratio)
+folder = out + "/punch_nts"
+run(tribos, punch, folder, ["Contact/Discretization=node to segment",
+                            "Contact/Method=penalty",
+                            "Output/Write VTU=false"])
+ratio = slip_ratio(folder)
+check(abs(ratio - 0.3) < 1e-6, "punch on a block, node-to-segment, "
+      "penalty: tangential / normal force %.9f at full slip" % ratio)
+
+history = read_csv(serial + "/history.csv")
+forces = [k for k in history[0] if k.startswith(("RF", "pair0"))]
+if mpi_available():
+    parallel = out + "/punch_np2"
+    run(tribos, punch, parallel, ["Output/Write VTU=false"], mpi_ranks=2)
+    worst = 0
+    for a, b in zip(history, read_csv(parallel + "/history.csv")):
+        for k in forces:
+            worst = max(worst, abs(a[k] - b[k]) / max(abs(a[k]), 1e-3))
+    check(worst < 1e-9, "punch on a block: -np 2 forces equal the serial "
+          "ones (worst relative difference %.1e)" % worst)
+
+restarted = out + "/punch_restart"
+shutil.rmtree(restarted, ignore_errors=True)
+shutil.copytree(serial, restarted)
+run(tribos, punch, restarted, ["Output/Write VTU=false"],
+    extra=["--restart", serial + "/checkpoint-00005"])
+again = read_csv(restarted + "/history.csv")
+same = len(again) == len(history) and all(
+    a[k] == b[k] for a, b in zip(history, again) for k in forces)
+check(same, "punch on a block: restarted from step 5, every force of "
+      "history.csv equals the uninterrupted run's bit for bit")
+
+# Hertz 3D on tetrahedra, load control.
+peers = os.path.join(tests, "..", "benchmarks", "peers")
+for method in ("penalty", "lagrange multiplier"):
+    folder = "%s/hertz_%s" % (out, method.split()[0])
+    run(tribos, parameters + "/hertz_3d_load.prm", folder,
+        ["Scene/Name=gmsh", "Scene/Mesh file=%s/hertz_3d_tet.msh" % tests,
+         "Contact/Method=" + method, "Output/Write VTU=false"])
+    points = hertz_error.read_tribos_contact(
+        sorted(glob.glob(folder + "/contact-*.csv"))[-1], 3)
+    force = hertz_error.read_tribos_force(folder + "/history.csv")
+    error = hertz_error.profile_error(points, 4 * force, 10.0,
+                                      2e5 / (1 - 0.3 ** 2), 3)
+    row = read_csv(folder + "/history.csv")[-1]
+    # The load is the top pressure times the area of the top's facets,
+    # 0.64 % below pi R^2 / 4 on this mesh; Hertz's a and p0 are taken
+    # for the force the contact carries.
+    check(error < 0.10 and abs(4 * force - 50e3) < 0.01 * 50e3
+          and row["newton_iterations_all"] <= 8,
+          "Hertz 3D on P1 tetrahedra, %s: pressure L2 error %.4f < 0.10, "
+          "contact force %.2f (load 50000 on a round top), %d Newton "
+          "iterations (<= 8)"
+          % (method, error, 4 * force, row["newton_iterations_all"]))
+finish()
