@@ -37,7 +37,7 @@ expect simplex_mixed_cells "tribos takes one kind of cell per mesh" \
 # What triangles and tetrahedra do not support (yet), issue 45.
 expect simplex_f_bar "F-bar is the remedy of Q1 cells" "$tribos" "$good" \
   --set "Finite element/Cells=simplices" --set "Finite element/F-bar=true"
-expect simplex_contact_p2_3d "six-node triangle faces of quadratic tetrahedra" \
+expect simplex_contact_p2_3d "Polynomial degree = 2 needs Contact/Discretization = mortar" \
   "$tribos" "$tests/sliding_blocks_3d.prm" --set "Finite element/Cells=simplices" \
   --set "Finite element/Polynomial degree=2"
 expect simplex_quadrature "<Finite element/Quadrature points> = 5" \
@@ -95,7 +95,7 @@ expect contact_q2 "Polynomial degree = 1" "$tribos" "$contact" \
   --set "Finite element/Polynomial degree=2"
 expect contact_q2_node_to_segment "needs Contact/Discretization = mortar" \
   "$tribos" "$contact" --set "Finite element/Polynomial degree=2"
-expect contact_q2_3d "Polynomial degree = 1 (2D and 3D) or 2 (2D)" "$tribos" \
+expect contact_q2_3d "or 2 (2D, and the triangle faces of 3D tetrahedra)" "$tribos" \
   "$tests/patch_test_3d.prm" --set "Finite element/Polynomial degree=2"
 expect contact_q2_axisymmetric_standard "Mortar basis = standard is not available" \
   "$tribos" "$tests/patch_test.prm" --set "Finite element/Polynomial degree=2" \

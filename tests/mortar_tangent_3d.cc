@@ -11,7 +11,9 @@
  * Lagrange multiplier law (the rows and columns of the node's multipliers
  * included). Then the same with each quadrilateral split into two
  * triangles (the faces of tetrahedra) on the slave side, the master side
- * or both. Asserts a relative error below 1e-6 and that the forces of
+ * or both, and with six-node triangles on both sides (P2 tetrahedra,
+ * curved: the modified dual basis and the integration on the faces'
+ * four flat pieces). Asserts a relative error below 1e-6 and that the forces of
  * the element balance (sum_k D_jk = sum_l M_jl).
  */
 
@@ -19,6 +21,7 @@
 #include <tribos/contact/mortar_element_3d.h>
 #include <tribos/contact/penalty.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -54,13 +57,13 @@ random_input(std::mt19937                           &random,
   {
     if (!split)
     {
-      faces[n_faces].nodes = quad;
+      faces[n_faces].nodes = {{quad[0], quad[1], quad[2], quad[3], 0, 0}};
       faces[n_faces++].n   = 4;
       return;
     }
-    faces[n_faces].nodes = {{quad[0], quad[1], quad[3], 0}};
+    faces[n_faces].nodes = {{quad[0], quad[1], quad[3], 0, 0, 0}};
     faces[n_faces++].n   = 3;
-    faces[n_faces].nodes = {{quad[0], quad[3], quad[2], 0}};
+    faces[n_faces].nodes = {{quad[0], quad[3], quad[2], 0, 0, 0}};
     faces[n_faces++].n   = 3;
   };
   // Slave: a 3 x 3 patch of nodes, node j in the middle (local 0), the
@@ -147,6 +150,114 @@ random_input(std::mt19937                           &random,
 }
 
 
+/**
+ * As random_input(), with six-node triangles on both sides: the quadratic
+ * faces of P2 tetrahedra, curved (their middle nodes off the chords).
+ */
+MortarInput3D
+random_quadratic_input(std::mt19937                           &random,
+                       std::uniform_real_distribution<double> &u,
+                       const unsigned int                      sample,
+                       bool                                   &short_master,
+                       double                                 &h_slave)
+{
+  // The quadrilateral with corners (g0, g1, g2, g3) (lexicographic) of a
+  // grid of nodes (the middles at the averaged grid indices) as the
+  // six-node triangles (0, 1, 3) and (0, 3, 2).
+  const auto add_faces = [](const std::array<std::array<unsigned int, 2>, 4> &g,
+                            const auto   &number,
+                            MortarFace3D *faces,
+                            unsigned int &n_faces)
+  {
+    for (const std::array<unsigned int, 3> t :
+         {std::array<unsigned int, 3>{{0, 1, 3}},
+          std::array<unsigned int, 3>{{0, 3, 2}}})
+    {
+      MortarFace3D &face = faces[n_faces++];
+      face.n             = 6;
+      for (unsigned int v = 0; v < 3; ++v)
+      {
+        const auto &a = g[t[v]], &b = g[t[(v + 1) % 3]];
+        face.nodes[v]     = number(a[0], a[1]);
+        face.nodes[3 + v] = number((a[0] + b[0]) / 2, (a[1] + b[1]) / 2);
+      }
+    }
+  };
+  MortarInput3D input;
+  h_slave = 0.5 + 0.2 * u(random);
+  unsigned int local[5][5], next = 1;
+  for (unsigned int i = 0; i < 5; ++i)
+    for (unsigned int j = 0; j < 5; ++j)
+    {
+      const unsigned int n = (i == 2 && j == 2) ? 0 : next++;
+      local[i][j]          = n;
+      input.xs[n] = {{(i - 2.) * 0.5 * h_slave + 0.03 * h_slave * u(random),
+                      (j - 2.) * 0.5 * h_slave + 0.03 * h_slave * u(random),
+                      0.03 * h_slave * u(random)}};
+    }
+  input.n_slave_nodes     = 25;
+  input.n_slave_faces     = 0;
+  const auto slave_number = [&](const unsigned int i, const unsigned int j)
+  {
+    return local[i][j];
+  };
+  for (unsigned int i = 0; i < 4; i += 2)
+    for (unsigned int j = 0; j < 4; j += 2)
+      add_faces({{{{i, j}}, {{i, j + 2}}, {{i + 2, j}}, {{i + 2, j + 2}}}},
+                slave_number,
+                input.slave_face,
+                input.n_slave_faces);
+  for (unsigned int f = 0; f < input.n_slave_faces; ++f)
+  {
+    input.n_carriers[f] = 0;
+    for (unsigned int v = 0; v < 6; ++v)
+      if (input.slave_face[f][v] == 0)
+        input.carriers[f][input.n_carriers[f]++] = {v, 1.};
+  }
+
+  // 2 x 2 quadrilaterals of the master (9 x 9 master nodes would take the
+  // finite differences minutes).
+  const unsigned int n_master = 2, n_grid = 2 * n_master + 1;
+  const double       h_master = (sample % 3 == 0 ? 0.9 : 1.2) * h_slave;
+  short_master                = sample % 5 == 0;
+  const double reach          = short_master ? 0.6 : 1.;
+  const double start_x =
+    -0.5 * n_master * h_master * reach + 0.2 * h_master * u(random);
+  const double start_y =
+    -0.5 * n_master * h_master + 0.2 * h_master * u(random);
+  input.n_master_nodes = n_grid * n_grid;
+  for (unsigned int b = 0; b < n_grid; ++b)
+    for (unsigned int a = 0; a < n_grid; ++a)
+      input.xm[b * n_grid + a] = {
+        {start_x + 0.5 * a * h_master * reach + 0.03 * h_master * u(random),
+         start_y + 0.5 * b * h_master + 0.03 * h_master * u(random),
+         0.01 * u(random) - 0.02 * std::abs(u(random))}};
+  const auto master_number = [&](const unsigned int a, const unsigned int b)
+  {
+    return b * n_grid + a;
+  };
+  input.n_master_faces = 0;
+  for (unsigned int b = 0; b + 1 < n_grid; b += 2)
+    for (unsigned int a = 0; a + 1 < n_grid; a += 2)
+      add_faces({{{{a, b}}, {{a + 2, b}}, {{a, b + 2}}, {{a + 2, b + 2}}}},
+                master_number,
+                input.master_face,
+                input.n_master_faces);
+  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    for (unsigned int d = 0; d < 3; ++d)
+      input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
+  for (unsigned int l = 0; l < input.n_master_nodes; ++l)
+    for (unsigned int d = 0; d < 3; ++d)
+      input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
+  input.dual        = sample % 3 != 2;
+  input.min_weight  = 0;
+  const double lift = -0.03 + 0.04 * u(random);
+  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    input.xs[i][2] += lift;
+  return input;
+}
+
+
 
 int
 main()
@@ -159,13 +270,14 @@ main()
 
   bool ok = true;
   // Round 0: quadrilaterals; round 1: triangles on the slave side, the
-  // master side or both.
-  for (unsigned int round = 0; round < 2; ++round)
+  // master side or both; round 2: six-node triangles on both sides.
+  for (unsigned int round = 0; round < 3; ++round)
   {
     double       worst_error = 0, worst_balance = 0;
     unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0}, n_partial = 0,
-                 n_carrying = 0;
-    for (unsigned int sample = 0; sample < 80; ++sample)
+                 n_carrying      = 0;
+    const unsigned int n_samples = round == 2 ? 16 : 80;
+    for (unsigned int sample = 0; sample < n_samples; ++sample)
     {
       const bool            slave_triangles  = round == 1 && sample % 3 != 1;
       const bool            master_triangles = round == 1 && sample % 3 != 0;
@@ -174,16 +286,19 @@ main()
         with_multipliers ? static_cast<const Enforcement<3> &>(multipliers) :
                            static_cast<const Enforcement<3> &>(penalty);
 
-      bool                carries, short_master;
+      bool                carries = false, short_master = false;
       double              h_slave;
-      const MortarInput3D input = random_input(random,
-                                               u,
-                                               sample,
-                                               carries,
-                                               short_master,
-                                               h_slave,
-                                               slave_triangles,
-                                               master_triangles);
+      const MortarInput3D input =
+        round == 2 ?
+          random_quadratic_input(random, u, sample, short_master, h_slave) :
+          random_input(random,
+                       u,
+                       sample,
+                       carries,
+                       short_master,
+                       h_slave,
+                       slave_triangles,
+                       master_triangles);
       n_carrying += carries;
       n_partial += short_master;
       ContactLaw law;
@@ -238,14 +353,19 @@ main()
       }
     }
     std::cout << "checked " << n_checked << " 3D mortar elements"
-              << (round == 1 ? " on triangles" : "") << " (open " << n_status[0]
-              << ", stick " << n_status[1] << ", slip " << n_status[2]
-              << ", frictionless " << n_status[3] << "; partially covered "
-              << n_partial << ", carrying a hanging node " << n_carrying
+              << (round == 1 ? " on triangles" :
+                  round == 2 ? " on six-node triangles" :
+                               "")
+              << " (open " << n_status[0] << ", stick " << n_status[1]
+              << ", slip " << n_status[2] << ", frictionless " << n_status[3]
+              << "; partially covered " << n_partial
+              << ", carrying a hanging node " << n_carrying
               << "); worst relative tangent error " << worst_error
               << ", worst force balance " << worst_balance << "\n";
-    if (n_checked < 40 || n_status[1] < 8 || n_status[2] < 8 ||
-        n_status[3] < 3 || n_carrying < 5)
+    if (n_checked < n_samples / 2 || n_status[1] < n_samples / 10 ||
+        n_status[2] < n_samples / 10 ||
+        n_status[3] < std::min(3u, n_samples / 8) ||
+        (round < 2 && n_carrying < 5))
     {
       std::cout << "FAILED: too few elements of some kind were checked\n";
       ok = false;

@@ -23,12 +23,16 @@ namespace tribos
     // needs every master face.
     const auto        &fe     = dof_handler.get_fe();
     const unsigned int degree = fe.degree;
-    AssertThrow(degree == 1 || (dim == 2 && degree == 2),
-                ExcMessage("Contact surfaces are built for Finite element/"
-                           "Polynomial degree = 1 (2D and 3D) or 2 (2D); "
-                           "this mesh has degree " +
-                           std::to_string(degree) + " in " +
-                           std::to_string(dim) + "D."));
+    AssertThrow(
+      degree == 1 ||
+        (degree == 2 &&
+         (dim == 2 ||
+          dof_handler.get_triangulation().all_reference_cells_are_simplex())),
+      ExcMessage("Contact surfaces are built for Finite element/"
+                 "Polynomial degree = 1 (2D and 3D) or 2 (2D, and "
+                 "the triangle faces of 3D tetrahedra); this mesh "
+                 "has degree " +
+                 std::to_string(degree) + " in " + std::to_string(dim) + "D."));
     is_quadratic = (degree == 2);
     number_nodes(gather_faces(dof_handler));
     integrate_areas(axisymmetric);
@@ -98,7 +102,7 @@ namespace tribos
               record.dofs[v * dim + d] = face->vertex_dof_index(order[v], d);
               record.x[v * dim + d]    = face->vertex(order[v])[d];
             }
-          if (is_quadratic)
+          if (is_quadratic && dim == 2)
           {
             // The line's own dofs (index 2 of the quadratic face element,
             // after its two vertices): the middle support point.
@@ -110,7 +114,41 @@ namespace tribos
               if (index == 2)
                 record.middle_dofs[component] = face_dofs[i];
             }
+            record.n_middles = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+              record.middle_x[d] = 0.5 * (record.x[d] + record.x[dim + d]);
           }
+          if constexpr (dim == 3)
+            if (is_quadratic)
+            {
+              // The six-node triangle: the dofs of the middle of each edge
+              // a-b (0-1, 1-2, 2-0 in the oriented order), one per
+              // component on the edge's line (FE_SimplexP(2)^3).
+              record.n_middles = 3;
+              for (unsigned int e = 0; e < 3; ++e)
+              {
+                const unsigned int a = face->vertex_index(order[e]),
+                                   b = face->vertex_index(order[(e + 1) % 3]);
+                bool found           = false;
+                for (unsigned int l = 0; l < face->n_lines(); ++l)
+                {
+                  const auto line = face->line(l);
+                  if ((line->vertex_index(0) == a &&
+                       line->vertex_index(1) == b) ||
+                      (line->vertex_index(0) == b &&
+                       line->vertex_index(1) == a))
+                  {
+                    for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      record.middle_dofs[e * dim + d] = line->dof_index(d);
+                      record.middle_x[e * dim + d]    = line->center()[d];
+                    }
+                    found = true;
+                  }
+                }
+                AssertThrow(found, ExcInternalError());
+              }
+            }
           own.push_back(record);
         }
     std::vector<FaceRecord> records;
@@ -160,18 +198,29 @@ namespace tribos
         }
         contact_face.nodes[v] = it->second;
       }
-      if (is_quadratic)
+      // Its reference position is the chord's midpoint, where the
+      // linear mapping (the mesh's reference geometry) puts the support
+      // point. A triangle's middle nodes are shared with the neighbours.
+      contact_face.n_middles = record.n_middles;
+      for (unsigned int e = 0; e < record.n_middles; ++e)
       {
-        // Its reference position is the chord's midpoint, where MappingQ1
-        // (the mesh's reference geometry) puts the support point.
-        Node node;
-        for (unsigned int d = 0; d < dim; ++d)
+        auto it = node_of_dof.find(record.middle_dofs[e * dim]);
+        if (it == node_of_dof.end())
         {
-          node.dofs[d]      = record.middle_dofs[d];
-          node.reference[d] = 0.5 * (record.x[d] + record.x[dim + d]);
+          Node node;
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            node.dofs[d]      = record.middle_dofs[e * dim + d];
+            node.reference[d] = record.middle_x[e * dim + d];
+          }
+          it = node_of_dof.emplace(node.dofs[0], node_list.size()).first;
+          node_list.push_back(node);
         }
-        contact_face.middle = node_list.size();
-        node_list.push_back(node);
+        contact_face.middles[e] = it->second;
+        if (dim == 3)
+          node_list[it->second].edge = {
+            {static_cast<int>(contact_face.nodes[e]),
+             static_cast<int>(contact_face.nodes[(e + 1) % 3])}};
       }
       face_list.push_back(contact_face);
     }
@@ -197,12 +246,18 @@ namespace tribos
       if (face.triangle())
       {
         // A flat triangle: each vertex's shape function integrates to a
-        // third of its area.
-        const double area = 0.5 * norm(cross(x[1] - x[0], x[2] - x[0]));
-        for (unsigned int v = 0; v < 3; ++v)
+        // third of its area. On the six-node triangle the vertex functions
+        // integrate to zero: the areas are those of the modified basis of
+        // the mortar element (Mortar3D), 2 A / 15 and A / 5.
+        const double area  = 0.5 * norm(cross(x[1] - x[0], x[2] - x[0]));
+        const double alpha = TriangleFace::modified_basis_alpha;
+        for (unsigned int v = 0; v < face.n_nodes(); ++v)
         {
-          node_list[face.nodes[v]].area += area / 3.;
-          node_list[face.nodes[v]].size += area;
+          const double share = face.n_middles == 0 ? 1. / 3. :
+                               v < 3               ? 2. * alpha / 3. :
+                                                     (1. - 2. * alpha) / 3.;
+          node_list[face.node(v)].area += share * area;
+          node_list[face.node(v)].size += area;
         }
         continue;
       }

@@ -416,10 +416,10 @@ namespace tribos
       const unsigned int i   = input.n_slave_faces++;
       input.slave_face_id[i] = f;
       input.n_carriers[i]    = 0;
-      input.slave_face[i].n  = pair.slave->faces()[f].n_vertices;
+      input.slave_face[i].n  = pair.slave->faces()[f].n_nodes();
       for (unsigned int v = 0; v < input.slave_face[i].n; ++v)
       {
-        const unsigned int node      = pair.slave->faces()[f].nodes[v];
+        const unsigned int node      = pair.slave->faces()[f].node(v);
         input.slave_face[i].nodes[v] = local(slave_nodes, node);
         if (node == k)
           input.carriers[i][input.n_carriers[i]++] = {v, 1.};
@@ -439,9 +439,9 @@ namespace tribos
     for (const unsigned int f : master_faces)
     {
       MortarFace3D face;
-      face.n = pair.master->faces()[f].n_vertices;
+      face.n = pair.master->faces()[f].n_nodes();
       for (unsigned int v = 0; v < face.n; ++v)
-        face.nodes[v] = local(master_nodes, pair.master->faces()[f].nodes[v]);
+        face.nodes[v] = local(master_nodes, pair.master->faces()[f].node(v));
       if (master_nodes.size() > max_mortar_master_nodes_3d)
         return refuse("overlaps more than " +
                       std::to_string(max_mortar_master_nodes_3d) +

@@ -16,7 +16,29 @@ namespace tribos
   void
   RigidSurfaceDiscretization<dim>::initialize(const ContactPair<dim> &pair)
   {
-    require_linear_slave_faces(pair);
+    // Six-node triangles work through their edge middles' virtual points
+    // (evaluate()); quadratic segments (2D) do not.
+    if (!pair.slave->quadratic_triangles())
+      require_linear_slave_faces(pair);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidSurfaceDiscretization<dim>::element_dofs(
+    const ContactPair<dim> &pair,
+    const unsigned int      k,
+    const int,
+    std::vector<types::global_dof_index> &dofs) const
+  {
+    const auto &node = pair.slave->nodes()[k];
+    dofs.assign(node.dofs.begin(), node.dofs.end());
+    for (const int v : node.edge)
+      if (v >= 0)
+        for (const auto dof : pair.slave->nodes()[v].dofs)
+          dofs.push_back(dof);
+    pair.append_unknown_dofs(k, dofs);
   }
 
 
@@ -56,11 +78,71 @@ namespace tribos
     std::vector<types::global_dof_index> &dofs,
     std::string &)
   {
-    NodeState &state = pair.current[k];
-    state.result =
-      NodeToRigid<dim>::evaluate(slave, rigid, *pair.enforcement, R, K);
-    state.point = slave.position - scale(state.result.gap, state.result.normal);
+    NodeState  &state = pair.current[k];
+    const auto &edge  = pair.slave->nodes()[k].edge;
     this->element_dofs(pair, k, -1, dofs);
+    if (edge[0] < 0)
+      state.result =
+        NodeToRigid<dim>::evaluate(slave, rigid, *pair.enforcement, R, K);
+    else
+    {
+      // The middle m of the edge a-b of six-node triangles: the contact
+      // conditions hold for the modified basis's coefficient there (see
+      // TriangleFace::modified_basis_alpha), the position of the virtual
+      // point c_m x_m + c_a x_a + c_b x_b, and its force goes back to the
+      // three nodes with the same factors. Its weight is the node's area
+      // (A / 5 per face). With the vertices' own elements a uniform
+      // pressure p gives the consistent loads of the quadratic face: 0 on
+      // the vertices, p A / 3 on the middles.
+      const double       alpha    = TriangleFace::modified_basis_alpha;
+      const double       c[3]     = {1. / (1. - 2. * alpha),
+                                     -alpha / (1. - 2. * alpha),
+                                     -alpha / (1. - 2. * alpha)};
+      const unsigned int nodes[3] = {k,
+                                     static_cast<unsigned int>(edge[0]),
+                                     static_cast<unsigned int>(edge[1])};
+      SlaveInput         point    = slave;
+      point.position              = {{0, 0, 0}};
+      for (unsigned int a = 0; a < 3; ++a)
+        point.position =
+          point.position + scale(c[a], pair.slave_positions[nodes[a]]);
+      const unsigned int n_unknowns = pair.enforcement->n_node_unknowns();
+      const unsigned int n          = dim + n_unknowns;
+      point_residual.resize(n);
+      point_matrix.resize(n * n);
+      state.result =
+        NodeToRigid<dim>::evaluate(point,
+                                   rigid,
+                                   *pair.enforcement,
+                                   point_residual.data(),
+                                   K ? point_matrix.data() : nullptr);
+      // Row or column i of the element: (node, component) or an unknown,
+      // as a row or column of the point's element with its factor.
+      const unsigned int n_out  = 3 * dim + n_unknowns;
+      const auto         source = [&](const unsigned int i)
+      {
+        return i < 3 * dim ?
+                 std::pair<unsigned int, double>{i % dim, c[i / dim]} :
+                 std::pair<unsigned int, double>{i - 2 * dim, 1.};
+      };
+      for (unsigned int i = 0; i < n_out; ++i)
+      {
+        const auto [row, factor] = source(i);
+        R[i]                     = factor * point_residual[row];
+        if (K)
+          for (unsigned int j = 0; j < n_out; ++j)
+          {
+            const auto [column, column_factor] = source(j);
+            K[i * n_out + j] =
+              factor * column_factor * point_matrix[row * n + column];
+          }
+      }
+      state.point =
+        point.position - scale(state.result.gap, state.result.normal);
+      return {ElementOutcome::Kind::element,
+              state.result.gap <= parameters.search_distance};
+    }
+    state.point = slave.position - scale(state.result.gap, state.result.normal);
     return {ElementOutcome::Kind::element,
             state.result.gap <= parameters.search_distance};
   }

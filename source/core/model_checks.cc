@@ -169,14 +169,6 @@ namespace tribos
                            "is the remedy of Q1 cells. On triangles and "
                            "tetrahedra use Polynomial degree = 2 against "
                            "locking (P1 locks in isochoric plastic flow)."));
-    AssertThrow(dim == 2 || parameters.finite_element.degree == 1 ||
-                  parameters.contact.pairs.empty(),
-                ExcMessage("Parameter <Finite element/Polynomial degree> = "
-                           "2 with <Contact/Pairs> on tetrahedra: contact "
-                           "on the six-node triangle faces of quadratic "
-                           "tetrahedra is not available yet; use Polynomial "
-                           "degree = 1 (contact on the faces of linear "
-                           "tetrahedra) or hexahedra."));
     // Row sums of the P2 simplex mass matrix put no (triangles) or negative
     // (tetrahedra) mass on the vertices.
     AssertThrow(parameters.finite_element.degree == 1 ||

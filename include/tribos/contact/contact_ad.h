@@ -8,29 +8,34 @@
 namespace tribos
 {
   /**
-   * The forward AD number of the contact elements: at most 150
+   * The forward AD number of the contact elements: at most 400
    * derivatives (3D node to segment: the slave and a bilinear face, 5
    * nodes x 3, plus the slave's 3 multipliers = 18; 2D mortar: up to 5
    * slave (Q2) and 24 master nodes x 2, plus 2 multipliers = 60; 3D mortar: up
-   * to 13 slave and 36 master nodes x 3, plus 3 multipliers = 150). Operations
+   * to 13 slave and 36 master nodes x 3 on quadrilaterals, plus 3
+   * multipliers = 150; on quadratic triangles up to 37 slave and 96
+   * master nodes, 402: a six-node triangle has twice the nodes per area
+   * of a four-node quadrilateral). Operations
    * and copies run over the derivatives in use only, so the capacity costs
    * the small elements nothing but stack. The element residual is written
    * once in this type and its derivative is the consistent tangent.
    */
-  using ContactAD = Sacado::Fad::SLFad<double, 150>;
+  using ContactAD = Sacado::Fad::SLFad<double, 400>;
 
   /** The capacity of ContactAD: an element with more unknowns is refused
    * (a 3D mortar element whose node carries hanging nodes can reach it). */
-  constexpr unsigned int max_contact_derivatives = 150;
+  constexpr unsigned int max_contact_derivatives = 400;
 
   /** The most master nodes a 2D mortar element couples to one slave node
    * (Q2: a master up to about 3 times finer than the slave). */
   constexpr unsigned int max_mortar_master_nodes = 24;
 
   /** The most master nodes (and faces) a 3D mortar element couples to one
-   * slave node: a 6 x 6 patch of master nodes over the 2 x 2 slave faces
-   * around it, a master up to about 1.7 times finer than the slave. */
-  constexpr unsigned int max_mortar_master_nodes_3d = 36;
+   * slave node: a 9 x 9 patch of master nodes over the 2 x 2 slave faces
+   * around it, a bilinear master up to about 3 times finer than the
+   * slave; quadratic triangles have about 4 times as many nodes per area
+   * as bilinear quadrilaterals of the same size. */
+  constexpr unsigned int max_mortar_master_nodes_3d = 96;
 
   /** The value of a number (AD or double). */
   inline double

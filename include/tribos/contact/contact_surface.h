@@ -51,6 +51,9 @@ namespace tribos
       double size = 0;
       /** Faces this node belongs to. */
       std::vector<unsigned int> faces;
+      /** At the middle of an edge of six-node triangles: the edge's
+       * vertices (else -1). */
+      std::array<int, 2> edge = {{-1, -1}};
     };
 
     struct Face
@@ -67,22 +70,27 @@ namespace tribos
         return n_vertices == 3;
       }
       /**
-       * 2D Q2: the node at the face's middle support point; -1 on Q1. The
-       * face is then the quadratic segment through nodes[0], middle,
-       * nodes[1]; searches and neighbourhoods still go by its vertices.
+       * Quadratic faces: the nodes at the middles of its edges, -1 on
+       * linear faces. 2D Q2 or P2: one, the face is the quadratic segment
+       * through nodes[0], middles[0], nodes[1]; P2 tetrahedra: three, of
+       * the edges 0-1, 1-2, 2-0 (the six-node triangle). Searches and
+       * neighbourhoods still go by the vertices.
        */
-      int middle = -1;
-      /** The number of the face's nodes: its vertices and its middle. */
+      std::array<int, 3> middles   = {{-1, -1, -1}};
+      unsigned int       n_middles = 0;
+      /** The number of the face's nodes: its vertices and its middles. */
       unsigned int
       n_nodes() const
       {
-        return middle >= 0 ? n_vertices + 1 : n_vertices;
+        return n_vertices + n_middles;
       }
-      /** Node @p i of the face: the vertices, then the middle. */
+      /** Node @p i of the face: the vertices, then the middles. */
       unsigned int
       node(const unsigned int i) const
       {
-        return i < n_vertices ? nodes[i] : static_cast<unsigned int>(middle);
+        return i < n_vertices ?
+                 nodes[i] :
+                 static_cast<unsigned int>(middles[i - n_vertices]);
       }
       /** Faces sharing at least one node with this one (itself excluded). */
       std::vector<unsigned int> neighbours;
@@ -132,7 +140,15 @@ namespace tribos
       return face_list;
     }
 
-    /** Whether the faces are quadratic (2D Q2: Face::middle is set). */
+    /** Whether the faces are six-node triangles (Node::edge is set at
+     * their middles). */
+    bool
+    quadratic_triangles() const
+    {
+      return is_quadratic && dim == 3;
+    }
+
+    /** Whether the faces are quadratic (Face::middles are set). */
     bool
     quadratic() const
     {
@@ -157,8 +173,11 @@ namespace tribos
       unsigned int        n_vertices = n_face_nodes;
       std::array<types::global_dof_index, n_face_nodes * dim> dofs{};
       std::array<double, n_face_nodes * dim>                  x{};
-      /** 2D Q2: the dofs of the face's middle support point. */
-      std::array<types::global_dof_index, dim> middle_dofs{};
+      /** Quadratic faces: the dofs of the support points at the middles
+       * of its edges (Face::middles), and their reference positions. */
+      std::array<types::global_dof_index, 3 * dim> middle_dofs{};
+      std::array<double, 3 * dim>                  middle_x{};
+      unsigned int                                 n_middles = 0;
 
       template <class Archive>
       void
@@ -173,6 +192,9 @@ namespace tribos
           archive &v;
         for (auto &d : middle_dofs)
           archive &d;
+        for (auto &v : middle_x)
+          archive &v;
+        archive &n_middles;
       }
     };
 

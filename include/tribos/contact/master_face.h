@@ -142,6 +142,18 @@ namespace tribos
     static constexpr unsigned int n_nodes  = 3;
     static constexpr unsigned int n_coords = 2;
 
+    /**
+     * The six-node triangle of a P2 tetrahedron in contact: its vertex
+     * functions integrate to zero over a flat face, so contact works in the
+     * modified basis Ntilde_v = N_v + alpha (N of the middles of v's two
+     * edges), Ntilde_m = (1 - 2 alpha) N_m with this alpha (Popp, Wohlmuth,
+     * Gee and Wall 2012): a partition of unity whose functions integrate to
+     * 2 A / 15 (vertex) and A / 5 (middle) over a face of area A. The same
+     * displacement has the coefficients u_v at a vertex and
+     * (u_m - alpha (u_a + u_b)) / (1 - 2 alpha) at the middle of edge a-b.
+     */
+    static constexpr double modified_basis_alpha = 0.2;
+
     template <typename Number>
     static void
     shape(const Number *xi, Number *N, Number (*dN)[2])

@@ -21,30 +21,37 @@ namespace tribos
    */
   struct MortarOverlapCache
   {
-    /** The AD number of one overlap: the coordinates of its slave face's
-     * and master face's 4 + 4 nodes. */
+    /** The AD number of one overlap: the coordinates of its slave and
+     * master pieces' nodes (a face, or a triangle of a quadratic one), 4 +
+     * 4 at most, the master's from 12 on. */
     using FaceAD = Sacado::Fad::SLFad<double, 24>;
 
-    /** Whether the faces overlap and, if so, the overlap's area and the
-     * integrals int N_i N_k (slave) and int N_i N_l (master) over it. */
+    /** Whether the pieces overlap and, if so, the overlap's area and the
+     * integrals int N_i N_k (slave face's functions, n_s x n_s, row-major)
+     * and int N_i N_l (slave x master face's, n_s x n_m) over it. */
     struct Entry
     {
-      bool   overlaps = false;
-      FaceAD area, slave[4][4], master[4][4];
+      bool                overlaps = false;
+      FaceAD              area;
+      std::vector<FaceAD> slave, master;
     };
 
-    /** By slave face (high 32 bits) and master face (low 32 bits). */
+    /** By slave piece (high 32 bits: 4 times the face's number plus the
+     * piece's) and master piece (low 32 bits, the same). */
     std::unordered_map<std::uint64_t, Entry> entries;
   };
 
+
+
   /**
    * A face of the mortar element: its nodes' local numbers, 4 of a
-   * bilinear quadrilateral (lexicographic) or 3 of a triangle
-   * (TriangleFace).
+   * bilinear quadrilateral (lexicographic), 3 of a triangle
+   * (TriangleFace) or 6 of a quadratic triangle (vertices, then the
+   * middles of the edges 0-1, 1-2, 2-0).
    */
   struct MortarFace3D
   {
-    std::array<unsigned int, 4> nodes{};
+    std::array<unsigned int, 6> nodes{};
     unsigned int                n = 4;
     unsigned int
     operator[](const unsigned int i) const
@@ -71,7 +78,9 @@ namespace tribos
      * node carries (ContactPair::carried, at most 4); triangles: 4 to 8
      * on split cubes, up to 12 on a gmsh surface. */
     static constexpr unsigned int max_slave_faces = 16;
-    static constexpr unsigned int max_slave_nodes = 1 + 2 * max_slave_faces;
+    /** Two more nodes per face around a linear node, up to three around a
+     * vertex of quadratic triangles. */
+    static constexpr unsigned int max_slave_nodes = 1 + 3 * max_slave_faces;
     unsigned int                  n_slave_nodes   = 0;
     Vec3<double>                  xs[max_slave_nodes], xs_old[max_slave_nodes];
     unsigned int                  n_slave_faces = 0;
