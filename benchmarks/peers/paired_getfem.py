@@ -11,7 +11,9 @@ written per case, with both codes' Newton iterations and pressure errors.
 Cases: hertz_2d_13k and hertz_2d_49k (the same gmsh mesh for both codes),
 hertz_3d (tribos on parameters/hertz_3d_load.prm, its own hexahedral
 mesh; GetFEM on hertz_3d_20k.msh, first-order hexahedra, whose pressure
-error is the larger). Both: small strain, frictionless rigid plane,
+error is the larger), hertz_3d_tet_p1 and hertz_3d_tet_p2 (issue 45:
+tests/hertz_3d_tet.msh for both codes, P1 and P2 tetrahedra; tribos with
+Lagrange multipliers). Both: small strain, frictionless rigid plane,
 touching start, the whole load in one step, default Newton settings;
 GetFEM's augmented Lagrangian (getfem_hertz.py), tribos's default method
 (penalty 100 E/h) unless --set says otherwise. Needs `import getfem`
@@ -40,24 +42,41 @@ sys.path.insert(0, HERE)
 import hertz_error  # noqa: E402
 from peer_runs import mesh, summary_value  # noqa: E402
 
-# name: tribos parameter file, tribos settings, GetFEM mesh, dim, R, E, nu,
-# symmetry factor
+# The tetrahedral mesh of tests/tet_contact.py (hertz_3d.geo with
+# -setnumber hex 0 -setnumber hf 0.15: fine zone a / 8), for both codes.
+TET_MESH = os.path.join(ROOT, "tests", "hertz_3d_tet.msh")
+TET_SETS = ["Scene/Name=gmsh", "Scene/Mesh file=" + TET_MESH,
+            "Contact/Method=lagrange multiplier"]
+
+# name: tribos parameter file, tribos mesh, GetFEM mesh, dim, R, E, nu,
+# symmetry factor, tribos settings, getfem_hertz.py arguments
 CASES = {
     "hertz_2d_13k": ("hertz_2d_load.prm", "hertz_2d_13k.msh",
-                     "hertz_2d_13k.msh", 2, 1.0, 1.0, 0.3, 2.0),
+                     "hertz_2d_13k.msh", 2, 1.0, 1.0, 0.3, 2.0, [], []),
     "hertz_2d_49k": ("hertz_2d_load.prm", "hertz_2d_49k.msh",
-                     "hertz_2d_49k.msh", 2, 1.0, 1.0, 0.3, 2.0),
+                     "hertz_2d_49k.msh", 2, 1.0, 1.0, 0.3, 2.0, [], []),
     "hertz_3d": (os.path.join(ROOT, "parameters", "hertz_3d_load.prm"), None,
-                 "hertz_3d_20k.msh", 3, 10.0, 2e5, 0.3, 4.0),
+                 "hertz_3d_20k.msh", 3, 10.0, 2e5, 0.3, 4.0, [], []),
+    # Issue 45: the same tetrahedral mesh, P1 (both codes' nodal
+    # multipliers) and P2 (tribos's multipliers at the vertices and the
+    # edge middles' virtual points; GetFEM's integral contact, its only
+    # contact for P2).
+    "hertz_3d_tet_p1": (os.path.join(ROOT, "parameters", "hertz_3d_load.prm"),
+                        None, TET_MESH, 3, 10.0, 2e5, 0.3, 4.0, TET_SETS,
+                        ["--order", "1"]),
+    "hertz_3d_tet_p2": (os.path.join(ROOT, "parameters", "hertz_3d_load.prm"),
+                        None, TET_MESH, 3, 10.0, 2e5, 0.3, 4.0,
+                        TET_SETS + ["Finite element/Polynomial degree=2"],
+                        ["--order", "2", "--method", "integral"]),
 }
 
 def run_tribos(tribos, case, folder, sets):
-    prm, tribos_mesh, _, dim, radius, young, nu, factor = CASES[case]
+    prm, tribos_mesh, _, dim, radius, young, nu, factor = CASES[case][:8]
     command = [tribos, os.path.join(HERE, prm), "--set",
                "Output/Directory=" + folder, "--set", "Output/Write VTU=false"]
     if tribos_mesh:
         command += ["--set", "Scene/Mesh file=" + mesh(tribos_mesh)]
-    for s in sets:
+    for s in CASES[case][8] + list(sets):
         command += ["--set", s]
     start = time.time()
     subprocess.run(command, stdout=subprocess.DEVNULL,
@@ -80,11 +99,13 @@ def run_tribos(tribos, case, folder, sets):
 
 def run_getfem(case, results):
     _, _, getfem_mesh, dim = CASES[case][:4]
+    path = getfem_mesh if os.path.isabs(getfem_mesh) else mesh(getfem_mesh)
     start = time.time()
     subprocess.run(["/usr/bin/python3", os.path.join(HERE, "getfem_hertz.py"),
-                    "--dim", str(dim), "--mesh", mesh(getfem_mesh),
-                    "--csv", results], stdout=subprocess.DEVNULL,
-                   stderr=subprocess.DEVNULL, check=True)
+                    "--dim", str(dim), "--mesh", path,
+                    "--csv", results] + CASES[case][9],
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                   check=True)
     wall = time.time() - start
     row = list(csv.DictReader(open(results)))[-1]
     return wall, {"getfem_dofs": row["dofs_u"],
