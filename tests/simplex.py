@@ -17,13 +17,17 @@
   benchmarks/peers/hertz_2d.geo) with penalty and with multipliers: the
   pressure profile's L2 error against Hertz below 5 % (measured 4.5 %) in
   at most 8 Newton iterations, with the load carried.
-- A VTU file is written for a P2 triangle run; J2 plasticity on P1 warns
+- A VTU file of quadratic triangles (VTK type 22) is written for a P2
+  triangle run; J2 plasticity on P1 warns
   of locking."""
 
+import base64
 import glob
 import math
 import os
+import struct
 import sys
+import zlib
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "benchmarks", "peers"))
@@ -163,6 +167,20 @@ run(tribos, tests + "/patch_test.prm", folder,
     mortar + [split, "Finite element/Polynomial degree=2",
               "Output/Write VTU=true"])
 vtu = open(folder + "/solution-00001.vtu").read()
-check("<VTKFile" in vtu and 'NumberOfCells="' in vtu,
-      "P2 triangles: solution-00001.vtu written")
+
+
+def vtk_cell_types(text):
+    """The set of VTK cell types of a deal.II VTU file (zlib-compressed
+    binary, one block: a header of 4 uint32, then the data)."""
+    start = text.find('Name="types"')
+    data = text[text.find(">", start) + 1:text.find("</DataArray>", start)]
+    data = data.strip()
+    header = struct.unpack("<4I", base64.b64decode(data[:24]))
+    return set(zlib.decompress(base64.b64decode(data[24:])[:header[3]]))
+
+
+types = vtk_cell_types(vtu)
+check("<VTKFile" in vtu and types == {22},
+      "P2 triangles: solution-00001.vtu written with quadratic triangles "
+      "(VTK cell types %s, 22 expected)" % sorted(types))
 finish()

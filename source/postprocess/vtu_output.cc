@@ -254,15 +254,16 @@ namespace tribos
       Utilities::MPI::this_mpi_process(mpi_communicator);
     if (n_ranks > 1)
       data_out.add_data_vector(cells.subdomain, "subdomain");
-    // Simplices: one patch per cell, whose quadratic geometry and fields
-    // deal.II 9.4 writes only with the cell's vertices.
+    // Simplices: one patch per cell; with P2 deal.II 9.4 writes quadratic
+    // triangles and tetrahedra (VTK types 22 and 24: the fields at the
+    // edge middles too; the geometry is the mesh's straight-sided one).
     if (problem.get_triangulation().all_reference_cells_are_hyper_cube())
       data_out.build_patches(parameters.finite_element.degree);
     else
       data_out.build_patches(problem.get_fe()
                                .reference_cell()
                                .template get_default_linear_mapping<dim>(),
-                             1);
+                             parameters.finite_element.degree);
 
     // zlib's fastest level: deal.II's default (best compression) took five
     // times as long for files 12 % smaller (Hertz 2D, doc/benchmarks.md).
