@@ -14,7 +14,9 @@
   step-5 checkpoint it gives the uninterrupted history, every force bit
   for bit.
 - The same scene with node-to-segment contact and penalty: mu at full
-  slip too.
+  slip too; and the 3D sliding blocks split into P1 tetrahedra with
+  penalty (one and two passes), augmented Lagrangian (node-to-segment and
+  mortar) and multipliers.
 - P2 tetrahedra (six-node triangle faces): the mortar patch test with
   either side the slave (modified dual basis), penalty and multipliers,
   to 1e-8; against a rigid plane (the edge middles' virtual points) the
@@ -77,6 +79,23 @@ for method in ("penalty", "lagrange multiplier"):
           "node-to-segment patch test on matching tetrahedra, %s: the "
           "applied pressure 0.01 at all 25 nodes to %.1e" % (method, spread))
 
+
+# Every enforcement and both passes on P1 tetrahedra: the 3D sliding
+# blocks split (tests/sliding_blocks_3d.prm), mu at full slip.
+for name, sets in (("penalty", []),
+                   ("two-pass", ["Contact/Passes=two-pass"]),
+                   ("augmented", ["Contact/Method=augmented lagrangian"]),
+                   ("multipliers", ["Contact/Method=lagrange multiplier"]),
+                   ("augmented, mortar",
+                    ["Contact/Method=augmented lagrangian",
+                     "Contact/Discretization=mortar"])):
+    folder = "%s/sliding_%s" % (out, name.replace(", ", "_"))
+    run(tribos, tests + "/sliding_blocks_3d.prm", folder, [split] + sets)
+    row = read_csv(folder + "/history.csv")[-1]
+    ratio = row["pair0_tangential_force"] / row["pair0_normal_force"]
+    check(row["n_slip"] == row["n_active"] > 20 and abs(ratio - 0.3) < 1e-6,
+          "sliding blocks on P1 tetrahedra, %s: %d nodes slip, tangential "
+          "/ normal force %.9f (mu = 0.3)" % (name, row["n_slip"], ratio))
 
 # P2 tetrahedra: mortar on six-node triangles (modified dual basis), both
 # sides slave (the blocks 4 x 4 and 3 x 3 per layer: a six-node triangle
