@@ -37,7 +37,7 @@ expect simplex_mixed_cells "tribos takes one kind of cell per mesh" \
 # What triangles and tetrahedra do not support (yet), issue 45.
 expect simplex_f_bar "F-bar is the remedy of Q1 cells" "$tribos" "$good" \
   --set "Finite element/Cells=simplices" --set "Finite element/F-bar=true"
-expect simplex_contact_p2_3d "Polynomial degree = 2 needs Contact/Discretization = mortar" \
+expect simplex_contact_p2_3d "Polynomial degree = 2 needs Contact/Discretization = mortar or a rigid" \
   "$tribos" "$tests/sliding_blocks_3d.prm" --set "Finite element/Cells=simplices" \
   --set "Finite element/Polynomial degree=2"
 expect simplex_quadrature "<Finite element/Quadrature points> = 5" \
@@ -91,10 +91,10 @@ expect contact_bad_motion "cannot parse the motion" "$tribos" "$contact" \
   --set "Contact/Rigid surfaces=plane : plane : 0, 0, 0 : 0, 1, 0 : 0, sin(" 
 expect contact_bad_surface_type "unknown type <cone>" "$tribos" "$contact" \
   --set "Contact/Rigid surfaces=plane : cone : 0, 0, 0 : 1 : 0, 0"
-expect contact_q2 "Polynomial degree = 1" "$tribos" "$contact" \
+expect contact_q2 "Polynomial degree = 1" "$tribos" "$tests/patch_test.prm" \
   --set "Finite element/Polynomial degree=2"
-expect contact_q2_node_to_segment "needs Contact/Discretization = mortar" \
-  "$tribos" "$contact" --set "Finite element/Polynomial degree=2"
+expect contact_q2_node_to_segment "needs Contact/Discretization = mortar or a rigid surface" \
+  "$tribos" "$tests/patch_test.prm" --set "Finite element/Polynomial degree=2"
 expect contact_q2_3d "or 2 (2D, and the triangle faces of 3D tetrahedra)" "$tribos" \
   "$tests/patch_test_3d.prm" --set "Finite element/Polynomial degree=2"
 expect contact_q2_axisymmetric_standard "Mortar basis = standard is not available" \

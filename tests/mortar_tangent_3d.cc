@@ -276,7 +276,7 @@ main()
     double       worst_error = 0, worst_balance = 0;
     unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0}, n_partial = 0,
                  n_carrying      = 0;
-    const unsigned int n_samples = round == 2 ? 16 : 80;
+    const unsigned int n_samples = round == 2 ? 16 : round == 1 ? 40 : 80;
     for (unsigned int sample = 0; sample < n_samples; ++sample)
     {
       const bool            slave_triangles  = round == 1 && sample % 3 != 1;

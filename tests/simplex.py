@@ -16,7 +16,11 @@
   a gmsh triangle mesh (tests/hertz_2d_tri.msh, 3578 dofs, from
   benchmarks/peers/hertz_2d.geo) with penalty and with multipliers: the
   pressure profile's L2 error against Hertz below 5 % (measured 4.5 %) in
-  at most 8 Newton iterations, with the load carried.
+  at most 8 Newton iterations, with the load carried; on P2 triangles
+  (tri6 on the same mesh, the rigid plane against quadratic segments)
+  below 6 % (measured 5.1 %, 5.2 %).
+- Quadratic segments (P2 triangles and Q2 quadrilaterals) on a rigid
+  plane: the applied pressure at every vertex and middle node to 1e-8.
 - A VTU file of quadratic triangles (VTK type 22) is written for a P2
   triangle run; J2 plasticity on P1 warns
   of locking."""
@@ -144,10 +148,15 @@ for degree in (1, 2):
 
 # Hertz 2D on a gmsh triangle mesh, load control.
 peers = os.path.join(tests, "..", "benchmarks", "peers")
-for method in ("penalty", "lagrange multiplier"):
-    folder = "%s/hertz_%s" % (out, method.split()[0])
+# P2 on the same mesh: 5.1 % and 5.2 % (the nodal error is the sampling
+# of the profile's square-root edge, which the middle nodes do not help).
+bound = {1: 0.05, 2: 0.06}
+for degree, method in ((1, "penalty"), (1, "lagrange multiplier"),
+                       (2, "penalty"), (2, "lagrange multiplier")):
+    folder = "%s/hertz_p%d_%s" % (out, degree, method.split()[0])
     run(tribos, peers + "/hertz_2d_load.prm", folder,
         ["Scene/Mesh file=%s/hertz_2d_tri.msh" % tests,
+         "Finite element/Polynomial degree=%d" % degree,
          "Contact/Method=" + method])
     points = hertz_error.read_tribos_contact(
         sorted(glob.glob(folder + "/contact-*.csv"))[-1], 2)
@@ -155,11 +164,31 @@ for method in ("penalty", "lagrange multiplier"):
     error = hertz_error.profile_error(points, 2 * force, 1.0,
                                       1.0 / (1 - 0.3 ** 2), 2)
     row = read_csv(folder + "/history.csv")[-1]
-    check(error < 0.05 and abs(force - 0.005) < 1e-8
+    check(error < bound[degree] and abs(force - 0.005) < 1e-8
           and row["newton_iterations_all"] <= 8,
-          "Hertz 2D on triangles, %s: pressure L2 error %.4f < 0.05, "
+          "Hertz 2D on P%d triangles, %s: pressure L2 error %.4f < %.2f, "
           "contact force %.8f (load 0.005), %d Newton iterations (<= 8)"
-          % (method, error, force, row["newton_iterations_all"]))
+          % (degree, method, error, bound[degree], force,
+             row["newton_iterations_all"]))
+
+# Quadratic segments on a rigid plane (2D P2 and Q2): the block of
+# tests/patch_test.prm on the plane y = 0.5 under its uniform load, with
+# the nodes' areas h/6, 2h/3, h/6: the applied pressure at every vertex
+# and middle node.
+for cells in ("simplices", "as meshed"):
+    for method in ("penalty", "lagrange multiplier"):
+        folder = "%s/rigid_q2_%s_%s" % (out, cells.split()[0],
+                                        method.split()[0])
+        run(tribos, tests + "/patch_test.prm", folder,
+            ["Finite element/Cells=" + cells,
+             "Finite element/Polynomial degree=2", "Contact/Method=" + method,
+             "Contact/Pairs=12 : floor", "Contact/Rigid surfaces=floor : plane : "
+             "0, 0.5, 0 : 0, 1, 0 : 0, 0"])
+        p = pressures(folder)
+        spread = max(abs(x - 0.01) for x in p) / 0.01
+        check(len(p) > 4 and spread < 1e-8,
+              "quadratic %s on a rigid plane, %s: the applied pressure at "
+              "all %d nodes to %.1e" % (cells, method, len(p), spread))
 
 # VTU on P2 triangles.
 folder = out + "/vtu_p2"

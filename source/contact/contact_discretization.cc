@@ -94,10 +94,9 @@ namespace tribos
     AssertThrow(!pair.slave->quadratic(),
                 ExcMessage("Contact pair <" + pair.description.text +
                            ">: Finite element/Polynomial degree = 2 needs "
-                           "Contact/Discretization = mortar (or, on "
-                           "tetrahedra, a rigid surface); node-to-segment "
-                           "contact works on the linear faces of "
-                           "Polynomial degree = 1."));
+                           "Contact/Discretization = mortar or a rigid "
+                           "surface; node-to-segment contact works on the "
+                           "linear faces of Polynomial degree = 1."));
   }
 
 

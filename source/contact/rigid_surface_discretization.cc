@@ -14,12 +14,14 @@ namespace tribos
 
   template <int dim>
   void
-  RigidSurfaceDiscretization<dim>::initialize(const ContactPair<dim> &pair)
+  RigidSurfaceDiscretization<dim>::initialize(const ContactPair<dim> &)
   {
-    // Six-node triangles work through their edge middles' virtual points
-    // (evaluate()); quadratic segments (2D) do not.
-    if (!pair.slave->quadratic_triangles())
-      require_linear_slave_faces(pair);
+    // Every slave surface works: linear faces with the integrals of their
+    // functions as areas; quadratic segments (2D Q2 and P2) too, whose
+    // functions integrate to h/6, 2h/3, h/6 (positive): with the dual
+    // basis the mortar weighted gap against a plane is then the node's
+    // gap times that area, the node-wise law. Six-node triangles through
+    // their edge middles' virtual points (evaluate()).
   }
 
 
