@@ -172,8 +172,26 @@ namespace tribos
   void
   ContactSurface<dim>::number_nodes(const std::vector<FaceRecord> &records)
   {
-    // A node is its vertex's dofs (the first one names it).
+    // A node is its vertex's dofs (the first one names it): the number of
+    // the node with @p dofs at @p x, made when first seen.
     std::map<types::global_dof_index, unsigned int> node_of_dof;
+    const auto node_of = [&](const types::global_dof_index *dofs,
+                             const double                  *x) -> unsigned int
+    {
+      auto it = node_of_dof.find(dofs[0]);
+      if (it == node_of_dof.end())
+      {
+        Node node;
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          node.dofs[d]      = dofs[d];
+          node.reference[d] = x[d];
+        }
+        it = node_of_dof.emplace(node.dofs[0], node_list.size()).first;
+        node_list.push_back(node);
+      }
+      return it->second;
+    };
     for (const auto &record : records)
     {
       Face contact_face;
@@ -183,42 +201,19 @@ namespace tribos
       contact_face.n_vertices = record.n_vertices;
       body_ids.insert(record.body);
       for (unsigned int v = 0; v < record.n_vertices; ++v)
-      {
-        auto it = node_of_dof.find(record.dofs[v * dim]);
-        if (it == node_of_dof.end())
-        {
-          Node node;
-          for (unsigned int d = 0; d < dim; ++d)
-          {
-            node.dofs[d]      = record.dofs[v * dim + d];
-            node.reference[d] = record.x[v * dim + d];
-          }
-          it = node_of_dof.emplace(node.dofs[0], node_list.size()).first;
-          node_list.push_back(node);
-        }
-        contact_face.nodes[v] = it->second;
-      }
+        contact_face.nodes[v] =
+          node_of(&record.dofs[v * dim], &record.x[v * dim]);
       // Its reference position is the chord's midpoint, where the
       // linear mapping (the mesh's reference geometry) puts the support
       // point. A triangle's middle nodes are shared with the neighbours.
       contact_face.n_middles = record.n_middles;
       for (unsigned int e = 0; e < record.n_middles; ++e)
       {
-        auto it = node_of_dof.find(record.middle_dofs[e * dim]);
-        if (it == node_of_dof.end())
-        {
-          Node node;
-          for (unsigned int d = 0; d < dim; ++d)
-          {
-            node.dofs[d]      = record.middle_dofs[e * dim + d];
-            node.reference[d] = record.middle_x[e * dim + d];
-          }
-          it = node_of_dof.emplace(node.dofs[0], node_list.size()).first;
-          node_list.push_back(node);
-        }
-        contact_face.middles[e] = it->second;
+        const unsigned int n =
+          node_of(&record.middle_dofs[e * dim], &record.middle_x[e * dim]);
+        contact_face.middles[e] = n;
         if (dim == 3)
-          node_list[it->second].edge = {
+          node_list[n].edge = {
             {static_cast<int>(contact_face.nodes[e]),
              static_cast<int>(contact_face.nodes[(e + 1) % 3])}};
       }
