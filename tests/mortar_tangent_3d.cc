@@ -32,6 +32,32 @@
 using namespace tribos;
 
 /**
+ * The rest of a random input of @p sample once its nodes and faces are
+ * set: positions at the last converged step near the current ones, the
+ * basis, and the slave shifted up or down (open or closed).
+ */
+void
+finish_input(std::mt19937                           &random,
+             std::uniform_real_distribution<double> &u,
+             const unsigned int                      sample,
+             MortarInput3D                          &input)
+{
+  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    for (unsigned int d = 0; d < 3; ++d)
+      input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
+  for (unsigned int l = 0; l < input.n_master_nodes; ++l)
+    for (unsigned int d = 0; d < 3; ++d)
+      input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
+  input.dual        = sample % 3 != 2;
+  input.min_weight  = 0;
+  const double lift = -0.03 + 0.04 * u(random);
+  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
+    input.xs[i][2] += lift;
+}
+
+
+
+/**
  * A random 3D mortar element input of @p sample (its kinds by the sample
  * number); @p carries (node j carries half of a neighbour's function),
  * @p short_master (the master ends under the slave patch) and the slave's
@@ -133,18 +159,7 @@ random_input(std::mt19937                           &random,
                 input.master_face,
                 input.n_master_faces);
     }
-  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-    for (unsigned int d = 0; d < 3; ++d)
-      input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
-  for (unsigned int l = 0; l < input.n_master_nodes; ++l)
-    for (unsigned int d = 0; d < 3; ++d)
-      input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
-  input.dual       = sample % 3 != 2;
-  input.min_weight = 0;
-  // Shift the slave up or down: open or closed.
-  const double lift = -0.03 + 0.04 * u(random);
-  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-    input.xs[i][2] += lift;
+  finish_input(random, u, sample, input);
 
   return input;
 }
@@ -243,17 +258,7 @@ random_quadratic_input(std::mt19937                           &random,
                 master_number,
                 input.master_face,
                 input.n_master_faces);
-  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-    for (unsigned int d = 0; d < 3; ++d)
-      input.xs_old[i][d] = input.xs[i][d] + 0.01 * u(random);
-  for (unsigned int l = 0; l < input.n_master_nodes; ++l)
-    for (unsigned int d = 0; d < 3; ++d)
-      input.xm_old[l][d] = input.xm[l][d] + 0.01 * u(random);
-  input.dual        = sample % 3 != 2;
-  input.min_weight  = 0;
-  const double lift = -0.03 + 0.04 * u(random);
-  for (unsigned int i = 0; i < input.n_slave_nodes; ++i)
-    input.xs[i][2] += lift;
+  finish_input(random, u, sample, input);
   return input;
 }
 

@@ -85,14 +85,17 @@ namespace tribos
        */
       template <class Classify>
       bool
-      walk(const std::vector<Vec3<double>> &starts, const Classify &classify)
+      walk(const Vec3<double> *starts,
+           const unsigned int  n_starts,
+           const Classify     &classify)
       {
         const auto               &faces = pair.master->faces();
         std::vector<unsigned int> queue;
-        for (const Vec3<double> &point : starts)
+        for (unsigned int s = 0; s < n_starts; ++s)
         {
-          unsigned int face;
-          double       squared_distance;
+          const Vec3<double> &point = starts[s];
+          unsigned int        face;
+          double              squared_distance;
           if (!pair.search.closest_face(point, face, squared_distance))
             return false;
           closest = std::min(closest, std::sqrt(squared_distance));
@@ -200,7 +203,8 @@ namespace tribos
 
         // From the faces closest to the segment's ends and middle through
         // their neighbours, as long as they overlap.
-        if (!walker.walk({x_a, x_b, scale(0.5, x_a + x_b)}, classify))
+        const Vec3<double> starts[3] = {x_a, x_b, scale(0.5, x_a + x_b)};
+        if (!walker.walk(starts, 3, classify))
           return false;
       }
       return true;
@@ -259,11 +263,11 @@ namespace tribos
           return 2;
         };
 
-        if (!walker.walk(
-              n_s == 3 ?
-                std::vector<Vec3<double>>{x[0], x[1], x[2], plane.x0} :
-                std::vector<Vec3<double>>{x[0], x[1], x[2], x[3], plane.x0},
-              classify))
+        // From the faces closest to its vertices and its centre.
+        Vec3<double> starts[5];
+        std::copy(x, x + n_s, starts);
+        starts[n_s] = plane.x0;
+        if (!walker.walk(starts, n_s + 1, classify))
           return false;
       }
       return true;

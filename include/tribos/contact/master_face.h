@@ -381,7 +381,6 @@ namespace tribos
           best = distance;
           for (unsigned int c = 0; c < 2; ++c)
             p.xi[c] = from[c] + t * (to[c] - from[c]);
-          p.clamped[0] = p.clamped[1] = p.clamped[2] = 0;
           // A corner of the triangle lies on two edges.
           p.clamped[0] = (p.xi[0] == 0. ? -1 : 0);
           p.clamped[1] = (p.xi[1] == 0. ? -1 : 0);

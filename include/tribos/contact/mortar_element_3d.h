@@ -193,6 +193,15 @@ namespace tribos
     /** Lexicographic vertex numbers of a face in counter-clockwise order. */
     constexpr unsigned int counter_clockwise[4] = {0, 1, 3, 2};
 
+    /** Vertex @p k of a face of @p n vertices (quadrilateral or
+     * triangle) in clockwise order: a master face, counter-clockwise seen
+     * from its own side, as the slave's auxiliary plane sees it. */
+    inline unsigned int
+    clockwise(const unsigned int n, const unsigned int k)
+    {
+      return n == 3 ? 2 - k : counter_clockwise[3 - k];
+    }
+
     /** The auxiliary plane of a slave face: its centre, unit normal (out
      * of the slave), in-plane basis and the face's n vertices projected
      * onto it (in the face's order P, counter-clockwise P_ccw) with its
