@@ -190,11 +190,33 @@ printf '$MeshFormat\n2.2 1 8\n' > "$meshes/binary.msh"
 sed -e 's/^3 3 2 1 1 1 2 5 4$/3 10 2 1 1 1 2 5 4 1 2 5 4 5/' \
   "$tests/two_squares.msh" > "$meshes/quad9.msh"
 echo "not a mesh" > "$meshes/garbage.msh"
+# A second-order cell whose mid-side node lies across it (folded), a mesh
+# of first- and second-order cells, and third-order cells (issue 45).
+printf '%s\n' '$MeshFormat' '2.2 0 8' '$EndMeshFormat' '$Nodes' 6 '1 0 0 0' \
+  '2 1 0 0' '3 0 1 0' '4 0.5 0 0' '5 0.5 0.5 0' '6 0.9 0.5 0' '$EndNodes' \
+  '$Elements' 1 '1 9 2 1 1 1 2 3 4 5 6' '$EndElements' > "$meshes/folded.msh"
+sed -e 's/^1 9 2 1 1 1 2 3 4 5 6$/1 21 2 1 1 1 2 3 4 5 6 4 5 6 5/' \
+  "$meshes/folded.msh" > "$meshes/tri10.msh"
 for mesh in truncated:"ends inside its \$Elements section" binary:"a binary gmsh file" \
-  quad9:"9-node (second-order) quadrilaterals" garbage:"not a gmsh mesh file"; do
+  quad9:"mixes first- and second-order cells" garbage:"not a gmsh mesh file" \
+  tri10:"'Triangle 10' cells (gmsh element type 21, order 3)"; do
   expect "gmsh_${mesh%%:*}" "${mesh#*:}" "$tribos" "$tests/gmsh_import.prm" \
     --set "Scene/Mesh file=$meshes/${mesh%%:*}.msh"
 done
+expect gmsh_folded "is folded (its map's Jacobian is not positive" "$tribos" \
+  "$tests/gmsh_import.prm" --set "Scene/Mesh file=$meshes/folded.msh" \
+  --set "Finite element/Polynomial degree=2" --set "Boundary conditions/Dirichlet=0 : xy : 0, 0"
+# A curved mesh split into simplices (its curved cells are not split), and
+# contact on the nine-node faces of curved hexahedra (Q2 in 3D).
+expect curved_split "splits straight cells; the mesh of the scene has second-order" \
+  "$tribos" "$tests/gmsh_import.prm" --set "Scene/Mesh file=$tests/quarter_disc_quad9.msh" \
+  --set "Finite element/Cells=simplices" --set "Boundary conditions/Dirichlet=1 : x : 0"
+expect curved_hex_contact "Polynomial degree = 1 (2D and 3D) or 2 (2D, and the triangle faces" \
+  "$tribos" "$tests/gmsh_import.prm" --set "Dimension=3" \
+  --set "Scene/Mesh file=$tests/ball_octant_hex27.msh" --set "Finite element/Polynomial degree=2" \
+  --set "Materials/Young's modulus=1, 1" \
+  --set "Boundary conditions/Dirichlet=1 : x : 0 ; 2 : y : 0" \
+  --set "Contact/Pairs=4 : plane" --set "Contact/Rigid surfaces=plane : plane : 0, 0, 1.1 : 0, 0, -1 : 0, 0, -0.2*t"
 expect gmsh_boundary_ids "boundary ids are 0, 1, 2 (a gmsh mesh's" "$tribos" \
   "$tests/gmsh_import.prm" --set "Scene/Mesh file=$tests/two_squares.msh" \
   --set "Boundary conditions/Dirichlet=7 : xy : 0, 0"

@@ -7,6 +7,9 @@
 //   gmsh -2 -setnumber hf 0.00338 hertz_2d.geo -o hertz_2d_49k.msh  (49242 dofs)
 //   gmsh -2 -setnumber hf 0.0078 -setnumber quads 0 hertz_2d.geo \
 //        -o ../../tests/hertz_2d_tri.msh  (triangles, 3578 dofs)
+//   gmsh -2 -setnumber hf 0.0078 -setnumber quads 0 -setnumber order 2 \
+//        hertz_2d.geo -o ../../tests/hertz_2d_tri6.msh  (curved six-node
+//        triangles, P2)
 //
 // (hf is the size before the final subdivision: the quadrilaterals along
 // the contact are hf / 2, 0.0039 and 0.0017, i.e. a / 28 and a / 64 for
@@ -19,7 +22,8 @@ DefineConstant[ R  = {1.0,  Name "radius"},
                 hf = {0.004, Name "element size in the fine zone"},
                 rf = {0.25, Name "fine zone radius / R"},
                 hc = {0.05, Name "largest element size / R"},
-                quads = {1, Name "1: quadrilaterals (0: triangles)"} ];
+                quads = {1, Name "1: quadrilaterals (0: triangles)"},
+                order = {1, Name "geometric order of the elements (1, 2)"} ];
 
 Point(1) = {0, 0, 0};      // contact point
 Point(2) = {0, R, 0};      // centre (and top of the symmetry line)
@@ -45,7 +49,7 @@ Mesh.MeshSizeExtendFromBoundary = 0;
 Mesh.MeshSizeFromPoints = 0;
 Mesh.MeshSizeFromCurvature = 0;
 
-// all quadrilaterals (or all triangles), first order
+// all quadrilaterals (or all triangles), first order (or second: curved)
 Mesh.Algorithm = 6;             // frontal-Delaunay (8, "for quads", crashes
                                 // Debian's gmsh 4.8.4), then recombined
 If (quads == 1)
@@ -53,7 +57,8 @@ If (quads == 1)
   Mesh.RecombinationAlgorithm = 1; // blossom
   Mesh.SubdivisionAlgorithm = 1;   // split what is left into quads (halves h)
 EndIf
-Mesh.ElementOrder = 1;
+Mesh.ElementOrder = order;
+Mesh.HighOrderOptimize = 0;
 Mesh.MshFileVersion = 2.2;
 
 Physical Curve(10) = {3};

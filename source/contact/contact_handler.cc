@@ -19,7 +19,8 @@ namespace tribos
     const std::function<double(types::material_id)> &youngs_modulus,
     const IndexSet                                  &locally_owned_dofs,
     const MPI_Comm                                   mpi_communicator,
-    const bool                                       axisymmetric)
+    const bool                                       axisymmetric,
+    const Mapping<dim>                              *curved_geometry)
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
     , pairing(parameters, mpi_communicator)
@@ -31,6 +32,7 @@ namespace tribos
                                        youngs_modulus,
                                        locally_owned_dofs,
                                        axisymmetric,
+                                       curved_geometry,
                                        n_enforcement_unknowns,
                                        all_contact_dofs);
     slave_read_dofs = IndexSet(dof_handler.n_dofs());

@@ -205,6 +205,7 @@ namespace tribos
     const std::function<double(types::material_id)> &youngs_modulus,
     const IndexSet                                  &locally_owned_dofs,
     const bool                                       axisymmetric,
+    const Mapping<dim>                              *curved_geometry,
     types::global_dof_index                         &n_unknowns,
     IndexSet                                        &contact_dofs)
   {
@@ -242,7 +243,8 @@ namespace tribos
       if (!s)
         s = std::make_shared<ContactSurface<dim>>(dof_handler,
                                                   boundary_ids,
-                                                  axisymmetric);
+                                                  axisymmetric,
+                                                  curved_geometry);
       return s;
     };
     std::map<std::string, std::shared_ptr<RigidSurface<dim>>> rigid_surfaces;
@@ -421,6 +423,7 @@ namespace tribos
                      const std::function<double(types::material_id)> &,
                      const IndexSet &,
                      const bool,
+                     const Mapping<2> *,
                      types::global_dof_index &,
                      IndexSet &);
   template std::vector<ContactPair<3>>
@@ -429,6 +432,7 @@ namespace tribos
                      const std::function<double(types::material_id)> &,
                      const IndexSet &,
                      const bool,
+                     const Mapping<3> *,
                      types::global_dof_index &,
                      IndexSet &);
   template std::vector<std::string>

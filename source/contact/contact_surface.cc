@@ -13,7 +13,8 @@ namespace tribos
   ContactSurface<dim>::ContactSurface(
     const DoFHandler<dim>              &dof_handler,
     const std::set<types::boundary_id> &boundary_ids,
-    const bool                          axisymmetric)
+    const bool                          axisymmetric,
+    const Mapping<dim>                 *curved_geometry)
     : ids(boundary_ids)
   {
     // Each process orients the faces of its own cells (the normal of
@@ -34,8 +35,12 @@ namespace tribos
                  "has degree " +
                  std::to_string(degree) + " in " + std::to_string(dim) + "D."));
     is_quadratic = (degree == 2);
-    number_nodes(gather_faces(dof_handler));
-    integrate_areas(axisymmetric);
+    is_curved    = (curved_geometry != nullptr);
+    number_nodes(gather_faces(dof_handler, curved_geometry));
+    if (is_curved)
+      integrate_curved_areas(axisymmetric);
+    else
+      integrate_areas(axisymmetric);
     find_neighbours();
   }
 
@@ -43,8 +48,20 @@ namespace tribos
 
   template <int dim>
   std::vector<typename ContactSurface<dim>::FaceRecord>
-  ContactSurface<dim>::gather_faces(const DoFHandler<dim> &dof_handler) const
+  ContactSurface<dim>::gather_faces(const DoFHandler<dim> &dof_handler,
+                                    const Mapping<dim> *curved_geometry) const
   {
+    // Where the curved geometry puts the middle of the cell's line l: the
+    // support point of the quadratic element's dof on the line (after one
+    // per vertex).
+    const auto curved_middle =
+      [curved_geometry, &dof_handler](const auto &cell, const unsigned int l)
+    {
+      return curved_geometry->transform_unit_to_real_cell(
+        cell,
+        dof_handler.get_fe().base_element(0).unit_support_point(
+          cell->n_vertices() + l));
+    };
     const auto                          &fe = dof_handler.get_fe();
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
 
@@ -114,9 +131,14 @@ namespace tribos
               if (index == 2)
                 record.middle_dofs[component] = face_dofs[i];
             }
-            record.n_middles = 1;
+            record.n_middles        = 1;
+            const Point<dim> middle = curved_geometry == nullptr ?
+                                        Point<dim>() :
+                                        curved_middle(cell, f);
             for (unsigned int d = 0; d < dim; ++d)
-              record.middle_x[d] = 0.5 * (record.x[d] + record.x[dim + d]);
+              record.middle_x[d] = curved_geometry == nullptr ?
+                                     0.5 * (record.x[d] + record.x[dim + d]) :
+                                     middle[d];
           }
           if constexpr (dim == 3)
             if (is_quadratic)
@@ -130,18 +152,21 @@ namespace tribos
                 const unsigned int a = face->vertex_index(order[e]),
                                    b = face->vertex_index(order[(e + 1) % 3]);
                 bool found           = false;
-                for (unsigned int l = 0; l < face->n_lines(); ++l)
+                for (unsigned int l = 0; l < cell->n_lines(); ++l)
                 {
-                  const auto line = face->line(l);
+                  const auto line = cell->line(l);
                   if ((line->vertex_index(0) == a &&
                        line->vertex_index(1) == b) ||
                       (line->vertex_index(0) == b &&
                        line->vertex_index(1) == a))
                   {
+                    const Point<dim> middle = curved_geometry == nullptr ?
+                                                line->center() :
+                                                curved_middle(cell, l);
                     for (unsigned int d = 0; d < dim; ++d)
                     {
                       record.middle_dofs[e * dim + d] = line->dof_index(d);
-                      record.middle_x[e * dim + d]    = line->center()[d];
+                      record.middle_x[e * dim + d]    = middle[d];
                     }
                     found = true;
                   }
@@ -290,6 +315,96 @@ namespace tribos
     // size (the tributary length would halve there, and a penalty k E / h
     // would double: a uniform pressure would no longer give a uniform
     // penetration).
+    for (auto &node : node_list)
+    {
+      node.size /= node.faces.size();
+      if (dim == 3)
+        node.size = std::sqrt(node.size);
+    }
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSurface<dim>::integrate_curved_areas(const bool axisymmetric)
+  {
+    // Quadratic faces only (the constructor allows no other curved ones):
+    // 2D the curve through nodes 0, middle, 1 (xi in [-1, 1]); 3D the
+    // six-node triangle on the reference triangle, vertices L_0 = 1 - xi_1 -
+    // xi_2, L_1 = xi_1, L_2 = xi_2, middle e on the edge e-(e+1).
+    const QGauss<1>        line_rule(4);
+    const QGaussSimplex<2> triangle_rule(4);
+    const double           alpha = TriangleFace::modified_basis_alpha;
+    for (unsigned int f = 0; f < face_list.size(); ++f)
+    {
+      const auto        &face    = face_list[f];
+      const unsigned int n_nodes = face.n_nodes();
+      Vec3<double>       x[6];
+      for (unsigned int v = 0; v < n_nodes; ++v)
+      {
+        node_list[face.node(v)].faces.push_back(f);
+        x[v] = node_list[face.node(v)].reference;
+      }
+      const unsigned int n_points =
+        dim == 2 ? line_rule.size() : triangle_rule.size();
+      for (unsigned int q = 0; q < n_points; ++q)
+      {
+        double       N[6] = {}, weight = 0;
+        Vec3<double> a[2] = {{{0, 0, 0}}, {{0, 0, 0}}}, xq{{0, 0, 0}};
+        if (dim == 2)
+        {
+          const double xi    = 2 * line_rule.point(q)[0] - 1;
+          const double dN[3] = {xi - 0.5, xi + 0.5, -2 * xi};
+          N[0]               = 0.5 * xi * (xi - 1.);
+          N[1]               = 0.5 * xi * (xi + 1.);
+          N[2]               = 1. - xi * xi;
+          for (unsigned int v = 0; v < 3; ++v)
+          {
+            xq   = xq + scale(N[v], x[v]);
+            a[0] = a[0] + scale(dN[v], x[v]);
+          }
+          weight = 2 * line_rule.weight(q) * norm(a[0]);
+        }
+        else
+        {
+          const Point<2> &p        = triangle_rule.point(q);
+          const double    L[3]     = {1 - p[0] - p[1], p[0], p[1]};
+          const double    dL[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
+          double          P2[6], dP2[6][2];
+          for (unsigned int v = 0; v < 3; ++v)
+          {
+            const unsigned int w = (v + 1) % 3;
+            P2[v]                = L[v] * (2 * L[v] - 1);
+            P2[3 + v]            = 4 * L[v] * L[w];
+            for (unsigned int k = 0; k < 2; ++k)
+            {
+              dP2[v][k]     = (4 * L[v] - 1) * dL[v][k];
+              dP2[3 + v][k] = 4 * (dL[v][k] * L[w] + L[v] * dL[w][k]);
+            }
+          }
+          for (unsigned int i = 0; i < 6; ++i)
+          {
+            xq = xq + scale(P2[i], x[i]);
+            for (unsigned int k = 0; k < 2; ++k)
+              a[k] = a[k] + scale(dP2[i][k], x[i]);
+          }
+          // The modified basis: a vertex takes alpha of both its edges'
+          // middle functions.
+          for (unsigned int v = 0; v < 3; ++v)
+            N[v] = P2[v] + alpha * (P2[3 + v] + P2[3 + (v + 2) % 3]);
+          for (unsigned int e = 0; e < 3; ++e)
+            N[3 + e] = (1 - 2 * alpha) * P2[3 + e];
+          weight = triangle_rule.weight(q) * norm(cross(a[0], a[1]));
+        }
+        const double ring = axisymmetric ? 2 * numbers::PI * xq[0] : 1.;
+        for (unsigned int v = 0; v < n_nodes; ++v)
+        {
+          node_list[face.node(v)].area += N[v] * weight * ring;
+          node_list[face.node(v)].size += weight;
+        }
+      }
+    }
     for (auto &node : node_list)
     {
       node.size /= node.faces.size();

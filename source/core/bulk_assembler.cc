@@ -21,7 +21,8 @@ namespace tribos
       AssemblyScratch(const Kinematics<dim>     &kinematics,
                       const Quadrature<dim - 1> &face_quadrature)
         : kinematics(kinematics.clone())
-        , fe_face_values(kinematics.values().get_fe(),
+        , fe_face_values(kinematics.values().get_mapping(),
+                         kinematics.values().get_fe(),
                          face_quadrature,
                          update_values | update_quadrature_points |
                            update_JxW_values)
@@ -215,6 +216,7 @@ namespace tribos
   template <int dim>
   BulkAssembler<dim>::BulkAssembler(const Parameters::AllParameters &parameters,
                                     const DoFHandler<dim>     &dof_handler,
+                                    const Mapping<dim>        &mapping,
                                     const FESystem<dim>       &fe,
                                     const Quadrature<dim>     &quadrature,
                                     const Quadrature<dim - 1> &face_quadrature,
@@ -227,7 +229,8 @@ namespace tribos
     , face_quadrature(face_quadrature)
     , materials(materials)
     , mpi_communicator(mpi_communicator)
-    , kinematics(create_kinematics(parameters.finite_element, fe, quadrature))
+    , kinematics(
+        create_kinematics(parameters.finite_element, mapping, fe, quadrature))
   {
     const auto &bc = parameters.boundary_conditions;
     for (const auto &c : bc.neumann)

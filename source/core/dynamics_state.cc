@@ -84,12 +84,10 @@ namespace tribos
 
     if (!ts.initial_velocities.empty())
     {
-      const auto &cell_kind = dof_handler.get_fe().reference_cell();
       std::map<types::global_dof_index, Point<dim>> points;
-      DoFTools::map_dofs_to_support_points(
-        cell_kind.template get_default_linear_mapping<dim>(),
-        dof_handler,
-        points);
+      DoFTools::map_dofs_to_support_points(*layout.mapping,
+                                           dof_handler,
+                                           points);
       std::map<types::material_id, std::unique_ptr<FunctionParser<dim>>>
         functions;
       for (const auto &v : ts.initial_velocities)
@@ -195,7 +193,8 @@ namespace tribos
                              const FullMatrix<double> &)> &f) const
   {
     const auto                          &fe = *layout.fe;
-    FEValues<dim>                        fe_values(fe,
+    FEValues<dim>                        fe_values(*layout.mapping,
+                            fe,
                             *layout.quadrature,
                             update_values | update_JxW_values |
                               update_quadrature_points);

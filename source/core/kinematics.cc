@@ -6,9 +6,11 @@
 namespace tribos
 {
   template <int dim>
-  Kinematics<dim>::Kinematics(const FiniteElement<dim> &fe,
+  Kinematics<dim>::Kinematics(const Mapping<dim>       &mapping,
+                              const FiniteElement<dim> &fe,
                               const Quadrature<dim>    &quadrature)
-    : fe_values(fe,
+    : fe_values(mapping,
+                fe,
                 quadrature,
                 update_values | update_gradients | update_quadrature_points |
                   update_JxW_values)
@@ -36,6 +38,7 @@ namespace tribos
   StandardKinematics<dim>::clone() const
   {
     return std::make_unique<StandardKinematics<dim>>(
+      this->fe_values.get_mapping(),
       this->fe_values.get_fe(),
       this->fe_values.get_quadrature());
   }
@@ -126,10 +129,12 @@ namespace tribos
 
 
   template <int dim>
-  FBarKinematics<dim>::FBarKinematics(const FiniteElement<dim> &fe,
+  FBarKinematics<dim>::FBarKinematics(const Mapping<dim>       &mapping,
+                                      const FiniteElement<dim> &fe,
                                       const Quadrature<dim>    &quadrature)
-    : StandardKinematics<dim>(fe, quadrature)
-    , centre(fe,
+    : StandardKinematics<dim>(mapping, fe, quadrature)
+    , centre(mapping,
+             fe,
              fe.reference_cell().template get_gauss_type_quadrature<dim>(1),
              update_values | update_gradients | update_quadrature_points)
     , centre_gradients(1, std::vector<Tensor<1, dim>>(dim))
@@ -143,6 +148,7 @@ namespace tribos
   FBarKinematics<dim>::clone() const
   {
     return std::make_unique<FBarKinematics<dim>>(
+      this->fe_values.get_mapping(),
       this->fe_values.get_fe(),
       this->fe_values.get_quadrature());
   }
@@ -232,7 +238,8 @@ namespace tribos
   std::unique_ptr<Kinematics<2>>
   AxisymmetricKinematics::clone() const
   {
-    return std::make_unique<AxisymmetricKinematics>(fe_values.get_fe(),
+    return std::make_unique<AxisymmetricKinematics>(fe_values.get_mapping(),
+                                                    fe_values.get_fe(),
                                                     fe_values.get_quadrature());
   }
 
@@ -358,10 +365,12 @@ namespace tribos
 
 
   AxisymmetricFBarKinematics::AxisymmetricFBarKinematics(
+    const Mapping<2>       &mapping,
     const FiniteElement<2> &fe,
     const Quadrature<2>    &quadrature)
-    : AxisymmetricKinematics(fe, quadrature)
-    , centre(fe,
+    : AxisymmetricKinematics(mapping, fe, quadrature)
+    , centre(mapping,
+             fe,
              fe.reference_cell().template get_gauss_type_quadrature<2>(1),
              update_values | update_gradients | update_quadrature_points)
     , centre_gradients(1, std::vector<Tensor<1, 2>>(2))
@@ -375,6 +384,7 @@ namespace tribos
   AxisymmetricFBarKinematics::clone() const
   {
     return std::make_unique<AxisymmetricFBarKinematics>(
+      fe_values.get_mapping(),
       fe_values.get_fe(),
       fe_values.get_quadrature());
   }
@@ -469,6 +479,7 @@ namespace tribos
   template <int dim>
   std::unique_ptr<Kinematics<dim>>
   create_kinematics(const Parameters::FiniteElement &parameters,
+                    const Mapping<dim>              &mapping,
                     const FiniteElement<dim>        &fe,
                     const Quadrature<dim>           &quadrature)
   {
@@ -476,12 +487,16 @@ namespace tribos
       if (parameters.axisymmetric)
       {
         if (parameters.f_bar)
-          return std::make_unique<AxisymmetricFBarKinematics>(fe, quadrature);
-        return std::make_unique<AxisymmetricKinematics>(fe, quadrature);
+          return std::make_unique<AxisymmetricFBarKinematics>(mapping,
+                                                              fe,
+                                                              quadrature);
+        return std::make_unique<AxisymmetricKinematics>(mapping,
+                                                        fe,
+                                                        quadrature);
       }
     if (parameters.f_bar)
-      return std::make_unique<FBarKinematics<dim>>(fe, quadrature);
-    return std::make_unique<StandardKinematics<dim>>(fe, quadrature);
+      return std::make_unique<FBarKinematics<dim>>(mapping, fe, quadrature);
+    return std::make_unique<StandardKinematics<dim>>(mapping, fe, quadrature);
   }
 
 
@@ -494,10 +509,12 @@ namespace tribos
   template class FBarKinematics<3>;
   template std::unique_ptr<Kinematics<2>>
   create_kinematics(const Parameters::FiniteElement &,
+                    const Mapping<2> &,
                     const FiniteElement<2> &,
                     const Quadrature<2> &);
   template std::unique_ptr<Kinematics<3>>
   create_kinematics(const Parameters::FiniteElement &,
+                    const Mapping<3> &,
                     const FiniteElement<3> &,
                     const Quadrature<3> &);
 } // namespace tribos

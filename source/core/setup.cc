@@ -82,8 +82,9 @@ namespace tribos
   namespace
   {
     /**
-     * The scene into the empty @p triangulation: as its generator makes it,
-     * or with every cell split into simplices (Finite element/Cells).
+     * The scene into the empty @p triangulation: as its generator makes it
+     * (with a second-order mesh's curved geometry into @p curved), or with
+     * every cell split into simplices (Finite element/Cells).
      * @p check_size gets the scene's unrefined cell count: before a
      * refined mesh is built (from the scene built at level 0), or at
      * Scene/Refinement = 0 from the mesh itself (not built twice).
@@ -92,6 +93,7 @@ namespace tribos
     void
     create_scene(const Parameters::AllParameters &parameters,
                  Triangulation<dim>              &triangulation,
+                 CurvedCells<dim>                &curved,
                  const SizeCheck                 &check_size)
     {
       const auto        &scene      = *parameters.scene.geometry;
@@ -104,15 +106,21 @@ namespace tribos
       }
       if (!parameters.finite_element.split_into_simplices)
       {
-        scene.create(refinement, triangulation);
+        scene.create_curved(refinement, triangulation, curved);
         if (refinement == 0)
           check_size(triangulation.n_active_cells());
         return;
       }
       Triangulation<dim> cells;
-      scene.create(refinement, cells);
+      scene.create_curved(refinement, cells, curved);
       if (refinement == 0)
         check_size(cells.n_active_cells());
+      AssertThrow(curved.empty(),
+                  ExcMessage("Parameter <Finite element/Cells> = simplices "
+                             "splits straight cells; the mesh of the scene "
+                             "has second-order (curved) cells. Mesh the "
+                             "body with triangles or tetrahedra in gmsh "
+                             "instead."));
       AssertThrow(cells.all_reference_cells_are_hyper_cube(),
                   ExcMessage("Parameter <Finite element/Cells> = simplices "
                              "splits quadrilaterals and hexahedra; the mesh "
@@ -143,11 +151,13 @@ namespace tribos
     const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights)
   {
     TimerOutput::Scope t(timer, "setup");
+    curved_cells = {};
     if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
     {
       const double memory = machines_memory();
       create_scene(parameters,
                    triangulation,
+                   curved_cells,
                    [&](const unsigned int n) { check_mesh_size(n, memory); });
     }
     else
@@ -203,6 +213,7 @@ namespace tribos
     // Collective, so before the first process builds the scene.
     const double       memory = machines_memory();
     Triangulation<dim> serial;
+    CurvedCells<dim>   serial_curved;
     std::string        error;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     {
@@ -210,6 +221,7 @@ namespace tribos
       {
         create_scene(parameters,
                      serial,
+                     serial_curved,
                      [&](const unsigned int n) { check_mesh_size(n, memory); });
       }
       catch (const ExceptionBase &e)
@@ -312,6 +324,7 @@ namespace tribos
                 cell->vertex(v)[d] = x[next++];
       }
     }
+    distribute_curved_cells(serial, serial_curved);
   }
 
 
@@ -348,6 +361,7 @@ namespace tribos
     owned_per_process =
       Utilities::MPI::all_gather(mpi_communicator, locally_owned_dofs);
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    setup_geometry();
 
     const auto &bc = parameters.boundary_conditions;
     dirichlet_functions.clear();
@@ -376,6 +390,7 @@ namespace tribos
                                                           mpi_communicator);
     bulk_assembler = std::make_unique<BulkAssembler<dim>>(parameters,
                                                           dof_handler,
+                                                          mapping(),
                                                           *fe,
                                                           quadrature,
                                                           face_quadrature,
@@ -391,7 +406,8 @@ namespace tribos
         { return material_state->youngs_modulus(body); },
         locally_owned_dofs,
         mpi_communicator,
-        parameters.finite_element.axisymmetric);
+        parameters.finite_element.axisymmetric,
+        curved_mapping.get());
       // Contact couples this process's slave nodes to master nodes
       // anywhere: the constraints and the pattern know every contact dof.
       // The solution is ghosted on the slave nodes this process reads; the
@@ -481,7 +497,8 @@ namespace tribos
     {
       std::vector<types::global_dof_index> indices(fe->n_dofs_per_cell());
       double                               volume = 0, E_max = 0;
-      FEValues<dim>                        fe_values(*fe,
+      FEValues<dim>                        fe_values(mapping(),
+                              *fe,
                               quadrature,
                               update_JxW_values | update_quadrature_points);
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -538,6 +555,7 @@ namespace tribos
            "true removes both.");
     typename DynamicsState<dim>::Layout layout;
     layout.dof_handler   = &dof_handler;
+    layout.mapping       = &mapping();
     layout.fe            = fe.get();
     layout.quadrature    = &quadrature;
     layout.owned         = locally_owned_dofs;

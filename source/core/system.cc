@@ -6,6 +6,7 @@
 
 #include <tribos/base/import_constraints.h>
 #include <tribos/core/problem.h>
+#include <tribos/core/symmetry_constraints.h>
 
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -60,90 +61,6 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::fix_symmetry_corners(const std::set<types::boundary_id> &ids,
-                                     AffineConstraints<double> &symmetry) const
-  {
-    // The unit normals of the symmetry faces at each vertex (named by its
-    // first dof, with all its dofs), from the faces' first three corners
-    // (flat faces).
-    std::map<types::global_dof_index,
-             std::pair<std::vector<types::global_dof_index>,
-                       std::vector<Tensor<1, dim>>>>
-      vertices;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()) == 1)
-          {
-            const auto     face = cell->face(f);
-            Tensor<1, dim> normal;
-            if constexpr (dim == 3)
-              normal = cross_product_3d(face->vertex(1) - face->vertex(0),
-                                        face->vertex(2) - face->vertex(0));
-            if (normal.norm() == 0)
-              continue;
-            normal /= normal.norm();
-            for (const auto v : face->vertex_indices())
-            {
-              auto &vertex = vertices[face->vertex_dof_index(v, 0)];
-              if (vertex.first.empty())
-                for (unsigned int d = 0; d < dim; ++d)
-                  vertex.first.push_back(face->vertex_dof_index(v, d));
-              vertex.second.push_back(normal);
-            }
-          }
-    // A vertex where three independent symmetry planes meet is fixed: its
-    // faces' normals fall into at least three directions (apart by more
-    // than 18 degrees, so that the facets of a curved surface do not count)
-    // that span space.
-    std::set<types::global_dof_index> corner_dofs;
-    for (const auto &[first, vertex] : vertices)
-    {
-      std::vector<Tensor<1, dim>> directions;
-      for (const auto &n : vertex.second)
-        if (std::none_of(directions.begin(),
-                         directions.end(),
-                         [&n](const Tensor<1, dim> &d)
-                         { return std::abs(d * n) > 0.95; }))
-          directions.push_back(n);
-      bool corner = false;
-      for (unsigned int a = 0; a < directions.size() && !corner; ++a)
-        for (unsigned int b = a + 1; b < directions.size() && !corner; ++b)
-          for (unsigned int c = b + 1; c < directions.size() && !corner; ++c)
-          {
-            Tensor<2, dim> m;
-            for (unsigned int d = 0; d < dim; ++d)
-            {
-              m[0][d]       = directions[a][d];
-              m[1][d]       = directions[b][d];
-              m[2 % dim][d] = directions[c][d];
-            }
-            corner = std::abs(determinant(m)) > 0.05;
-          }
-      if (corner)
-        corner_dofs.insert(vertex.first.begin(), vertex.first.end());
-    }
-    if (Utilities::MPI::max(corner_dofs.empty() ? 0 : 1, mpi_communicator) == 0)
-      return;
-    AffineConstraints<double> fixed(symmetry.get_local_lines());
-    for (const auto &line : symmetry.get_lines())
-      if (corner_dofs.count(line.index) == 0)
-      {
-        fixed.add_line(line.index);
-        fixed.add_entries(line.index, line.entries);
-        fixed.set_inhomogeneity(line.index, line.inhomogeneity);
-      }
-    for (const auto dof : corner_dofs)
-      fixed.add_line(dof);
-    fixed.close();
-    symmetry.copy_from(fixed);
-  }
-
-
-
-  template <int dim>
-  void
   Problem<dim>::make_constraints(const double               time,
                                  const bool                 homogeneous,
                                  AffineConstraints<double> &constraints) const
@@ -172,7 +89,8 @@ namespace tribos
           return function.value(p, k);
         };
         VectorFunctionFromScalarFunctionObject<dim> component(scalar, d, dim);
-        VectorTools::interpolate_boundary_values(dof_handler,
+        VectorTools::interpolate_boundary_values(mapping(),
+                                                 dof_handler,
                                                  c.boundary_id,
                                                  component,
                                                  values,
@@ -193,15 +111,18 @@ namespace tribos
       AffineConstraints<double>          symmetry(system_coupled);
       const std::set<types::boundary_id> ids(bc.symmetry.begin(),
                                              bc.symmetry.end());
-      VectorTools::compute_no_normal_flux_constraints(
-        dof_handler,
-        0,
-        ids,
-        symmetry,
-        fe->reference_cell().template get_default_linear_mapping<dim>());
+      // Hexahedra and quadrilaterals: deal.II's constraints. Simplices:
+      // tribos's, which group the faces' normals by direction, not by cell
+      // (make_symmetry_constraints()).
+      if (triangulation.all_reference_cells_are_hyper_cube())
+        VectorTools::compute_no_normal_flux_constraints(dof_handler,
+                                                        0,
+                                                        ids,
+                                                        symmetry,
+                                                        mapping());
+      else
+        make_symmetry_constraints(mapping(), dof_handler, ids, symmetry);
       symmetry.close();
-      if (dim == 3 && !triangulation.all_reference_cells_are_hyper_cube())
-        fix_symmetry_corners(ids, symmetry);
       // Merging substitutes the symmetry lines into the hanging-node lines
       // that refer to them. On a distributed mesh the outer faces of the
       // ghost layer are boundary faces with id 0 of the local mesh, so a
@@ -245,10 +166,7 @@ namespace tribos
   {
     // The support points of the dofs (reference configuration).
     std::map<types::global_dof_index, Point<dim>> points;
-    DoFTools::map_dofs_to_support_points(
-      fe->reference_cell().template get_default_linear_mapping<dim>(),
-      dof_handler,
-      points);
+    DoFTools::map_dofs_to_support_points(mapping(), dof_handler, points);
     // About the centroid of all support points (every process the same).
     Tensor<1, dim> sum;
     for (const auto dof : locally_owned_dofs)

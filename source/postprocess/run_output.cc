@@ -290,8 +290,7 @@ namespace tribos
         // deal.II's simplex Gauss rules go up to 4 points per direction
         // (exact for degree 7).
         cell_kind.is_simplex() ? 4 : parameters.finite_element.degree + 3);
-    const Mapping<dim> &mapping =
-      cell_kind.template get_default_linear_mapping<dim>();
+    const Mapping<dim>   &mapping = problem.mapping();
     dealii::Vector<float> cellwise(triangulation.n_active_cells());
     VectorTools::integrate_difference(mapping,
                                       dof_handler,

@@ -256,8 +256,13 @@ namespace tribos
       data_out.add_data_vector(cells.subdomain, "subdomain");
     // Simplices: one patch per cell; with P2 deal.II 9.4 writes quadratic
     // triangles and tetrahedra (VTK types 22 and 24: the fields at the
-    // edge middles too; the geometry is the mesh's straight-sided one).
-    if (problem.get_triangulation().all_reference_cells_are_hyper_cube())
+    // edge middles too). Curved cells (a second-order mesh): the patches'
+    // points where the mapping puts them, inside the bodies too.
+    if (problem.curved())
+      data_out.build_patches(problem.mapping(),
+                             parameters.finite_element.degree,
+                             DataOut<dim>::curved_inner_cells);
+    else if (problem.get_triangulation().all_reference_cells_are_hyper_cube())
       data_out.build_patches(parameters.finite_element.degree);
     else
       data_out.build_patches(problem.get_fe()

@@ -1,9 +1,10 @@
 /**
  * Scene "gmsh": a mesh file of quadrilaterals or hexahedra, or of
- * triangles or tetrahedra.
+ * triangles or tetrahedra, first- or second-order.
  */
 
 #include <tribos/base/text.h>
+#include <tribos/scene/gmsh_second_order.h>
 #include <tribos/scene/mesh_tools.h>
 #include <tribos/scene/scene.h>
 
@@ -27,7 +28,8 @@ namespace tribos
     void
     read_gmsh(const GmshScene    &p,
               const unsigned int  refinement,
-              Triangulation<dim> &tria);
+              Triangulation<dim> &tria,
+              CurvedCells<dim>   *curved);
 
 
 
@@ -51,12 +53,29 @@ namespace tribos
         mesh_file = prm.get("Mesh file");
       }
 
-      /** The scene in dim dimensions. */
+      /** The scene in dim dimensions (a second-order mesh's cells
+       * straight). */
       template <int dim>
       void
       build(const unsigned int refinement, Triangulation<dim> &tria) const
       {
-        read_gmsh(*this, refinement, tria);
+        read_gmsh<dim>(*this, refinement, tria, nullptr);
+      }
+
+      void
+      create_curved(const unsigned int refinement,
+                    Triangulation<2>  &tria,
+                    CurvedCells<2>    &curved) const override
+      {
+        read_gmsh(*this, refinement, tria, &curved);
+      }
+
+      void
+      create_curved(const unsigned int refinement,
+                    Triangulation<3>  &tria,
+                    CurvedCells<3>    &curved) const override
+      {
+        read_gmsh(*this, refinement, tria, &curved);
       }
 
       std::string mesh_file;
@@ -151,13 +170,61 @@ namespace tribos
 
 
 
+    /** Refuse a mesh of more than one kind of cell: the finite element
+     * follows the kind (FE_Q or FE_SimplexP). */
+    template <int dim>
+    void
+    check_one_kind(const std::string &file, const Triangulation<dim> &tria)
+    {
+      AssertThrow(tria.all_reference_cells_are_hyper_cube() ||
+                    tria.all_reference_cells_are_simplex(),
+                  ExcMessage(
+                    "Parameter <Scene/Mesh file> = <" + file +
+                    ">: the mesh mixes triangles or tetrahedra with "
+                    "quadrilaterals or hexahedra (or has prisms or "
+                    "pyramids). tribos takes one kind of cell per mesh: in "
+                    "gmsh, 'Mesh.RecombineAll = 1;' with "
+                    "'Mesh.SubdivisionAlgorithm = 1;' (2D) or '= 2;' (3D) "
+                    "leaves quadrilaterals or hexahedra only; without "
+                    "recombination the mesh is all triangles or "
+                    "tetrahedra."));
+    }
+
+
+
+    /** A second-order mesh file's cells and (@p curved, if not null) their
+     * curved geometry; false if @p file is first-order. */
+    template <int dim>
+    bool
+    read_second_order(const std::string  &file,
+                      const unsigned int  refinement,
+                      Triangulation<dim> &tria,
+                      CurvedCells<dim>   *curved)
+    {
+      std::vector<std::vector<Point<dim>>> coarse;
+      if (!GmshSecondOrder::read(file, tria, coarse))
+        return false;
+      check_one_kind(file, tria);
+      if (curved != nullptr)
+        curved->support_points =
+          GmshSecondOrder::refine(tria, refinement, coarse);
+      else
+        tria.refine_global(refinement);
+      return true;
+    }
+
+
+
     template <int dim>
     void
     read_gmsh(const GmshScene    &p,
               const unsigned int  refinement,
-              Triangulation<dim> &tria)
+              Triangulation<dim> &tria,
+              CurvedCells<dim>   *curved)
     {
       check_gmsh_file(p.mesh_file);
+      if (read_second_order(p.mesh_file, refinement, tria, curved))
+        return;
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(tria);
       std::ifstream input(p.mesh_file);
@@ -182,9 +249,9 @@ namespace tribos
                         "Parameter <Scene/Mesh file> = <" + p.mesh_file +
                         ">: the mesh has " + gmsh_element_name(type) +
                         ", which tribos does not read. It takes "
-                        "first-order cells (quadrilaterals or triangles in "
-                        "2D, hexahedra or tetrahedra in 3D): mesh with "
-                        "'Mesh.ElementOrder = 1;'."));
+                        "quadrilaterals or triangles in 2D, hexahedra or "
+                        "tetrahedra in 3D, of order 1 or 2: mesh with "
+                        "'Mesh.ElementOrder = 1;' or '= 2;'."));
         }
         std::string        first_line;
         std::istringstream lines(what);
@@ -195,20 +262,7 @@ namespace tribos
                       "Parameter <Scene/Mesh file> = <" + p.mesh_file +
                       ">: deal.II cannot read the mesh: " + first_line));
       }
-      // One kind of cell: the finite element follows it (FE_Q or
-      // FE_SimplexP).
-      AssertThrow(tria.all_reference_cells_are_hyper_cube() ||
-                    tria.all_reference_cells_are_simplex(),
-                  ExcMessage(
-                    "Parameter <Scene/Mesh file> = <" + p.mesh_file +
-                    ">: the mesh mixes triangles or tetrahedra with "
-                    "quadrilaterals or hexahedra (or has prisms or "
-                    "pyramids). tribos takes one kind of cell per mesh: in "
-                    "gmsh, 'Mesh.RecombineAll = 1;' with "
-                    "'Mesh.SubdivisionAlgorithm = 1;' (2D) or '= 2;' (3D) "
-                    "leaves quadrilaterals or hexahedra only; without "
-                    "recombination the mesh is all triangles or "
-                    "tetrahedra."));
+      check_one_kind(p.mesh_file, tria);
       tria.refine_global(refinement);
     }
   } // namespace

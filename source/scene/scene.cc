@@ -90,6 +90,26 @@ namespace tribos
 
 
 
+  void
+  SceneGeometry::create_curved(const unsigned int refinement,
+                               Triangulation<2>  &triangulation,
+                               CurvedCells<2> &) const
+  {
+    create(refinement, triangulation);
+  }
+
+
+
+  void
+  SceneGeometry::create_curved(const unsigned int refinement,
+                               Triangulation<3>  &triangulation,
+                               CurvedCells<3> &) const
+  {
+    create(refinement, triangulation);
+  }
+
+
+
   template <int dim>
   void
   merge_bodies(const std::vector<const Triangulation<dim> *> &bodies,

@@ -42,7 +42,8 @@ namespace tribos
       const std::function<double(types::material_id)> &youngs_modulus,
       const IndexSet                                  &locally_owned_dofs,
       const MPI_Comm                                   mpi_communicator,
-      const bool                                       axisymmetric = false);
+      const bool                                       axisymmetric = false,
+      const Mapping<dim> *curved_geometry                           = nullptr);
 
     /**
      * The dofs of every contact node. Contact may couple a slave node with

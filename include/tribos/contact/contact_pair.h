@@ -136,9 +136,10 @@ namespace tribos
 
   /**
    * The pairs of Contact/Pairs (two-pass: with the swapped ones), their
-   * surfaces, moduli and enforcements, on @p dof_handler; @p youngs_modulus
-   * gives each body's E. The enforcements' unknowns are numbered from
-   * dof_handler.n_dofs() on; @p n_unknowns gets their number and
+   * surfaces, moduli and enforcements, on @p dof_handler (the cells'
+   * curved geometry @p curved_geometry, null if they are straight);
+   * @p youngs_modulus gives each body's E. The enforcements' unknowns are
+   * numbered from dof_handler.n_dofs() on; @p n_unknowns gets their number and
    * @p contact_dofs every dof of a contact surface.
    *
    * With unknowns per node (multipliers), a slave node whose rows would
@@ -159,6 +160,7 @@ namespace tribos
     const std::function<double(types::material_id)> &youngs_modulus,
     const IndexSet                                  &locally_owned_dofs,
     const bool                                       axisymmetric,
+    const Mapping<dim>                              *curved_geometry,
     types::global_dof_index                         &n_unknowns,
     IndexSet                                        &contact_dofs);
 

@@ -6,6 +6,7 @@
 
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/cell_id.h>
 
 #include <array>
@@ -115,11 +116,16 @@ namespace tribos
 
     /**
      * With @p axisymmetric (2D, x = r) the tributary areas are those of the
-     * surface of revolution, the integral of N_k 2 pi r.
+     * surface of revolution, the integral of N_k 2 pi r. With
+     * @p curved_geometry (the mapping of a second-order mesh's curved
+     * cells; quadratic elements) the faces' middle nodes are where it puts
+     * them, and the areas are integrals over the curved faces; without,
+     * the faces are straight (middles at the chords' midpoints).
      */
     ContactSurface(const DoFHandler<dim>              &dof_handler,
                    const std::set<types::boundary_id> &boundary_ids,
-                   const bool                          axisymmetric = false);
+                   const bool                          axisymmetric = false,
+                   const Mapping<dim> *curved_geometry              = nullptr);
 
     /** The boundary ids this surface is made of. */
     const std::set<types::boundary_id> &
@@ -201,7 +207,8 @@ namespace tribos
     /** The oriented faces of the own cells of @p dof_handler on the
      * surface, gathered from every process in CellId order. Collective. */
     std::vector<FaceRecord>
-    gather_faces(const DoFHandler<dim> &dof_handler) const;
+    gather_faces(const DoFHandler<dim> &dof_handler,
+                 const Mapping<dim>    *curved_geometry) const;
 
     /** The faces and their nodes from @p records. */
     void
@@ -211,6 +218,12 @@ namespace tribos
      * of revolution) and element sizes. */
     void
     integrate_areas(const bool axisymmetric);
+
+    /** integrate_areas() on curved quadratic faces: the integrals of the
+     * faces' functions (the six-node triangle's modified basis) over the
+     * curved faces. */
+    void
+    integrate_curved_areas(const bool axisymmetric);
 
     /** The faces' neighbours, the edges where the surface continues, and
      * (2D) the nodes beyond a face's ends. */
@@ -222,6 +235,7 @@ namespace tribos
     std::vector<Face>            face_list;
     std::set<types::material_id> body_ids;
     bool                         is_quadratic = false;
+    bool                         is_curved    = false;
   };
 } // namespace tribos
 

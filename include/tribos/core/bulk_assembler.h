@@ -58,10 +58,12 @@ namespace tribos
     /**
      * The loads of Boundary conditions (Neumann, Body force) and the
      * @p kinematics' variant for @p fe with @p quadrature on the cells of
-     * @p dof_handler, whose materials and history are @p materials.
+     * @p dof_handler (their reference geometry @p mapping), whose materials
+     * and history are @p materials.
      */
     BulkAssembler(const Parameters::AllParameters &parameters,
                   const DoFHandler<dim>           &dof_handler,
+                  const Mapping<dim>              &mapping,
                   const FESystem<dim>             &fe,
                   const Quadrature<dim>           &quadrature,
                   const Quadrature<dim - 1>       &face_quadrature,

@@ -49,9 +49,11 @@ namespace tribos
     /** The dofs and index sets of the problem, what the state lives on. */
     struct Layout
     {
-      const DoFHandler<dim>    *dof_handler = nullptr;
-      const FiniteElement<dim> *fe          = nullptr;
-      const Quadrature<dim>    *quadrature  = nullptr;
+      const DoFHandler<dim> *dof_handler = nullptr;
+      /** The cells' reference geometry. */
+      const Mapping<dim>       *mapping    = nullptr;
+      const FiniteElement<dim> *fe         = nullptr;
+      const Quadrature<dim>    *quadrature = nullptr;
       IndexSet                  owned, relevant, system_owned;
       /** Vector component and body of every dof. */
       const std::vector<unsigned char>      *dof_component = nullptr;

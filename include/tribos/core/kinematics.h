@@ -70,7 +70,11 @@ namespace tribos
     using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
     using Vector       = TrilinosWrappers::MPI::Vector;
 
-    Kinematics(const FiniteElement<dim> &fe, const Quadrature<dim> &quadrature);
+    /** On the cells of the reference geometry @p mapping (the mesh's
+     * straight cells, or the curved ones of a second-order mesh). */
+    Kinematics(const Mapping<dim>       &mapping,
+               const FiniteElement<dim> &fe,
+               const Quadrature<dim>    &quadrature);
 
     virtual ~Kinematics() = default;
 
@@ -188,7 +192,8 @@ namespace tribos
   class FBarKinematics : public StandardKinematics<dim>
   {
   public:
-    FBarKinematics(const FiniteElement<dim> &fe,
+    FBarKinematics(const Mapping<dim>       &mapping,
+                   const FiniteElement<dim> &fe,
                    const Quadrature<dim>    &quadrature);
 
     std::unique_ptr<Kinematics<dim>>
@@ -286,7 +291,8 @@ namespace tribos
   class AxisymmetricFBarKinematics : public AxisymmetricKinematics
   {
   public:
-    AxisymmetricFBarKinematics(const FiniteElement<2> &fe,
+    AxisymmetricFBarKinematics(const Mapping<2>       &mapping,
+                               const FiniteElement<2> &fe,
                                const Quadrature<2>    &quadrature);
 
     std::unique_ptr<Kinematics<2>>
@@ -316,10 +322,11 @@ namespace tribos
 
 
   /** The kinematics of @p parameters (Axisymmetric, F-bar) for @p fe with
-   * @p quadrature. */
+   * @p quadrature on the cells of @p mapping. */
   template <int dim>
   std::unique_ptr<Kinematics<dim>>
   create_kinematics(const Parameters::FiniteElement &parameters,
+                    const Mapping<dim>              &mapping,
                     const FiniteElement<dim>        &fe,
                     const Quadrature<dim>           &quadrature);
 } // namespace tribos

@@ -7,6 +7,7 @@
 #include <tribos/core/dynamics_state.h>
 #include <tribos/core/material_state.h>
 #include <tribos/parameters/all_parameters.h>
+#include <tribos/scene/scene.h>
 #include <tribos/solver/linear_solver.h>
 #include <tribos/solver/load_stepper.h>
 
@@ -17,6 +18,7 @@
 #include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/cell_id.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -161,17 +163,6 @@ namespace tribos
      * steps): a clear error before any output is touched. */
     void
     check_checkpoint(const Checkpoint &checkpoint) const;
-    /**
-     * At a vertex where three independent symmetry planes meet, every
-     * displacement component is zero; deal.II 9.4's no-normal-flux
-     * constraints leave one direction free there on linear tetrahedra
-     * (the corner of a split cube's three planes: u_y = u_x, u_z = -u_x).
-     * Called on tetrahedral meshes only (on hexahedra deal.II fixes such
-     * corners itself).
-     */
-    void
-    fix_symmetry_corners(const std::set<types::boundary_id> &ids,
-                         AffineConstraints<double>          &symmetry) const;
     /** The memory of the machines the processes run on (collective). */
     double
     machines_memory() const;
@@ -231,6 +222,20 @@ namespace tribos
     get_fe() const
     {
       return *fe;
+    }
+    /**
+     * The cells' reference geometry, for every evaluation on them: the
+     * curved cells of a second-order mesh with Polynomial degree = 2
+     * (MappingFEField on the dofs' reference positions), else the mesh's
+     * straight cells (the linear mapping of its cell kind).
+     */
+    const Mapping<dim> &
+    mapping() const;
+    /** Whether the cells are curved (mapping()). */
+    bool
+    curved() const
+    {
+      return curved_mapping != nullptr;
     }
     const IndexSet &
     owned_dofs() const
@@ -338,8 +343,22 @@ namespace tribos
     void
     create_distributed_scene(
       const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights);
+    /** Hand every process the curved geometry of its own cells from the
+     * first process's @p serial mesh and its @p serial_curved cells (a
+     * distributed mesh of a second-order file). */
+    void
+    distribute_curved_cells(const Triangulation<dim> &serial,
+                            const CurvedCells<dim>   &serial_curved);
     void
     setup_system();
+    /** The curved geometry on the dofs (with Polynomial degree = 2; degree
+     * 1 drops it with a warning): reference_positions and the mapping. */
+    void
+    setup_geometry();
+    /** Refuse a curved cell whose map folds it (a mid-side node far off
+     * its edge): det J <= 0 at a quadrature point or node. */
+    void
+    check_curved_cells() const;
     /** The system's index sets, with the multipliers of the contact. */
     void
     setup_unknowns();
@@ -402,6 +421,13 @@ namespace tribos
     parallel::TriangulationBase<dim>                 &triangulation;
     std::unique_ptr<FESystem<dim>>                    fe;
     DoFHandler<dim>                                   dof_handler;
+    /** A second-order mesh's curved geometry per active cell (own cells
+     * on a distributed mesh); empty: straight cells. */
+    CurvedCells<dim> curved_cells;
+    /** Curved cells: each dof's reference coordinate (its node's, in the
+     * dof's component), ghosted on the cells' dofs; the mapping on it. */
+    Vector                        reference_positions;
+    std::unique_ptr<Mapping<dim>> curved_mapping;
     /** Gauss rules of the mesh's cell kind (quadrilaterals and hexahedra:
      * tensor products; triangles and tetrahedra: the simplex rules) and of
      * its faces, set with the finite element (setup_system()). */

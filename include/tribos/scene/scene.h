@@ -2,6 +2,7 @@
 #define tribos_scene_scene_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
 
 #include <memory>
@@ -11,6 +12,28 @@
 namespace tribos
 {
   using namespace dealii;
+
+  /**
+   * The curved geometry of a mesh whose file has second-order cells (tri6,
+   * quad8, quad9, tet10, hex20, hex27; GmshSecondOrder): per active cell
+   * (by active_cell_index()), where the support points of the quadratic
+   * Lagrange element of its kind lie (FE_Q(2) on quadrilaterals and
+   * hexahedra, FE_SimplexP(2) on triangles and tetrahedra, in that
+   * element's order). A straight mesh has none.
+   */
+  template <int dim>
+  struct CurvedCells
+  {
+    std::vector<std::vector<Point<dim>>> support_points;
+
+    bool
+    empty() const
+    {
+      return support_points.empty();
+    }
+  };
+
+
 
   /**
    * A scene: a geometry generator that declares and reads its own
@@ -47,6 +70,20 @@ namespace tribos
     virtual void
     create(const unsigned int refinement,
            Triangulation<3>  &triangulation) const;
+
+    /**
+     * As create(), and the curved geometry of the mesh's cells into
+     * @p curved: only a second-order mesh file has one. The default leaves
+     * @p curved empty (the generators' meshes are flat after their merge).
+     */
+    virtual void
+    create_curved(const unsigned int refinement,
+                  Triangulation<2>  &triangulation,
+                  CurvedCells<2>    &curved) const;
+    virtual void
+    create_curved(const unsigned int refinement,
+                  Triangulation<3>  &triangulation,
+                  CurvedCells<3>    &curved) const;
 
     /** The scene's Scene/Name. */
     std::string name;

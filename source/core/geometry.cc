@@ -1,0 +1,167 @@
+/**
+ * The cells' reference geometry: a second-order mesh's curved cells
+ * handed to the processes, set on the dofs, checked, and the mapping every
+ * evaluation on the cells takes.
+ */
+
+#include <tribos/core/problem.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_fe_field.h>
+
+#include <sstream>
+
+namespace tribos
+{
+  template <int dim>
+  void
+  Problem<dim>::distribute_curved_cells(const Triangulation<dim> &serial,
+                                        const CurvedCells<dim>   &serial_curved)
+  {
+    // Every process asks for the support points of its own cells (by
+    // CellId, the same in the serial and the distributed mesh).
+    if (Utilities::MPI::broadcast(mpi_communicator, serial_curved.empty(), 0))
+      return;
+    std::vector<CellId::binary_type> mine;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        mine.push_back(cell->id().template to_binary<dim>());
+    const auto requests = Utilities::MPI::gather(mpi_communicator, mine, 0);
+    std::map<unsigned int, std::vector<double>> answers;
+    for (unsigned int rank = 0; rank < requests.size(); ++rank)
+      for (const auto &id : requests[rank])
+      {
+        const auto cell = serial.create_cell_iterator(CellId(id));
+        for (const auto &x :
+             serial_curved.support_points[cell->active_cell_index()])
+          for (unsigned int d = 0; d < dim; ++d)
+            answers[rank].push_back(x[d]);
+      }
+    const auto received =
+      Utilities::MPI::some_to_some(mpi_communicator, answers);
+    curved_cells.support_points.assign(triangulation.n_active_cells(), {});
+    if (mine.empty())
+      return;
+    const auto        &x    = received.at(0);
+    const unsigned int n    = x.size() / (dim * mine.size());
+    unsigned int       next = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        auto &points = curved_cells.support_points[cell->active_cell_index()];
+        points.resize(n);
+        for (auto &point : points)
+          for (unsigned int d = 0; d < dim; ++d)
+            point[d] = x[next++];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::setup_geometry()
+  {
+    curved_mapping.reset();
+    if (curved_cells.empty())
+      return;
+    if (parameters.finite_element.degree == 1)
+    {
+      warn("the mesh's cells are second-order (curved), and Finite "
+           "element/Polynomial degree = 1 takes their vertices only: the "
+           "cells are straight, a curved boundary is faceted. Polynomial "
+           "degree = 2 keeps the curved geometry.");
+      curved_cells = {};
+      return;
+    }
+    // Each dof's reference coordinate is its node's: the support point of
+    // the quadratic element (FE_Q(2), FE_SimplexP(2)) the dof's base
+    // function belongs to, in the dof's component.
+    Vector owned(locally_owned_dofs, mpi_communicator);
+    std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const auto &points =
+          curved_cells.support_points[cell->active_cell_index()];
+        AssertThrow(points.size() == fe->base_element(0).n_dofs_per_cell(),
+                    ExcInternalError());
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (locally_owned_dofs.is_element(dofs[i]))
+          {
+            const auto [component, base] = fe->system_to_component_index(i);
+            owned[dofs[i]]               = points[base][component];
+          }
+      }
+    owned.compress(VectorOperation::insert);
+    reference_positions.reinit(locally_owned_dofs,
+                               locally_relevant_dofs,
+                               mpi_communicator);
+    reference_positions = owned;
+    curved_mapping =
+      std::make_unique<MappingFEField<dim, dim, Vector>>(dof_handler,
+                                                         reference_positions);
+    check_curved_cells();
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::check_curved_cells() const
+  {
+    // The Jacobian of the curved map at the quadrature points and at the
+    // nodes: a mid-side node far off its edge folds the cell (det J <= 0),
+    // and nothing after this would say so.
+    std::vector<Point<dim>> points = quadrature.get_points();
+    for (const auto &p : fe->base_element(0).get_unit_support_points())
+      points.push_back(p);
+    FEValues<dim> fe_values(mapping(),
+                            *fe,
+                            Quadrature<dim>(points),
+                            update_jacobians | update_quadrature_points);
+    std::string   folded;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && folded.empty())
+      {
+        fe_values.reinit(cell);
+        for (unsigned int q = 0; q < points.size() && folded.empty(); ++q)
+          if (determinant(Tensor<2, dim>(fe_values.jacobian(q))) <= 0)
+          {
+            std::ostringstream where;
+            where << "the curved cell of body " << cell->material_id()
+                  << " with vertex 0 at (" << cell->vertex(0)
+                  << ") is folded (its map's Jacobian is not positive at ("
+                  << fe_values.quadrature_point(q) << "))";
+            folded = where.str();
+          }
+      }
+    for (const auto &message :
+         Utilities::MPI::all_gather(mpi_communicator, folded))
+      AssertThrow(message.empty(),
+                  ExcMessage("Parameter <Scene/Mesh file>: " + message +
+                             ": a mid-side node lies too far from the middle "
+                             "of its edge. Mesh again (in gmsh, "
+                             "'Mesh.HighOrderOptimize = 2;' untangles "
+                             "curved cells), or mesh with "
+                             "'Mesh.ElementOrder = 1;'."));
+  }
+
+
+
+  template <int dim>
+  const Mapping<dim> &
+  Problem<dim>::mapping() const
+  {
+    if (curved_mapping)
+      return *curved_mapping;
+    return fe->reference_cell().template get_default_linear_mapping<dim>();
+  }
+
+
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos
