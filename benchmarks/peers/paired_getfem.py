@@ -13,7 +13,10 @@ hertz_3d (tribos on parameters/hertz_3d_load.prm, its own hexahedral
 mesh; GetFEM on hertz_3d_20k.msh, first-order hexahedra, whose pressure
 error is the larger), hertz_3d_tet_p1 and hertz_3d_tet_p2 (issue 45:
 tests/hertz_3d_tet.msh for both codes, P1 and P2 tetrahedra; tribos with
-Lagrange multipliers). Both: small strain, frictionless rigid plane,
+Lagrange multipliers), hertz_3d_tet10_p2 and hertz_2d_tri6_p2 (the same
+meshes of second order, curved: tests/hertz_3d_tet10.msh and
+tests/hertz_2d_tri6.msh; P2, tribos with multipliers, GetFEM's integral
+contact). Both: small strain, frictionless rigid plane,
 touching start, the whole load in one step, default Newton settings;
 GetFEM's augmented Lagrangian (getfem_hertz.py), tribos's default method
 (penalty 100 E/h) unless --set says otherwise. Needs `import getfem`
@@ -23,7 +26,10 @@ Columns: case, runs, tribos_dofs, getfem_dofs, tribos_newton,
 getfem_newton, tribos_error, getfem_error, tribos_wall, getfem_wall
 (medians, s), ratio (tribos / GetFEM), tribos_in_process (the median of
 tribos's own wall_time of the last increment in history.csv: the run
-without loading the libraries and without writing the output).
+without loading the libraries and without writing the output),
+getfem_failures (GetFEM's runs whose Newton did not converge in its 50
+iterations: their times count, their error is not shown unless no run
+converged, "no convergence").
 """
 
 import argparse
@@ -47,6 +53,12 @@ from peer_runs import mesh, summary_value  # noqa: E402
 TET_MESH = os.path.join(ROOT, "tests", "hertz_3d_tet.msh")
 TET_SETS = ["Scene/Name=gmsh", "Scene/Mesh file=" + TET_MESH,
             "Contact/Method=lagrange multiplier"]
+# The same meshes of second order (-setnumber order 2): curved tet10 and
+# tri6, both codes on their curved geometry.
+TET10_MESH = os.path.join(ROOT, "tests", "hertz_3d_tet10.msh")
+TRI6_MESH = os.path.join(ROOT, "tests", "hertz_2d_tri6.msh")
+P2_SETS = ["Finite element/Polynomial degree=2",
+           "Contact/Method=lagrange multiplier"]
 
 # name: tribos parameter file, tribos mesh, GetFEM mesh, dim, R, E, nu,
 # symmetry factor, tribos settings, getfem_hertz.py arguments
@@ -68,6 +80,16 @@ CASES = {
                         None, TET_MESH, 3, 10.0, 2e5, 0.3, 4.0,
                         TET_SETS + ["Finite element/Polynomial degree=2"],
                         ["--order", "2", "--method", "integral"]),
+    # The curved second-order meshes (the rest of issue 45).
+    "hertz_3d_tet10_p2": (os.path.join(ROOT, "parameters",
+                                       "hertz_3d_load.prm"),
+                          None, TET10_MESH, 3, 10.0, 2e5, 0.3, 4.0,
+                          ["Scene/Name=gmsh", "Scene/Mesh file=" + TET10_MESH]
+                          + P2_SETS,
+                          ["--order", "2", "--method", "integral"]),
+    "hertz_2d_tri6_p2": ("hertz_2d_load.prm", None, TRI6_MESH, 2, 1.0, 1.0,
+                         0.3, 2.0, ["Scene/Mesh file=" + TRI6_MESH] + P2_SETS,
+                         ["--order", "2", "--method", "integral"]),
 }
 
 def run_tribos(tribos, case, folder, sets):
@@ -101,16 +123,27 @@ def run_getfem(case, results):
     _, _, getfem_mesh, dim = CASES[case][:4]
     path = getfem_mesh if os.path.isabs(getfem_mesh) else mesh(getfem_mesh)
     start = time.time()
-    subprocess.run(["/usr/bin/python3", os.path.join(HERE, "getfem_hertz.py"),
-                    "--dim", str(dim), "--mesh", path,
-                    "--csv", results] + CASES[case][9],
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                   check=True)
+    result = subprocess.run(["/usr/bin/python3",
+                             os.path.join(HERE, "getfem_hertz.py"),
+                             "--dim", str(dim), "--mesh", path,
+                             "--csv", results] + CASES[case][9],
+                            stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE, text=True)
     wall = time.time() - start
-    row = list(csv.DictReader(open(results)))[-1]
+    rows = list(csv.DictReader(open(results))) if os.path.exists(results) \
+        else []
+    # getfem_hertz.py exits with 1 after writing its row if Newton did not
+    # converge: that run counts, as "no convergence".
+    if result.returncode != 0 and not (result.returncode == 1 and rows and
+                                       rows[-1]["converged"] == "False"):
+        sys.exit("GetFEM failed on %s (exit status %d):\n%s"
+                 % (case, result.returncode, result.stderr[-2000:]))
+    row = rows[-1]
+    converged = row["converged"] == "True"
     return wall, {"getfem_dofs": row["dofs_u"],
                   "getfem_newton": row["newton_iterations"],
-                  "getfem_error": "%.4f" % float(row["profile_error"])}
+                  "getfem_error": ("%.4f" % float(row["profile_error"]))
+                  if converged else "no convergence"}, converged
 
 
 def main():
@@ -128,7 +161,7 @@ def main():
                  "run with /usr/bin/python3 (benchmarks/peers/README.md)")
     fields = ["case", "runs", "tribos_dofs", "getfem_dofs", "tribos_newton",
               "getfem_newton", "tribos_error", "getfem_error", "tribos_wall",
-              "getfem_wall", "ratio", "tribos_in_process"]
+              "getfem_wall", "ratio", "tribos_in_process", "getfem_failures"]
     rows = []
     print(",".join(fields), flush=True)
     with tempfile.TemporaryDirectory() as work:
@@ -137,6 +170,7 @@ def main():
                 continue
             row = {"case": case, "runs": args.runs}
             walls = {"tribos": [], "getfem": []}
+            failures = 0
             in_process = []
             for k in range(args.runs):
                 wall, values, inside = run_tribos(
@@ -145,10 +179,13 @@ def main():
                 walls["tribos"].append(wall)
                 in_process.append(inside)
                 row.update(values)
-                wall, values = run_getfem(case,
-                                          os.path.join(work, "getfem.csv"))
+                wall, values, converged = run_getfem(
+                    case, os.path.join(work, "getfem.csv"))
                 walls["getfem"].append(wall)
-                row.update(values)
+                failures += 0 if converged else 1
+                if converged or "getfem_error" not in row:
+                    row.update(values)
+            row["getfem_failures"] = failures
             for code in walls:
                 row[code + "_wall"] = "%.3f" % statistics.median(walls[code])
             row["ratio"] = "%.3f" % (statistics.median(walls["tribos"]) /
