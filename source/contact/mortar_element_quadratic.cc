@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace tribos
 {
@@ -141,7 +142,15 @@ namespace tribos
         eta -= step;
         if (std::abs(eta) > projection_limit)
           return false;
-        if (std::abs(step) < 1e-14)
+        // Converged at round-off: (y - p) . t carries the rounding of the
+        // coordinates' size |p|, a step of about eps |p| / |x'| (a fixed
+        // 1e-14 was not reached on segments below about h = 1/100 of the
+        // coordinates, and the Gauss point was dropped: a jump in the
+        // residual that stalled Newton on a refined Q2 patch test).
+        const double floor =
+          1e-14 + 64 * std::numeric_limits<double>::epsilon() * norm(p) /
+                    std::max(norm(a), std::numeric_limits<double>::min());
+        if (std::abs(step) < floor)
         {
           curve(x, eta, y, a);
           slope = dot(a, t);
