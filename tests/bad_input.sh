@@ -95,7 +95,7 @@ expect contact_q2 "Polynomial degree = 1" "$tribos" "$tests/patch_test.prm" \
   --set "Finite element/Polynomial degree=2"
 expect contact_q2_node_to_segment "needs Contact/Discretization = mortar or a rigid surface" \
   "$tribos" "$tests/patch_test.prm" --set "Finite element/Polynomial degree=2"
-expect contact_q2_3d "or 2 (2D, and the triangle faces of 3D tetrahedra)" "$tribos" \
+expect contact_q2_3d "works against rigid surfaces only" "$tribos" \
   "$tests/patch_test_3d.prm" --set "Finite element/Polynomial degree=2"
 expect contact_q2_axisymmetric_standard "Mortar basis = standard is not available" \
   "$tribos" "$tests/patch_test.prm" --set "Finite element/Polynomial degree=2" \
@@ -207,16 +207,16 @@ expect gmsh_folded "is folded (its map's Jacobian is not positive" "$tribos" \
   "$tests/gmsh_import.prm" --set "Scene/Mesh file=$meshes/folded.msh" \
   --set "Finite element/Polynomial degree=2" --set "Boundary conditions/Dirichlet=0 : xy : 0, 0"
 # A curved mesh split into simplices (its curved cells are not split), and
-# contact on the nine-node faces of curved hexahedra (Q2 in 3D).
+# mortar contact on the nine-node faces of curved hexahedra (Q2 in 3D).
 expect curved_split "splits straight cells; the mesh of the scene has second-order" \
   "$tribos" "$tests/gmsh_import.prm" --set "Scene/Mesh file=$tests/quarter_disc_quad9.msh" \
   --set "Finite element/Cells=simplices" --set "Boundary conditions/Dirichlet=1 : x : 0"
-expect curved_hex_contact "Polynomial degree = 1 (2D and 3D) or 2 (2D, and the triangle faces" \
+expect curved_hex_mortar "contact on the nine-node faces of Q2 hexahedra (Polynomial degree = 2 in 3D) works against rigid surfaces only" \
   "$tribos" "$tests/gmsh_import.prm" --set "Dimension=3" \
   --set "Scene/Mesh file=$tests/ball_octant_hex27.msh" --set "Finite element/Polynomial degree=2" \
   --set "Materials/Young's modulus=1, 1" \
   --set "Boundary conditions/Dirichlet=1 : x : 0 ; 2 : y : 0" \
-  --set "Contact/Pairs=4 : plane" --set "Contact/Rigid surfaces=plane : plane : 0, 0, 1.1 : 0, 0, -1 : 0, 0, -0.2*t"
+  --set "Contact/Pairs=4 : 3" --set "Contact/Discretization=mortar"
 expect gmsh_boundary_ids "boundary ids are 0, 1, 2 (a gmsh mesh's" "$tribos" \
   "$tests/gmsh_import.prm" --set "Scene/Mesh file=$tests/two_squares.msh" \
   --set "Boundary conditions/Dirichlet=7 : xy : 0, 0"

@@ -24,7 +24,16 @@ positions) with Polynomial degree = 2.
   left the edges where two planes meet free to slide: 1 % off on P2, 2 %
   on P1). On curved P2 the force is E eps pi r^2 / 4 within 1e-4
   (measured 2.1e-5; straight P1: 1.7 % off). Between frictionless rigid
-  plates with multipliers: the Dirichlet force to 1e-10.
+  plates with multipliers: the Dirichlet force to 1e-10. The same on
+  curved hex27 (tests/cylinder_octant_hex27.msh: gmsh's hexahedra split
+  from tetrahedra, where deal.II's constraints were 0.15 % off too):
+  Symmetry = Dirichlet, the force within 1e-3 of E eps pi r^2 / 4
+  (measured 9.9e-6), and the rigid plate on the nine-node faces with
+  multipliers = Dirichlet to 1e-10.
+- Q2 hexahedra (the upper block of tests/patch_test_3d.prm) on a rigid
+  plane: every vertex, edge middle and face centre of the nine-node faces
+  carries the applied pressure, to 1e-12 with multipliers and 1e-8 with
+  penalty.
 - A press fit (tests/press_fit.prm): two rings meshed separately with
   curved cells, the inner one pressed into the outer one by a pressure on
   its inside, frictionless mortar contact with multipliers on the circle
@@ -192,18 +201,58 @@ for degree in (1, 2):
           "cylinder octant, %s: force %.6f, E eps pi r^2 / 4 = %.6f, %.1e"
           % ("curved P2" if degree == 2 else "straight P1", force["symmetry"],
              exact, error))
+rigid_plate = ["Boundary conditions/Symmetry=1, 2, 3",
+               "Boundary conditions/Dirichlet=", "Contact/Pairs=4 : plate",
+               "Contact/Rigid surfaces=plate : plane : 0, 0, 6.35 : "
+               "0, 0, -1 : 0, 0, -0.0635*t",
+               "Contact/Method=lagrange multiplier"]
 plate = out + "/cylinder_plate"
-run(tribos, tests + "/gmsh_import.prm", plate,
-    cylinder + [p2, "Boundary conditions/Symmetry=1, 2, 3",
-                "Boundary conditions/Dirichlet=", "Contact/Pairs=4 : plate",
-                "Contact/Rigid surfaces=plate : plane : 0, 0, 6.35 : "
-                "0, 0, -1 : 0, 0, -0.0635*t",
-                "Contact/Method=lagrange multiplier"])
+run(tribos, tests + "/gmsh_import.prm", plate, cylinder + [p2] + rigid_plate)
 contact = reaction(plate, "pair0_normal_force")
 check(abs(contact / force["symmetry"] - 1) < 1e-10,
       "cylinder octant, curved P2 between frictionless rigid plates, "
       "multipliers: the Dirichlet force to %.1e"
       % abs(contact / force["symmetry"] - 1))
+
+# The same cylinder of curved hex27 (Q2): the symmetry planes on gmsh's
+# hexahedra (deal.II's constraints were 1.5e-3 off), and a rigid plate on
+# the nine-node faces.
+hex27 = cylinder[:2] + ["Scene/Mesh file=%s/cylinder_octant_hex27.msh"
+                        % tests] + cylinder[3:] + [p2]
+force = {}
+for kind, sets in planes.items():
+    folder = "%s/cylinder_hex27_%s" % (out, kind)
+    run(tribos, tests + "/gmsh_import.prm", folder, hex27 + sets)
+    force[kind] = -reaction(folder, "RF4_z")
+plate = out + "/cylinder_hex27_plate"
+run(tribos, tests + "/gmsh_import.prm", plate, hex27 + rigid_plate)
+contact = reaction(plate, "pair0_normal_force")
+error = force["symmetry"] / exact - 1
+check(abs(force["symmetry"] / force["dirichlet"] - 1) < 1e-10 and
+      abs(error) < 1e-3 and abs(contact / force["symmetry"] - 1) < 1e-10,
+      "cylinder octant, curved hex27 (68 cells): Symmetry = Dirichlet "
+      "planes to %.1e; E eps pi r^2 / 4 within %.1e; between rigid plates "
+      "(nine-node faces, multipliers) the Dirichlet force to %.1e"
+      % (abs(force["symmetry"] / force["dirichlet"] - 1), error,
+         abs(contact / force["symmetry"] - 1)))
+
+# Q2 hexahedra on a rigid plane (the upper block of tests/patch_test_3d.prm,
+# straight): each node of the nine-node faces carries the applied pressure
+# (their functions integrate to A/36, A/9 and 4A/9, all positive: the
+# node-wise law with those areas is the dual mortar against a plane).
+for method, bound in (("lagrange multiplier", 1e-12), ("penalty", 1e-8)):
+    folder = "%s/q2_hex_rigid_%s" % (out, method.split()[0])
+    run(tribos, tests + "/patch_test_3d.prm", folder,
+        [p2, "Contact/Method=" + method, "Contact/Pairs=14 : floor",
+         "Contact/Rigid surfaces=floor : plane : 0, 0, 0.5 : 0, 0, 1 : "
+         "0, 0, 0"])
+    p = [r["CPRESS"] for r in read_csv(folder + "/contact-00001.csv")
+         if r["CSTATUS"] != 0]
+    spread = max(abs(x - 0.01) for x in p) / 0.01
+    check(len(p) == 49 and spread < bound,
+          "Q2 hexahedra on a rigid plane, %s: the applied pressure 0.01 at "
+          "all %d vertices, edge middles and face centres to %.1e"
+          % (method, len(p), spread))
 
 
 # The press fit: two curved rings in mortar contact (multipliers).

@@ -4,7 +4,8 @@
 // point, split into hexahedra by gmsh's subdivision (hex = 1, the
 // default: first-order hexahedra, what GetFEM's Q1 nodal contact uses in
 // the benchmark and what tribos could read), or left as tetrahedra
-// (-setnumber hex 0, with -setnumber order 2 for curved P2 geometry).
+// (-setnumber hex 0); -setnumber order 2 for curved second-order cells
+// (tet10, or hex27 with hex = 1).
 //
 //   gmsh -3 hertz_3d.geo -o hertz_3d_20k.msh     (19911 dofs, Q1)
 //
@@ -49,11 +50,9 @@ Mesh.Algorithm3D = 1;          // Delaunay
 Mesh.Optimize = 1;
 If (hex == 1)
   Mesh.SubdivisionAlgorithm = 2; // every tetrahedron into 4 hexahedra
-  Mesh.ElementOrder = 1;
-Else
-  Mesh.ElementOrder = order;
-  Mesh.HighOrderOptimize = 0;
 EndIf
+Mesh.ElementOrder = order;
+Mesh.HighOrderOptimize = 0;
 Mesh.MshFileVersion = 2.2;
 
 Physical Surface(10) = {sc[]};

@@ -24,21 +24,19 @@ namespace tribos
     // needs every master face.
     const auto        &fe     = dof_handler.get_fe();
     const unsigned int degree = fe.degree;
-    AssertThrow(
-      degree == 1 ||
-        (degree == 2 &&
-         (dim == 2 ||
-          dof_handler.get_triangulation().all_reference_cells_are_simplex())),
-      ExcMessage("Contact surfaces are built for Finite element/"
-                 "Polynomial degree = 1 (2D and 3D) or 2 (2D, and "
-                 "the triangle faces of 3D tetrahedra); this mesh "
-                 "has degree " +
-                 std::to_string(degree) + " in " + std::to_string(dim) + "D."));
+    AssertThrow(degree == 1 || degree == 2,
+                ExcMessage("Contact surfaces are built for Finite element/"
+                           "Polynomial degree = 1 or 2; this mesh has "
+                           "degree " +
+                           std::to_string(degree) + "."));
     is_quadratic = (degree == 2);
-    is_curved    = (curved_geometry != nullptr);
+    is_quadratic_quads =
+      is_quadratic && dim == 3 &&
+      dof_handler.get_triangulation().all_reference_cells_are_hyper_cube();
+    is_curved = (curved_geometry != nullptr);
     number_nodes(gather_faces(dof_handler, curved_geometry));
-    if (is_curved)
-      integrate_curved_areas(axisymmetric);
+    if (is_curved || is_quadratic_quads)
+      integrate_quadratic_areas(axisymmetric);
     else
       integrate_areas(axisymmetric);
     find_neighbours();
@@ -51,20 +49,6 @@ namespace tribos
   ContactSurface<dim>::gather_faces(const DoFHandler<dim> &dof_handler,
                                     const Mapping<dim> *curved_geometry) const
   {
-    // Where the curved geometry puts the middle of the cell's line l: the
-    // support point of the quadratic element's dof on the line (after one
-    // per vertex).
-    const auto curved_middle =
-      [curved_geometry, &dof_handler](const auto &cell, const unsigned int l)
-    {
-      return curved_geometry->transform_unit_to_real_cell(
-        cell,
-        dof_handler.get_fe().base_element(0).unit_support_point(
-          cell->n_vertices() + l));
-    };
-    const auto                          &fe = dof_handler.get_fe();
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-
     std::vector<FaceRecord> own;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -119,61 +103,8 @@ namespace tribos
               record.dofs[v * dim + d] = face->vertex_dof_index(order[v], d);
               record.x[v * dim + d]    = face->vertex(order[v])[d];
             }
-          if (is_quadratic && dim == 2)
-          {
-            // The line's own dofs (index 2 of the quadratic face element,
-            // after its two vertices): the middle support point.
-            face->get_dof_indices(face_dofs);
-            for (unsigned int i = 0; i < face_dofs.size(); ++i)
-            {
-              const auto [component, index] =
-                fe.face_system_to_component_index(i);
-              if (index == 2)
-                record.middle_dofs[component] = face_dofs[i];
-            }
-            record.n_middles        = 1;
-            const Point<dim> middle = curved_geometry == nullptr ?
-                                        Point<dim>() :
-                                        curved_middle(cell, f);
-            for (unsigned int d = 0; d < dim; ++d)
-              record.middle_x[d] = curved_geometry == nullptr ?
-                                     0.5 * (record.x[d] + record.x[dim + d]) :
-                                     middle[d];
-          }
-          if constexpr (dim == 3)
-            if (is_quadratic)
-            {
-              // The six-node triangle: the dofs of the middle of each edge
-              // a-b (0-1, 1-2, 2-0 in the oriented order), one per
-              // component on the edge's line (FE_SimplexP(2)^3).
-              record.n_middles = 3;
-              for (unsigned int e = 0; e < 3; ++e)
-              {
-                const unsigned int a = face->vertex_index(order[e]),
-                                   b = face->vertex_index(order[(e + 1) % 3]);
-                bool found           = false;
-                for (unsigned int l = 0; l < cell->n_lines(); ++l)
-                {
-                  const auto line = cell->line(l);
-                  if ((line->vertex_index(0) == a &&
-                       line->vertex_index(1) == b) ||
-                      (line->vertex_index(0) == b &&
-                       line->vertex_index(1) == a))
-                  {
-                    const Point<dim> middle = curved_geometry == nullptr ?
-                                                line->center() :
-                                                curved_middle(cell, l);
-                    for (unsigned int d = 0; d < dim; ++d)
-                    {
-                      record.middle_dofs[e * dim + d] = line->dof_index(d);
-                      record.middle_x[e * dim + d]    = middle[d];
-                    }
-                    found = true;
-                  }
-                }
-                AssertThrow(found, ExcInternalError());
-              }
-            }
+          if (is_quadratic)
+            gather_middles(cell, f, order, curved_geometry, record);
           own.push_back(record);
         }
     std::vector<FaceRecord> records;
@@ -189,6 +120,80 @@ namespace tribos
                 return ca < cb || (ca == cb && a.face < b.face);
               });
     return records;
+  }
+
+
+
+  template <int dim>
+  void
+  ContactSurface<dim>::gather_middles(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    f,
+    const std::array<unsigned int, n_face_nodes>         &order,
+    const Mapping<dim>                                   *curved_geometry,
+    FaceRecord                                           &record) const
+  {
+    // A quadratic element has one dof per component on each line and (Q2
+    // in 3D) on each face, in component order. Their reference positions:
+    // the lines' and the face's centres on straight cells, where the curved
+    // geometry puts the quadratic element's support points on curved ones
+    // (after one per vertex, one per line, one per face).
+    const auto        &base = cell->get_fe().base_element(0);
+    const auto         face = cell->face(f);
+    const unsigned int n_v  = cell->n_vertices();
+    const auto         set  = [&](const unsigned int m,
+                         const auto        &object,
+                         const unsigned int support_point,
+                         const Point<dim>  &straight)
+    {
+      const Point<dim> x =
+        curved_geometry == nullptr ?
+          straight :
+          curved_geometry->transform_unit_to_real_cell(cell,
+                                                       base.unit_support_point(
+                                                         support_point));
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        record.middle_dofs[m * dim + d] = object->dof_index(d);
+        record.middle_x[m * dim + d]    = x[d];
+      }
+    };
+    if constexpr (dim == 2)
+    {
+      // The segment's middle: its line's dofs.
+      record.n_middles = 1;
+      set(0, face, n_v + f, face->center());
+      return;
+    }
+    // The middles of the face's edges a-b (oriented order): the six-node
+    // triangle's 0-1, 1-2, 2-0; the nine-node quadrilateral's (lexicographic
+    // like MasterFace) 0-1, 2-3, 0-2, 1-3, then its centre.
+    const bool         triangle    = face->n_vertices() == 3;
+    const unsigned int edges[4][2] = {{0, 1},
+                                      {triangle ? 1u : 2u, triangle ? 2u : 3u},
+                                      {triangle ? 2u : 0u, triangle ? 0u : 2u},
+                                      {1, 3}};
+    const unsigned int n_edges     = triangle ? 3 : 4;
+    record.n_middles               = triangle ? 3 : 5;
+    for (unsigned int e = 0; e < n_edges; ++e)
+    {
+      const unsigned int a = face->vertex_index(order[edges[e][0]]),
+                         b = face->vertex_index(order[edges[e][1]]);
+      bool found           = false;
+      for (unsigned int l = 0; l < cell->n_lines() && !found; ++l)
+      {
+        const auto line = cell->line(l);
+        if ((line->vertex_index(0) == a && line->vertex_index(1) == b) ||
+            (line->vertex_index(0) == b && line->vertex_index(1) == a))
+        {
+          set(e, line, n_v + l, line->center());
+          found = true;
+        }
+      }
+      AssertThrow(found, ExcInternalError());
+    }
+    if (!triangle)
+      set(4, face, n_v + cell->n_lines() + f, face->center());
   }
 
 
@@ -237,7 +242,7 @@ namespace tribos
         const unsigned int n =
           node_of(&record.middle_dofs[e * dim], &record.middle_x[e * dim]);
         contact_face.middles[e] = n;
-        if (dim == 3)
+        if (dim == 3 && record.n_vertices == 3)
           node_list[n].edge = {
             {static_cast<int>(contact_face.nodes[e]),
              static_cast<int>(contact_face.nodes[(e + 1) % 3])}};
@@ -325,79 +330,162 @@ namespace tribos
 
 
 
+  namespace
+  {
+    /** The quadratic functions of a segment's ends (xi = -1, +1) and
+     * middle (0), and their derivatives. */
+    void
+    quadratic_1d(const double xi, double *L, double *dL)
+    {
+      L[0]  = 0.5 * xi * (xi - 1.);
+      L[1]  = 0.5 * xi * (xi + 1.);
+      L[2]  = 1. - xi * xi;
+      dL[0] = xi - 0.5;
+      dL[1] = xi + 0.5;
+      dL[2] = -2. * xi;
+    }
+
+    const QGauss<1> &
+    line_rule()
+    {
+      static const QGauss<1> rule(4);
+      return rule;
+    }
+
+    const QGauss<2> &
+    square_rule()
+    {
+      static const QGauss<2> rule(4);
+      return rule;
+    }
+
+    const QGaussSimplex<2> &
+    triangle_rule()
+    {
+      static const QGaussSimplex<2> rule(4);
+      return rule;
+    }
+
+    /** The number of points of quadratic_face_point()'s rule. */
+    unsigned int
+    n_quadratic_face_points(const unsigned int n_nodes)
+    {
+      return n_nodes == 3 ? line_rule().size() :
+             n_nodes == 6 ? triangle_rule().size() :
+                            square_rule().size();
+    }
+
+    /**
+     * At point @p q of the reference face of @p n_nodes nodes (3: the
+     * segment through nodes 0, middle, 1; 6: the six-node triangle; 9: the
+     * nine-node quadrilateral), the nodes' functions @p N (the six-node
+     * triangle's modified basis), the position @p xq on the face through
+     * @p x and the measure of the face there times the rule's weight
+     * (returned). Rules: 4-point Gauss on segments and per direction on
+     * quadrilaterals, the 4-point-per-direction simplex rule on triangles.
+     */
+    double
+    quadratic_face_point(const unsigned int  n_nodes,
+                         const Vec3<double> *x,
+                         const unsigned int  q,
+                         double             *N,
+                         Vec3<double>       &xq)
+    {
+      double dN[9][2]     = {};
+      xq                  = {{0, 0, 0}};
+      Vec3<double> a[2]   = {{{0, 0, 0}}, {{0, 0, 0}}};
+      double       weight = 0;
+      if (n_nodes == 3)
+      {
+        double dL[3];
+        quadratic_1d(2 * line_rule().point(q)[0] - 1, N, dL);
+        for (unsigned int i = 0; i < 3; ++i)
+          dN[i][0] = dL[i];
+        weight = 2 * line_rule().weight(q);
+      }
+      else if (n_nodes == 6)
+      {
+        const Point<2> &p        = triangle_rule().point(q);
+        const double    L[3]     = {1 - p[0] - p[1], p[0], p[1]};
+        const double    dL[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
+        for (unsigned int v = 0; v < 3; ++v)
+        {
+          const unsigned int w = (v + 1) % 3;
+          N[v]                 = L[v] * (2 * L[v] - 1);
+          N[3 + v]             = 4 * L[v] * L[w];
+          for (unsigned int k = 0; k < 2; ++k)
+          {
+            dN[v][k]     = (4 * L[v] - 1) * dL[v][k];
+            dN[3 + v][k] = 4 * (dL[v][k] * L[w] + L[v] * dL[w][k]);
+          }
+        }
+        weight = triangle_rule().weight(q);
+      }
+      else
+      {
+        // Node i is the product of the 1D functions a(i) in xi_1 and b(i)
+        // in xi_2 (0: -1, 1: +1, 2: middle): vertices (lexicographic),
+        // middles of 0-1, 2-3, 0-2, 1-3, centre.
+        const unsigned int a_of[9] = {0, 1, 0, 1, 2, 2, 0, 1, 2};
+        const unsigned int b_of[9] = {0, 0, 1, 1, 0, 1, 2, 2, 2};
+        double             L1[3], dL1[3], L2[3], dL2[3];
+        quadratic_1d(2 * square_rule().point(q)[0] - 1, L1, dL1);
+        quadratic_1d(2 * square_rule().point(q)[1] - 1, L2, dL2);
+        for (unsigned int i = 0; i < 9; ++i)
+        {
+          N[i]     = L1[a_of[i]] * L2[b_of[i]];
+          dN[i][0] = dL1[a_of[i]] * L2[b_of[i]];
+          dN[i][1] = L1[a_of[i]] * dL2[b_of[i]];
+        }
+        weight = 4 * square_rule().weight(q);
+      }
+      for (unsigned int i = 0; i < n_nodes; ++i)
+      {
+        xq = xq + scale(N[i], x[i]);
+        for (unsigned int k = 0; k < 2; ++k)
+          a[k] = a[k] + scale(dN[i][k], x[i]);
+      }
+      if (n_nodes == 6)
+      {
+        // The modified basis: a vertex takes alpha of both its edges'
+        // middle functions.
+        const double alpha = TriangleFace::modified_basis_alpha;
+        double       P2[6];
+        std::copy(N, N + 6, P2);
+        for (unsigned int v = 0; v < 3; ++v)
+          N[v] = P2[v] + alpha * (P2[3 + v] + P2[3 + (v + 2) % 3]);
+        for (unsigned int e = 0; e < 3; ++e)
+          N[3 + e] = (1 - 2 * alpha) * P2[3 + e];
+      }
+      return weight * (n_nodes == 3 ? norm(a[0]) : norm(cross(a[0], a[1])));
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
-  ContactSurface<dim>::integrate_curved_areas(const bool axisymmetric)
+  ContactSurface<dim>::integrate_quadratic_areas(const bool axisymmetric)
   {
-    // Quadratic faces only (the constructor allows no other curved ones):
-    // 2D the curve through nodes 0, middle, 1 (xi in [-1, 1]); 3D the
-    // six-node triangle on the reference triangle, vertices L_0 = 1 - xi_1 -
-    // xi_2, L_1 = xi_1, L_2 = xi_2, middle e on the edge e-(e+1).
-    const QGauss<1>        line_rule(4);
-    const QGaussSimplex<2> triangle_rule(4);
-    const double           alpha = TriangleFace::modified_basis_alpha;
+    // Quadratic faces only (the constructor builds no other curved ones,
+    // and nine-node quadrilaterals have no other path).
     for (unsigned int f = 0; f < face_list.size(); ++f)
     {
       const auto        &face    = face_list[f];
       const unsigned int n_nodes = face.n_nodes();
-      Vec3<double>       x[6];
+      Vec3<double>       x[9];
       for (unsigned int v = 0; v < n_nodes; ++v)
       {
         node_list[face.node(v)].faces.push_back(f);
         x[v] = node_list[face.node(v)].reference;
       }
-      const unsigned int n_points =
-        dim == 2 ? line_rule.size() : triangle_rule.size();
+      const unsigned int n_points = n_quadratic_face_points(n_nodes);
       for (unsigned int q = 0; q < n_points; ++q)
       {
-        double       N[6] = {}, weight = 0;
-        Vec3<double> a[2] = {{{0, 0, 0}}, {{0, 0, 0}}}, xq{{0, 0, 0}};
-        if (dim == 2)
-        {
-          const double xi    = 2 * line_rule.point(q)[0] - 1;
-          const double dN[3] = {xi - 0.5, xi + 0.5, -2 * xi};
-          N[0]               = 0.5 * xi * (xi - 1.);
-          N[1]               = 0.5 * xi * (xi + 1.);
-          N[2]               = 1. - xi * xi;
-          for (unsigned int v = 0; v < 3; ++v)
-          {
-            xq   = xq + scale(N[v], x[v]);
-            a[0] = a[0] + scale(dN[v], x[v]);
-          }
-          weight = 2 * line_rule.weight(q) * norm(a[0]);
-        }
-        else
-        {
-          const Point<2> &p        = triangle_rule.point(q);
-          const double    L[3]     = {1 - p[0] - p[1], p[0], p[1]};
-          const double    dL[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
-          double          P2[6], dP2[6][2];
-          for (unsigned int v = 0; v < 3; ++v)
-          {
-            const unsigned int w = (v + 1) % 3;
-            P2[v]                = L[v] * (2 * L[v] - 1);
-            P2[3 + v]            = 4 * L[v] * L[w];
-            for (unsigned int k = 0; k < 2; ++k)
-            {
-              dP2[v][k]     = (4 * L[v] - 1) * dL[v][k];
-              dP2[3 + v][k] = 4 * (dL[v][k] * L[w] + L[v] * dL[w][k]);
-            }
-          }
-          for (unsigned int i = 0; i < 6; ++i)
-          {
-            xq = xq + scale(P2[i], x[i]);
-            for (unsigned int k = 0; k < 2; ++k)
-              a[k] = a[k] + scale(dP2[i][k], x[i]);
-          }
-          // The modified basis: a vertex takes alpha of both its edges'
-          // middle functions.
-          for (unsigned int v = 0; v < 3; ++v)
-            N[v] = P2[v] + alpha * (P2[3 + v] + P2[3 + (v + 2) % 3]);
-          for (unsigned int e = 0; e < 3; ++e)
-            N[3 + e] = (1 - 2 * alpha) * P2[3 + e];
-          weight = triangle_rule.weight(q) * norm(cross(a[0], a[1]));
-        }
-        const double ring = axisymmetric ? 2 * numbers::PI * xq[0] : 1.;
+        double       N[9];
+        Vec3<double> xq;
+        const double weight = quadratic_face_point(n_nodes, x, q, N, xq);
+        const double ring   = axisymmetric ? 2 * numbers::PI * xq[0] : 1.;
         for (unsigned int v = 0; v < n_nodes; ++v)
         {
           node_list[face.node(v)].area += N[v] * weight * ring;

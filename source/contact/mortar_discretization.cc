@@ -57,6 +57,15 @@ namespace tribos
     // integrate to zero against 2 pi r: that node carries no multiplier,
     // the others then miss a partition of unity and Newton does not
     // converge even on the patch test. The dual basis has no such node.
+    // The nine-node faces of Q2 hexahedra: against rigid surfaces only.
+    AssertThrow(!pair.slave->quadratic_quadrilaterals() &&
+                  (!pair.master || !pair.master->quadratic_quadrilaterals()),
+                ExcMessage("Contact pair <" + pair.description.text +
+                           ">: contact on the nine-node faces of Q2 "
+                           "hexahedra (Polynomial degree = 2 in 3D) works "
+                           "against rigid surfaces only; between two "
+                           "deformable bodies use Polynomial degree = 1, "
+                           "or tetrahedra (P2 takes mortar contact)."));
     AssertThrow(!pair.slave->quadratic() || !axisymmetric || dual,
                 ExcMessage("Contact pair <" + pair.description.text +
                            ">: Contact/Mortar basis = standard is not "

@@ -111,17 +111,12 @@ namespace tribos
       AffineConstraints<double>          symmetry(system_coupled);
       const std::set<types::boundary_id> ids(bc.symmetry.begin(),
                                              bc.symmetry.end());
-      // Hexahedra and quadrilaterals: deal.II's constraints. Simplices:
-      // tribos's, which group the faces' normals by direction, not by cell
-      // (make_symmetry_constraints()).
-      if (triangulation.all_reference_cells_are_hyper_cube())
-        VectorTools::compute_no_normal_flux_constraints(dof_handler,
-                                                        0,
-                                                        ids,
-                                                        symmetry,
-                                                        mapping());
-      else
-        make_symmetry_constraints(mapping(), dof_handler, ids, symmetry);
+      // tribos's own constraints, which group the faces' normals by
+      // direction, not by cell (make_symmetry_constraints()): deal.II 9.4's
+      // compute_no_normal_flux_constraints() leaves the nodes on the edge
+      // where two symmetry planes meet free to slide when the cells there
+      // are gmsh tetrahedra or curved hexahedra.
+      make_symmetry_constraints(mapping(), dof_handler, ids, symmetry);
       symmetry.close();
       // Merging substitutes the symmetry lines into the hanging-node lines
       // that refer to them. On a distributed mesh the outer faces of the

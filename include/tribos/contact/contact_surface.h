@@ -74,10 +74,12 @@ namespace tribos
        * Quadratic faces: the nodes at the middles of its edges, -1 on
        * linear faces. 2D Q2 or P2: one, the face is the quadratic segment
        * through nodes[0], middles[0], nodes[1]; P2 tetrahedra: three, of
-       * the edges 0-1, 1-2, 2-0 (the six-node triangle). Searches and
-       * neighbourhoods still go by the vertices.
+       * the edges 0-1, 1-2, 2-0 (the six-node triangle); Q2 hexahedra:
+       * five, of the edges 0-1, 2-3, 0-2, 1-3 and the centre (the
+       * nine-node quadrilateral). Searches and neighbourhoods still go by
+       * the vertices.
        */
-      std::array<int, 3> middles   = {{-1, -1, -1}};
+      std::array<int, 5> middles   = {{-1, -1, -1, -1, -1}};
       unsigned int       n_middles = 0;
       /** The number of the face's nodes: its vertices and its middles. */
       unsigned int
@@ -151,7 +153,14 @@ namespace tribos
     bool
     quadratic_triangles() const
     {
-      return is_quadratic && dim == 3;
+      return is_quadratic && dim == 3 && !is_quadratic_quads;
+    }
+
+    /** Whether the faces are nine-node quadrilaterals (Q2 hexahedra). */
+    bool
+    quadratic_quadrilaterals() const
+    {
+      return is_quadratic_quads;
     }
 
     /** Whether the faces are quadratic (Face::middles are set). */
@@ -181,8 +190,8 @@ namespace tribos
       std::array<double, n_face_nodes * dim>                  x{};
       /** Quadratic faces: the dofs of the support points at the middles
        * of its edges (Face::middles), and their reference positions. */
-      std::array<types::global_dof_index, 3 * dim> middle_dofs{};
-      std::array<double, 3 * dim>                  middle_x{};
+      std::array<types::global_dof_index, 5 * dim> middle_dofs{};
+      std::array<double, 5 * dim>                  middle_x{};
       unsigned int                                 n_middles = 0;
 
       template <class Archive>
@@ -210,6 +219,16 @@ namespace tribos
     gather_faces(const DoFHandler<dim> &dof_handler,
                  const Mapping<dim>    *curved_geometry) const;
 
+    /** The quadratic face @p f of @p cell (vertices in the order @p order):
+     * the dofs and reference positions of its middle nodes (and the
+     * nine-node quadrilateral's centre) into @p record. */
+    void
+    gather_middles(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                   const unsigned int                                    f,
+                   const std::array<unsigned int, n_face_nodes>         &order,
+                   const Mapping<dim> *curved_geometry,
+                   FaceRecord         &record) const;
+
     /** The faces and their nodes from @p records. */
     void
     number_nodes(const std::vector<FaceRecord> &records);
@@ -219,11 +238,11 @@ namespace tribos
     void
     integrate_areas(const bool axisymmetric);
 
-    /** integrate_areas() on curved quadratic faces: the integrals of the
-     * faces' functions (the six-node triangle's modified basis) over the
-     * curved faces. */
+    /** integrate_areas() on curved quadratic faces and on nine-node
+     * quadrilaterals: the integrals of the faces' functions (the six-node
+     * triangle's modified basis) over the faces' own quadratic geometry. */
     void
-    integrate_curved_areas(const bool axisymmetric);
+    integrate_quadratic_areas(const bool axisymmetric);
 
     /** The faces' neighbours, the edges where the surface continues, and
      * (2D) the nodes beyond a face's ends. */
@@ -234,8 +253,9 @@ namespace tribos
     std::vector<Node>            node_list;
     std::vector<Face>            face_list;
     std::set<types::material_id> body_ids;
-    bool                         is_quadratic = false;
-    bool                         is_curved    = false;
+    bool                         is_quadratic       = false;
+    bool                         is_quadratic_quads = false;
+    bool                         is_curved          = false;
   };
 } // namespace tribos
 

@@ -27,12 +27,12 @@ namespace tribos
    *
    * deal.II 9.4's compute_no_normal_flux_constraints() groups the normals
    * by cell instead: where no cell has a face on both planes of an edge
-   * (the fan of tetrahedra around an edge of an unstructured mesh; the
-   * corner of triangles), it averages the two planes' normals and leaves
-   * the edge free to move along their bisector's normal plane, and where
-   * three planes meet on linear tetrahedra it left one direction free. On
-   * hexahedra every edge cell has a face on both planes and its answer is
-   * this one's.
+   * (the fan of cells around an edge of an unstructured mesh, tetrahedra
+   * or hexahedra split from them; the corner of triangles), it averages
+   * the two planes' normals and leaves the edge free to move in their
+   * bisecting plane, and where three planes meet on linear tetrahedra it
+   * left one direction free. On structured hexahedra, where every cell at
+   * an edge has a face on both planes, the two agree.
    */
   template <int dim>
   void
