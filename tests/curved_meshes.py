@@ -30,6 +30,14 @@ positions) with Polynomial degree = 2.
   Symmetry = Dirichlet, the force within 1e-3 of E eps pi r^2 / 4
   (measured 9.9e-6), and the rigid plate on the nine-node faces with
   multipliers = Dirichlet to 1e-10.
+- A press fit in 3D (tests/press_fit_3d.prm): two spherical shells
+  meshed separately with curved hex27 (non-matching on r = b, 129 and 39
+  nine-node faces), the inner one pressed by a pressure on its inside,
+  frictionless mortar with multipliers: all 547 slave nodes closed,
+  Lame's thick-sphere pressure to 2.5e-2 RMS (bound 0.04; with the
+  standard quadratic functions' dual basis it was 5.2e-2, 8.2e-2 at the
+  vertices), the resultant within 1e-2 (measured 2.4e-3); Q1 on the same
+  mesh does not fit (49 of 145 closed).
 - Q2 hexahedra (the upper block of tests/patch_test_3d.prm) on a rigid
   plane: every vertex, edge middle and face centre of the nine-node faces
   carries the applied pressure, to 1e-12 with multipliers and 1e-8 with
@@ -281,6 +289,41 @@ check(len(errors) < n or max(abs(e) for e in errors) > 0.2,
       "polygons do not fit, %d of %d slave nodes closed, pressure off by up "
       "to %.0f %%" % (len(errors), n, 100 * max(abs(e) for e in errors)))
 
+
+
+# The press fit in 3D: two curved hex27 spherical shells, non-matching on
+# r = b, mortar on their nine-node faces with multipliers.
+def press_fit_3d(folder, sets=()):
+    run(tribos, tests + "/press_fit_3d.prm", folder,
+        ["Scene/Mesh file=%s/press_fit_3d_hex27.msh" % tests] + list(sets))
+    rows = read_csv(folder + "/contact-00001.csv")
+    # Lame's thick sphere, per current area (radius r of the node).
+    exact = 0.01 / 7 * (8 / 3.375 - 1)
+    errors = [r["CPRESS"] / (exact * 2.25 / (r["x"] ** 2 + r["y"] ** 2 +
+                                             r["z"] ** 2)) - 1
+              for r in rows if r["CSTATUS"] != 0]
+    force = read_csv(folder + "/history.csv")[-1]["pair0_Fz"]
+    # The resultant along z: the pressure on the quarter disc under the
+    # octant of the sphere r = b.
+    force_error = abs(force) / (exact * math.pi * 2.25 / 4) - 1
+    rms = math.sqrt(sum(e * e for e in errors) / max(len(errors), 1))
+    return errors, len(rows), rms, force_error
+
+
+errors, n, rms, force_error = press_fit_3d(out + "/press_fit_3d_hex27")
+check(len(errors) == n and rms < 0.04 and abs(force_error) < 0.01,
+      "press fit of curved hex27 spherical shells, mortar on nine-node "
+      "faces, multipliers: all %d slave nodes closed, Lame's pressure to "
+      "%.1e RMS (< 0.04; %d %% of the nodes within 10 %%), the resultant "
+      "within %.1e (< 1e-2)" % (n, rms, 100 * sum(abs(e) < 0.1
+                                                  for e in errors) // n,
+                                force_error))
+errors, n, rms, force_error = press_fit_3d(
+    out + "/press_fit_3d_straight", ["Finite element/Polynomial degree=1"])
+check(len(errors) < n or rms > 0.5,
+      "press fit in 3D on the straight cells of the same mesh (Q1): the "
+      "faceted spheres do not fit, %d of %d slave nodes closed, pressure "
+      "%.1f RMS off" % (len(errors), n, rms))
 
 # Hertz on a rigid plane, load control.
 def hertz(folder, dim, mesh, sets=(), mpi_ranks=0):

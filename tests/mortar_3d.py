@@ -37,6 +37,14 @@ mortar, Mortar3D: auxiliary planes, polygon clipping, dual basis).
    3. with its slave's first column of cells refined, multipliers: no
    cutbacks, F_T / F_N = mu to 1e-6, and `-np 2` (distributed mesh) gives
    the serial history to 1e-8.
+5. Q2 hexahedra (Finite element/Polynomial degree = 2: nine-node faces,
+   the dual basis of their biquadratic functions, integrated on their
+   four bilinear pieces): the patch test of 1. on 5x5 / 3x3 with either
+   side the slave and on 4x4 / 7x7 with the finer side the slave, every
+   method and basis, to the same bounds (penalty: 1e-8, the penetration's
+   round-off summed over a modified basis of 25 nodes); the frictional sliding of 3.
+   with multipliers and penalty: no cutbacks, F_T / F_N = mu to 1e-6 in
+   the slide, and `-np 2` gives the serial history to 1e-8.
 """
 
 import os
@@ -242,4 +250,58 @@ if mpi_available():
             absolute=1e-8)
     print("ok      sliding 3D with hanging slave nodes: np 2 history equals "
           "the serial one")
+# 5. Q2 hexahedra: nine-node faces.
+q2 = "Finite element/Polynomial degree=2"
+for lower, upper, pairs in (("5, 5, 2", "3, 3, 2", ("14 : 5", "5 : 14")),
+                            ("4, 4, 2", "7, 7, 2", ("14 : 5",))):
+    for pair in pairs:
+        for method, basis in variants:
+            name = "q2_patch3d_%s_%s_%s_%s_%s" % (
+                lower.replace(", ", "x"), upper.replace(", ", "x"),
+                "upper" if pair.startswith("14") else "lower",
+                method.replace(" ", "_"), basis)
+            folder = out + "/" + name
+            run(tribos, prm, folder, [
+                q2, "Scene/Two blocks/Lower subdivisions=" + lower,
+                "Scene/Two blocks/Upper subdivisions=" + upper,
+                "Contact/Pairs=" + pair, "Contact/Method=" + method,
+                "Contact/Mortar basis=" + basis])
+            spread = spread_of(folder)
+            n_nodes = len(read_csv(folder + "/contact-00001.csv"))
+            history = read_csv(folder + "/history.csv")[-1]
+            total = abs(abs(history["pair0_Fz"]) - p) / p
+            its = history["newton_iterations"]
+            # Penalty: the pressure is eps_N times penetrations of 1e-6 of
+            # the coordinates, whose round-off the weighted gap of the
+            # modified basis sums over 25 nodes (measured 1.7e-9).
+            bound = 1e-10 if method == "lagrange multiplier" else 1e-8
+            check(spread < bound and total < 1e-8 and its <= 4,
+                  "%s: %d slave nodes (vertices, edge middles, face "
+                  "centres), pressure spread %.1e, resultant error %.1e, %d "
+                  "Newton iterations" % (name, n_nodes, spread, total, its))
+
+q2_sets = [q2, "Contact/Discretization=mortar"]
+for method in ("penalty", "lagrange multiplier"):
+    folder = out + "/q2_sliding3d_" + method.replace(" ", "_")
+    run(tribos, sliding, folder, q2_sets + ["Contact/Method=" + method])
+    history = read_csv(folder + "/history.csv")
+    ratios = [h["pair0_tangential_force"] / h["pair0_normal_force"]
+              for h in history if h["time"] > 1.2]
+    worst_ratio = max(abs(r - 0.3) for r in ratios)
+    check(all(h["cutbacks"] == 0 for h in history) and worst_ratio < 1e-6,
+          "sliding 3D on Q2 hexahedra, mortar %s: no cutbacks, |F_T / F_N - "
+          "mu| <= %.1e in the slide, %d Newton iterations"
+          % (method, worst_ratio, sum(h["newton_iterations"]
+                                      for h in history)))
+if mpi_available():
+    serial = out + "/q2_sliding3d_lagrange_multiplier"
+    parallel = out + "/q2_sliding3d_np2"
+    run(tribos, sliding, parallel,
+        q2_sets + ["Contact/Method=lagrange multiplier"], mpi_ranks=2)
+    strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
+    strip_columns(parallel + "/history.csv", parallel + "/h.csv", drop=noisy)
+    numdiff(parallel + "/h.csv", serial + "/h.csv", relative=1e-8,
+            absolute=1e-8)
+    print("ok      sliding 3D on Q2 hexahedra: np 2 history equals the "
+          "serial one")
 finish()

@@ -11,10 +11,12 @@
  * Lagrange multiplier law (the rows and columns of the node's multipliers
  * included). Then the same with each quadrilateral split into two
  * triangles (the faces of tetrahedra) on the slave side, the master side
- * or both, and with six-node triangles on both sides (P2 tetrahedra,
+ * or both, with six-node triangles on both sides (P2 tetrahedra,
  * curved: the modified dual basis and the integration on the faces'
- * four flat pieces). Asserts a relative error below 1e-6 and that the forces of
- * the element balance (sum_k D_jk = sum_l M_jl).
+ * four flat pieces), and with nine-node quadrilaterals on both sides (Q2
+ * hexahedra, curved: four bilinear pieces per face). Asserts a relative error
+ * below 1e-6 and that the forces of the element balance (sum_k D_jk = sum_l
+ * M_jl).
  */
 
 #include <tribos/contact/lagrange_multiplier.h>
@@ -166,24 +168,46 @@ random_input(std::mt19937                           &random,
 
 
 /**
- * As random_input(), with six-node triangles on both sides: the quadratic
- * faces of P2 tetrahedra, curved (their middle nodes off the chords).
+ * As random_input(), with quadratic faces on both sides, curved (their
+ * middle nodes off the chords): six-node triangles (the faces of P2
+ * tetrahedra), or with @p nine_node biquadratic quadrilaterals (Q2
+ * hexahedra).
  */
 MortarInput3D
 random_quadratic_input(std::mt19937                           &random,
                        std::uniform_real_distribution<double> &u,
                        const unsigned int                      sample,
                        bool                                   &short_master,
-                       double                                 &h_slave)
+                       double                                 &h_slave,
+                       const bool                              nine_node)
 {
   // The quadrilateral with corners (g0, g1, g2, g3) (lexicographic) of a
   // grid of nodes (the middles at the averaged grid indices) as the
-  // six-node triangles (0, 1, 3) and (0, 3, 2).
-  const auto add_faces = [](const std::array<std::array<unsigned int, 2>, 4> &g,
-                            const auto   &number,
-                            MortarFace3D *faces,
-                            unsigned int &n_faces)
+  // six-node triangles (0, 1, 3) and (0, 3, 2), or as itself with its
+  // edge middles (0-1, 2-3, 0-2, 1-3) and centre.
+  const auto add_faces =
+    [nine_node](const std::array<std::array<unsigned int, 2>, 4> &g,
+                const auto                                       &number,
+                MortarFace3D                                     *faces,
+                unsigned int                                     &n_faces)
   {
+    const auto middle = [&](const unsigned int a, const unsigned int b)
+    {
+      return number((g[a][0] + g[b][0]) / 2, (g[a][1] + g[b][1]) / 2);
+    };
+    if (nine_node)
+    {
+      MortarFace3D &face = faces[n_faces++];
+      face.n             = 9;
+      for (unsigned int v = 0; v < 4; ++v)
+        face.nodes[v] = number(g[v][0], g[v][1]);
+      face.nodes[4] = middle(0, 1);
+      face.nodes[5] = middle(2, 3);
+      face.nodes[6] = middle(0, 2);
+      face.nodes[7] = middle(1, 3);
+      face.nodes[8] = middle(0, 3);
+      return;
+    }
     for (const std::array<unsigned int, 3> t :
          {std::array<unsigned int, 3>{{0, 1, 3}},
           std::array<unsigned int, 3>{{0, 3, 2}}})
@@ -225,7 +249,7 @@ random_quadratic_input(std::mt19937                           &random,
   for (unsigned int f = 0; f < input.n_slave_faces; ++f)
   {
     input.n_carriers[f] = 0;
-    for (unsigned int v = 0; v < 6; ++v)
+    for (unsigned int v = 0; v < input.slave_face[f].n; ++v)
       if (input.slave_face[f][v] == 0)
         input.carriers[f][input.n_carriers[f]++] = {v, 1.};
   }
@@ -275,13 +299,17 @@ main()
 
   bool ok = true;
   // Round 0: quadrilaterals; round 1: triangles on the slave side, the
-  // master side or both; round 2: six-node triangles on both sides.
-  for (unsigned int round = 0; round < 3; ++round)
+  // master side or both; round 2: six-node triangles on both sides; round
+  // 3: nine-node quadrilaterals on both sides.
+  for (unsigned int round = 0; round < 4; ++round)
   {
     double       worst_error = 0, worst_balance = 0;
     unsigned int n_checked = 0, n_status[4] = {0, 0, 0, 0}, n_partial = 0,
                  n_carrying      = 0;
-    const unsigned int n_samples = round == 2 ? 12 : round == 1 ? 30 : 80;
+    const unsigned int n_samples = round == 3 ? 8 :
+                                   round == 2 ? 12 :
+                                   round == 1 ? 30 :
+                                                80;
     for (unsigned int sample = 0; sample < n_samples; ++sample)
     {
       const bool            slave_triangles  = round == 1 && sample % 3 != 1;
@@ -293,17 +321,21 @@ main()
 
       bool                carries = false, short_master = false;
       double              h_slave;
-      const MortarInput3D input =
-        round == 2 ?
-          random_quadratic_input(random, u, sample, short_master, h_slave) :
-          random_input(random,
-                       u,
-                       sample,
-                       carries,
-                       short_master,
-                       h_slave,
-                       slave_triangles,
-                       master_triangles);
+      const MortarInput3D input = round >= 2 ?
+                                    random_quadratic_input(random,
+                                                           u,
+                                                           sample,
+                                                           short_master,
+                                                           h_slave,
+                                                           round == 3) :
+                                    random_input(random,
+                                                 u,
+                                                 sample,
+                                                 carries,
+                                                 short_master,
+                                                 h_slave,
+                                                 slave_triangles,
+                                                 master_triangles);
       n_carrying += carries;
       n_partial += short_master;
       ContactLaw law;
@@ -360,6 +392,7 @@ main()
     std::cout << "checked " << n_checked << " 3D mortar elements"
               << (round == 1 ? " on triangles" :
                   round == 2 ? " on six-node triangles" :
+                  round == 3 ? " on nine-node quadrilaterals" :
                                "")
               << " (open " << n_status[0] << ", stick " << n_status[1]
               << ", slip " << n_status[2] << ", frictionless " << n_status[3]

@@ -57,15 +57,20 @@ namespace tribos
     // integrate to zero against 2 pi r: that node carries no multiplier,
     // the others then miss a partition of unity and Newton does not
     // converge even on the patch test. The dual basis has no such node.
-    // The nine-node faces of Q2 hexahedra: against rigid surfaces only.
-    AssertThrow(!pair.slave->quadratic_quadrilaterals() &&
-                  (!pair.master || !pair.master->quadratic_quadrilaterals()),
-                ExcMessage("Contact pair <" + pair.description.text +
-                           ">: contact on the nine-node faces of Q2 "
-                           "hexahedra (Polynomial degree = 2 in 3D) works "
-                           "against rigid surfaces only; between two "
-                           "deformable bodies use Polynomial degree = 1, "
-                           "or tetrahedra (P2 takes mortar contact)."));
+    // A hanging node of a nine-node face hangs on up to nine parents with
+    // weights of both signs; the parents' carried functions are written
+    // for the bilinear faces of Q1 (at most four per face).
+    if (pair.slave->quadratic_quadrilaterals())
+      for (const auto &carried : pair.carried)
+        AssertThrow(carried.empty(),
+                    ExcMessage("Contact pair <" + pair.description.text +
+                               ">: mortar contact on the nine-node faces "
+                               "of Q2 hexahedra needs a slave surface "
+                               "without hanging nodes, which local "
+                               "refinement makes: set the scene's local "
+                               "refinements to 0 (Scene/Refinement refines "
+                               "uniformly), or make the other body the "
+                               "slave."));
     AssertThrow(!pair.slave->quadratic() || !axisymmetric || dual,
                 ExcMessage("Contact pair <" + pair.description.text +
                            ">: Contact/Mortar basis = standard is not "

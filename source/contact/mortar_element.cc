@@ -26,8 +26,8 @@ namespace tribos
       const ContactAD    *M        = integrals.M;
       const auto         *xs       = integrals.xs;
       const auto         *xm       = integrals.xm;
-      const Vec3<double> *xs_old   = integrals.input.xs_old;
-      const Vec3<double> *xm_old   = integrals.input.xm_old;
+      const Vec3<double> *xs_old   = integrals.input->xs_old;
+      const Vec3<double> *xm_old   = integrals.input->xm_old;
       Vec3<ContactAD>    &normal_j = integrals.normal_j;
       ContactPointResult  result;
       const AD            zero(0.);
@@ -37,7 +37,7 @@ namespace tribos
       AD w = zero;
       for (unsigned int i = 0; i < n_s; ++i)
         w += D[i];
-      paired = w.val() >= integrals.input.min_weight && w.val() > 0;
+      paired = w.val() >= integrals.input->min_weight && w.val() > 0;
       if (!paired)
         return result;
 
@@ -266,7 +266,8 @@ namespace tribos
                      bool                 &paired,
                      Vec3<double>         &weighted_point)
   {
-    MortarIntegrals<2> integrals(input, enforcement.n_node_unknowns());
+    MortarIntegrals<2> &integrals =
+      MortarIntegrals<2>::for_element(input, enforcement.n_node_unknowns());
     if (input.n_segment_nodes == 3)
       internal::integrate_quadratic(input,
                                     integrals.xs,

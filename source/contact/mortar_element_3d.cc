@@ -26,13 +26,18 @@ namespace tribos
     template <typename Number>
     using Point = std::array<Number, 2>;
 
+    /** The most nodes of a face (the nine-node quadrilateral). */
+    constexpr unsigned int max_face_nodes = MortarFace3D::max_nodes;
+
     using internal::counter_clockwise;
     template <typename Number>
     using Plane = internal::AuxiliaryPlane<Number>;
 
     /** Shape functions of a face of @p n nodes: MasterFace<3> (4),
-     * TriangleFace (3), or the quadratic triangle (6: vertices, then the
-     * middles of the edges 0-1, 1-2, 2-0; no derivatives). */
+     * TriangleFace (3), the quadratic triangle (6: vertices, then the
+     * middles of the edges 0-1, 1-2, 2-0) or the biquadratic
+     * quadrilateral (9: MortarFace3D's order); no derivatives of the
+     * quadratic ones. */
     template <typename Number>
     void
     face_shape(const unsigned int n,
@@ -44,6 +49,22 @@ namespace tribos
         TriangleFace::shape(xi, N, dN);
       else if (n == 4)
         MasterFace<3>::shape(xi, N, dN);
+      else if (n == 9)
+      {
+        // The 1D functions of the nodes at -1, 1 and 0, in each direction;
+        // node i sits at (at_1[i], at_2[i]).
+        Number l[2][3];
+        for (unsigned int d = 0; d < 2; ++d)
+        {
+          l[d][0] = 0.5 * xi[d] * (xi[d] - 1.);
+          l[d][1] = 0.5 * xi[d] * (xi[d] + 1.);
+          l[d][2] = (1. - xi[d]) * (1. + xi[d]);
+        }
+        constexpr unsigned int at_1[9] = {0, 1, 0, 1, 2, 2, 0, 1, 2},
+                               at_2[9] = {0, 0, 1, 1, 0, 1, 2, 2, 2};
+        for (unsigned int i = 0; i < 9; ++i)
+          N[i] = l[0][at_1[i]] * l[1][at_2[i]];
+      }
       else
       {
         const Number l[3] = {1. - xi[0] - xi[1], xi[0], xi[1]};
@@ -59,7 +80,9 @@ namespace tribos
      * A flat piece of a face, what the overlaps are clipped and integrated
      * on: a linear face is one piece, itself; a quadratic triangle is four,
      * the triangles of its vertices and edge middles (Popp et al.'s
-     * integration on linear sub-elements). The piece's n nodes as positions
+     * integration on linear sub-elements); a nine-node quadrilateral four
+     * bilinear quadrilaterals, each with a vertex, two edge middles and
+     * the centre. The piece's n nodes as positions
      * in its face and their coordinates in the face's map.
      */
     struct Piece
@@ -77,6 +100,15 @@ namespace tribos
         pieces[0] = {4, {0, 1, 2, 3}, {{-1, -1}, {1, -1}, {-1, 1}, {1, 1}}};
       else if (n == 3)
         pieces[0] = {3, {0, 1, 2, 0}, {{0, 0}, {1, 0}, {0, 1}, {0, 0}}};
+      else if (n == 9)
+      {
+        // Lexicographic as the face, so their normals are the face's.
+        pieces[0] = {4, {0, 4, 6, 8}, {{-1, -1}, {0, -1}, {-1, 0}, {0, 0}}};
+        pieces[1] = {4, {4, 1, 8, 7}, {{0, -1}, {1, -1}, {0, 0}, {1, 0}}};
+        pieces[2] = {4, {6, 8, 2, 5}, {{-1, 0}, {0, 0}, {-1, 1}, {0, 1}}};
+        pieces[3] = {4, {8, 7, 5, 3}, {{0, 0}, {1, 0}, {0, 1}, {1, 1}}};
+        return 4;
+      }
       else
       {
         // Counter-clockwise as the face: the corners' and the middle one.
@@ -193,6 +225,43 @@ namespace tribos
                                                 {{b_2, b_2, a_2}, w_2}};
 
     /**
+     * A rule on the triangle exact to degree 8, for the products of two
+     * biquadratic functions (degree 4 in each direction): 5 x 5 Gauss
+     * points on the square collapsed onto the triangle (Duffy: x = u (1 -
+     * v), y = v, dx dy = (1 - v) du dv takes degree 8 to degree 8 in u and
+     * 9 in v, which 5 points integrate exactly).
+     */
+    const std::vector<TrianglePoint> &
+    biquadratic_triangle_rule()
+    {
+      static const std::vector<TrianglePoint> rule = []()
+      {
+        const double               x[5] = {-0.9061798459386639927976,
+                                           -0.5384693101056830910363,
+                                           0.,
+                                           0.5384693101056830910363,
+                                           0.9061798459386639927976};
+        const double               w[5] = {0.2369268850561890875143,
+                                           0.4786286704993664680413,
+                                           0.5688888888888888888889,
+                                           0.4786286704993664680413,
+                                           0.2369268850561890875143};
+        std::vector<TrianglePoint> points;
+        for (unsigned int a = 0; a < 5; ++a)
+          for (unsigned int b = 0; b < 5; ++b)
+          {
+            const double u = 0.5 * (1. + x[a]), v = 0.5 * (1. + x[b]);
+            // Weights on [0, 1]^2 (1/4 w_a w_b), Jacobian 1 - v, over the
+            // triangle's area 1/2.
+            points.push_back({{(1. - u) * (1. - v), u * (1. - v), v},
+                              0.5 * w[a] * w[b] * (1. - v)});
+          }
+        return points;
+      }();
+      return rule;
+    }
+
+    /**
      * The overlap of the slave piece @p ps (of a face of @p n_s nodes) of
      * @p plane with the master piece @p pm (of a face of @p n_m nodes) with
      * nodes @p Y: its area and the integrals of the slave face's functions
@@ -236,12 +305,21 @@ namespace tribos
                                        (v_1[1] - v_0[1]) * (v_2[0] - v_0[0]));
         if (triangle.val() <= 0)
           continue;
-        for (const TrianglePoint &t : triangle_rule)
+        // The 7-point rule integrates the products of linear and of
+        // six-node triangle functions exactly on flat faces (degree <= 4),
+        // nine-node quadrilaterals' need degree 8.
+        static const std::vector<TrianglePoint> seven_points(
+          std::begin(triangle_rule),
+          std::end(triangle_rule));
+        const std::vector<TrianglePoint> &rule =
+          (n_s == 9 || n_m == 9) ? biquadratic_triangle_rule() : seven_points;
+        for (const TrianglePoint &t : rule)
         {
           Point<FaceAD> p;
           for (unsigned int d = 0; d < 2; ++d)
             p[d] = t.l[0] * v_0[d] + t.l[1] * v_1[d] + t.l[2] * v_2[d];
-          FaceAD x_s[2], x_m[2], xi_s[2], xi_m[2], N_s[6], N_m[6], dN[6][2];
+          FaceAD x_s[2], x_m[2], xi_s[2], xi_m[2], N_s[max_face_nodes],
+            N_m[max_face_nodes], dN[max_face_nodes][2];
           inverse_map(plane.P, ps.n, p, x_s);
           inverse_map(Q, pm.n, p, x_m);
           face_coordinates(ps, x_s, xi_s);
@@ -267,7 +345,8 @@ namespace tribos
     struct Overlap
     {
       unsigned int face;
-      AD           area, slave[6][6], master[6][6];
+      AD           area, slave[max_face_nodes][max_face_nodes],
+        master[max_face_nodes][max_face_nodes];
     };
 
 
@@ -304,7 +383,9 @@ namespace tribos
      * The master faces of @p integrals' input that overlap its slave face
      * @p f (its pieces @p pieces, their auxiliary planes @p planes at the
      * values), with their integrals in the node's numbers, into
-     * @p overlaps; returns the area they cover. Each (slave piece, master
+     * the first @p n_overlaps of @p overlaps (kept between calls: an
+     * Overlap holds 163 AD numbers, whose construction zeroes 0.5 MB);
+     * returns the area they cover. Each (slave piece, master
      * piece) pair from the cache if another node of this face has looked
      * at it in this assembly; otherwise the test on the values first
      * (most faces of the node's list miss this slave face), then the
@@ -316,11 +397,12 @@ namespace tribos
                   const Piece              *pieces,
                   const unsigned int        n_pieces,
                   const Plane<double>      *planes,
-                  std::vector<Overlap>     &overlaps)
+                  std::vector<Overlap>     &overlaps,
+                  unsigned int             &n_overlaps)
     {
-      const MortarInput3D &input = integrals.input;
+      const MortarInput3D &input = *integrals.input;
       const auto          &q     = input.slave_face[f];
-      overlaps.clear();
+      n_overlaps                 = 0;
       AD covered(0.);
       for (unsigned int m = 0; m < input.n_master_faces; ++m)
       {
@@ -379,8 +461,9 @@ namespace tribos
             if (!found)
             {
               found = true;
-              overlaps.emplace_back();
-              Overlap &o = overlaps.back();
+              if (n_overlaps == overlaps.size())
+                overlaps.emplace_back();
+              Overlap &o = overlaps[n_overlaps++];
               o.face     = m;
               o.area     = AD(0.);
               for (unsigned int i = 0; i < q.n; ++i)
@@ -391,7 +474,7 @@ namespace tribos
                   o.master[i][k] = AD(0.);
               }
             }
-            Overlap &o = overlaps.back();
+            Overlap &o = overlaps[n_overlaps - 1];
             o.area += carry(entry->area, integrals, q, ps, c, pm);
             for (unsigned int i = 0; i < q.n; ++i)
             {
@@ -405,7 +488,7 @@ namespace tribos
           }
         }
         if (found)
-          covered += overlaps.back().area;
+          covered += overlaps[n_overlaps - 1].area;
       }
       return covered;
     }
@@ -416,17 +499,41 @@ namespace tribos
      * The basis the dual functions of a face of @p n nodes are
      * biorthogonal to, as Ntilde = T N: the face's own on a linear face
      * (T = 1); on the quadratic triangle the modified basis of
-     * TriangleFace::modified_basis_alpha. The quadratic vertex functions
-     * integrate to zero over a flat face, so dual functions biorthogonal to
-     * them do not exist; the modified ones are positive on average and
-     * still sum to one.
+     * TriangleFace::modified_basis_alpha, on the nine-node quadrilateral
+     * the tensor product of the quadratic segment's with that alpha. The
+     * quadratic vertex functions integrate to zero over a flat face, so dual
+     * functions biorthogonal to them do not exist; the modified ones are
+     * positive on average and still sum to one.
      */
     void
-    modified_basis(const unsigned int n, double (&T)[6][6])
+    modified_basis(const unsigned int n,
+                   double (&T)[max_face_nodes][max_face_nodes])
     {
-      for (unsigned int i = 0; i < 6; ++i)
-        for (unsigned int k = 0; k < 6; ++k)
+      for (unsigned int i = 0; i < max_face_nodes; ++i)
+        for (unsigned int k = 0; k < max_face_nodes; ++k)
           T[i][k] = (i == k && i < n) ? 1. : 0.;
+      if (n == 9)
+      {
+        // The tensor product of the quadratic segment's modified functions
+        // (ends N_e + alpha N_m, middle (1 - 2 alpha) N_m) with the same
+        // alpha: the biquadratic vertex functions integrate to only A/36
+        // (the centre's 4A/9), and the vertices' multipliers, divided by so
+        // little, scatter on distorted faces (the 3D press fit of
+        // tests/curved_meshes.py: 8.2 % RMS at the vertices, 2.6 % with
+        // this basis, whose integrals are 9A/100 at the vertices, 3A/25 at
+        // the edge middles and 4A/25 at the centre of a flat face of area
+        // A).
+        const double           alpha     = TriangleFace::modified_basis_alpha;
+        const double           T_1[3][3] = {{1., 0., alpha},
+                                            {0., 1., alpha},
+                                            {0., 0., 1. - 2. * alpha}};
+        constexpr unsigned int at_1[9]   = {0, 1, 0, 1, 2, 2, 0, 1, 2},
+                               at_2[9]   = {0, 0, 1, 1, 0, 1, 2, 2, 2};
+        for (unsigned int i = 0; i < 9; ++i)
+          for (unsigned int k = 0; k < 9; ++k)
+            T[i][k] = T_1[at_1[i]][at_1[k]] * T_1[at_2[i]][at_2[k]];
+        return;
+      }
       if (n != 6)
         return;
       const double alpha = TriangleFace::modified_basis_alpha;
@@ -460,9 +567,19 @@ namespace tribos
     {
       const AD           zero(0.);
       const unsigned int n = input.slave_face[f].n;
-      double             T[6][6];
+      double             T[max_face_nodes][max_face_nodes];
       modified_basis(n, T);
-      AD coefficients[6]; // of Phi in the modified basis
+      // Scratch of this thread (AD numbers zero their derivatives when
+      // constructed: some 200 of them per call).
+      static thread_local struct
+      {
+        AD coefficients[max_face_nodes]; // of Phi in the modified basis
+        AD mass[max_face_nodes][max_face_nodes];
+        AD row_sum[max_face_nodes];
+        AD lower[max_face_nodes][max_face_nodes];
+        AD y[max_face_nodes];
+      } scratch;
+      auto &coefficients = scratch.coefficients;
       for (unsigned int i = 0; i < n; ++i)
         coefficients[i] = zero;
       if (theta.val() <= 0)
@@ -472,9 +589,10 @@ namespace tribos
       else
       {
         // The mass matrix, exactly on flat pieces: 2 x 2 Gauss on a
-        // bilinear quadrilateral, the 7-point rule on a triangle piece
-        // (degree 4 on the quadratic triangle).
-        AD mass[6][6];
+        // bilinear quadrilateral, 3 x 3 on the pieces of a nine-node one
+        // (degree 4 in each direction, 5 with the Jacobian), the 7-point
+        // rule on a triangle piece (degree 4 on the quadratic triangle).
+        auto &mass = scratch.mass;
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int k = 0; k < n; ++k)
             mass[i][k] = zero;
@@ -488,6 +606,16 @@ namespace tribos
                       {{-g, g, 1.}},
                       {{g, g, 1.}}};
         }();
+        static const Rule biquadratic_rule = []()
+        {
+          const double g    = std::sqrt(0.6);
+          const double x[3] = {-g, 0., g}, w[3] = {5. / 9., 8. / 9., 5. / 9.};
+          Rule         rule;
+          for (unsigned int b = 0; b < 3; ++b)
+            for (unsigned int a = 0; a < 3; ++a)
+              rule.push_back({{x[a], x[b], w[a] * w[b]}});
+          return rule;
+        }();
         static const Rule triangle_piece_rule = []()
         {
           Rule rule;
@@ -498,12 +626,14 @@ namespace tribos
         for (unsigned int s = 0; s < n_pieces; ++s)
         {
           const Piece &piece = pieces[s];
-          const Rule  &rule =
-            piece.n == 4 ? quadrilateral_rule : triangle_piece_rule;
+          const Rule  &rule  = piece.n == 3 ? triangle_piece_rule :
+                               n == 9       ? biquadratic_rule :
+                                              quadrilateral_rule;
           for (const auto &point : rule)
           {
             const double x[2] = {point[0], point[1]};
-            double       N_piece[4], dN[6][2], xi[2], N[6], Nt[6];
+            double N_piece[4], dN[max_face_nodes][2], xi[2], N[max_face_nodes],
+              Nt[max_face_nodes];
             face_shape(piece.n, x, N_piece, dN);
             AD J[2][2] = {{zero, zero}, {zero, zero}};
             for (unsigned int k = 0; k < piece.n; ++k)
@@ -524,7 +654,7 @@ namespace tribos
                 mass[i][k] += (point[2] * Nt[i] * Nt[k]) * det;
           }
         }
-        AD row_sum[6];
+        auto &row_sum = scratch.row_sum;
         for (unsigned int i = 0; i < n; ++i)
         {
           row_sum[i] = zero;
@@ -532,7 +662,7 @@ namespace tribos
             row_sum[i] += mass[i][k];
         }
         // M_e = L U (symmetric positive definite: no pivoting).
-        AD lower[6][6];
+        auto &lower = scratch.lower;
         for (unsigned int p = 0; p < n; ++p)
           for (unsigned int i = p + 1; i < n; ++i)
           {
@@ -544,7 +674,7 @@ namespace tribos
         {
           const auto [j_local, weight] = input.carriers[f][c];
           // y = M_e^-1 e_j.
-          AD y[6];
+          auto &y = scratch.y;
           for (unsigned int k = 0; k < n; ++k)
             y[k] = zero;
           y[j_local] = 1.;
@@ -581,9 +711,14 @@ namespace tribos
                      bool                 &paired,
                      Vec3<double>         &weighted_point)
   {
-    MortarIntegrals<3> integrals(input, enforcement.n_node_unknowns());
-    const AD           zero(0.);
+    MortarIntegrals<3> &integrals =
+      MortarIntegrals<3>::for_element(input, enforcement.n_node_unknowns());
+    const AD                                 zero(0.);
     static thread_local std::vector<Overlap> overlaps;
+    unsigned int                             n_overlaps = 0;
+    // The pieces' planes and the face's row, kept as the overlaps are.
+    static thread_local Plane<AD> planes[4];
+    static thread_local AD        a[max_face_nodes];
     for (unsigned int f = 0; f < input.n_slave_faces; ++f)
     {
       const auto        &q = input.slave_face[f];
@@ -591,7 +726,6 @@ namespace tribos
       const unsigned int n_pieces = face_pieces(q.n, pieces);
       // Each piece's auxiliary plane, in the node's numbers and at the
       // values; the face's area and normal (area-weighted) from them.
-      Plane<AD>     planes[4];
       Plane<double> plane_values[4];
       AD            area = zero;
       Vec3<AD>      face_normal{{zero, zero, zero}};
@@ -613,22 +747,27 @@ namespace tribos
       }
       if (degenerate)
         continue;
-      face_normal = scale(1. / norm(face_normal), face_normal);
-      const AD covered =
-        find_overlaps(integrals, f, pieces, n_pieces, plane_values, overlaps);
-      if (overlaps.empty())
+      face_normal      = scale(1. / norm(face_normal), face_normal);
+      const AD covered = find_overlaps(integrals,
+                                       f,
+                                       pieces,
+                                       n_pieces,
+                                       plane_values,
+                                       overlaps,
+                                       n_overlaps);
+      if (n_overlaps == 0)
         continue;
 
       const AD theta = internal::dual_weight(input.dual, covered / area);
-      AD       a[6];
       for (unsigned int i = 0; i < q.n; ++i)
         a[i] = zero;
       carried_row(input, f, pieces, n_pieces, planes, theta, a);
 
       AD face_weight = zero;
-      for (const Overlap &o : overlaps)
+      for (unsigned int v = 0; v < n_overlaps; ++v)
       {
-        const auto &c = input.master_face[o.face];
+        const Overlap &o = overlaps[v];
+        const auto    &c = input.master_face[o.face];
         for (unsigned int i = 0; i < q.n; ++i)
         {
           if (a[i].val() == 0 && a[i].size() == 0)

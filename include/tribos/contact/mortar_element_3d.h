@@ -22,8 +22,9 @@ namespace tribos
   struct MortarOverlapCache
   {
     /** The AD number of one overlap: the coordinates of its slave and
-     * master pieces' nodes (a face, or a triangle of a quadratic one), 4 +
-     * 4 at most, the master's from 12 on. */
+     * master pieces' nodes (a face, or a flat piece of a quadratic one: a
+     * triangle of a six-node triangle, a bilinear quarter of a nine-node
+     * quadrilateral), 4 + 4 at most, the master's from 12 on. */
     using FaceAD = Sacado::Fad::SLFad<double, 24>;
 
     /** Whether the pieces overlap and, if so, the overlap's area and the
@@ -46,13 +47,17 @@ namespace tribos
   /**
    * A face of the mortar element: its nodes' local numbers, 4 of a
    * bilinear quadrilateral (lexicographic), 3 of a triangle
-   * (TriangleFace) or 6 of a quadratic triangle (vertices, then the
-   * middles of the edges 0-1, 1-2, 2-0).
+   * (TriangleFace), 6 of a quadratic triangle (vertices, then the
+   * middles of the edges 0-1, 1-2, 2-0) or 9 of a biquadratic
+   * quadrilateral (the lexicographic vertices, the middles of the edges
+   * 0-1, 2-3, 0-2, 1-3, the centre: ContactSurface::Face's order).
    */
   struct MortarFace3D
   {
-    std::array<unsigned int, 6> nodes{};
-    unsigned int                n = 4;
+    /** The most nodes of a face: the nine-node quadrilateral's. */
+    static constexpr unsigned int       max_nodes = 9;
+    std::array<unsigned int, max_nodes> nodes{};
+    unsigned int                        n = 4;
     unsigned int
     operator[](const unsigned int i) const
     {
@@ -140,6 +145,12 @@ namespace tribos
    * face's mass matrix in the plane's measure, 2 x 2 Gauss, exact), blended
    * towards the standard functions on faces the master covers only in part
    * (theta = 2 c - 1 for a covered fraction c in [1/2, 1]), as in 2D.
+   *
+   * Quadratic faces (six-node triangles, nine-node quadrilaterals) are
+   * clipped and integrated on their four flat pieces, the quadratic
+   * functions evaluated at each point's coordinates in the face, and
+   * their dual functions are biorthogonal to a modified basis
+   * (modified_basis() in the source; doc/simplex.md).
    *
    * Everything, the projections, the clipping and the inverse maps
    * included, is Sacado AD of the positions: the tangent is exact. Each
