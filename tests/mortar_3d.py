@@ -44,11 +44,13 @@ mortar, Mortar3D: auxiliary planes, polygon clipping, dual basis).
    method and basis, to the same bounds (penalty: 1e-8, the penetration's
    round-off summed over a modified basis of 25 nodes); the frictional sliding of 3.
    with multipliers and penalty: no cutbacks, F_T / F_N = mu to 1e-6 in
-   the slide, and `-np 2` gives the serial history to 1e-8.
+   the slide, `-np 2` gives the serial history to 1e-8, and a restart
+   from step 3 (in the slide) the uninterrupted one bit for bit.
 """
 
 import os
 import re
+import shutil
 import sys
 
 from tribos_test import (setup, run, read_csv, check, finish, mpi_available,
@@ -280,7 +282,7 @@ for lower, upper, pairs in (("5, 5, 2", "3, 3, 2", ("14 : 5", "5 : 14")),
                   "centres), pressure spread %.1e, resultant error %.1e, %d "
                   "Newton iterations" % (name, n_nodes, spread, total, its))
 
-q2_sets = [q2, "Contact/Discretization=mortar"]
+q2_sets = [q2, "Contact/Discretization=mortar", "Output/Checkpoint every=1"]
 for method in ("penalty", "lagrange multiplier"):
     folder = out + "/q2_sliding3d_" + method.replace(" ", "_")
     run(tribos, sliding, folder, q2_sets + ["Contact/Method=" + method])
@@ -293,8 +295,24 @@ for method in ("penalty", "lagrange multiplier"):
           "mu| <= %.1e in the slide, %d Newton iterations"
           % (method, worst_ratio, sum(h["newton_iterations"]
                                       for h in history)))
+# Restarted in the slide (from step 3, its frictional history included):
+# the uninterrupted history bit for bit.
+serial = out + "/q2_sliding3d_lagrange_multiplier"
+restarted = out + "/q2_sliding3d_restart"
+shutil.copytree(serial, restarted)
+log = run(tribos, sliding, restarted,
+          q2_sets + ["Contact/Method=lagrange multiplier"],
+          extra=["--restart", serial + "/checkpoint-00003"]).stdout
+history = read_csv(serial + "/history.csv")
+again = read_csv(restarted + "/history.csv")
+forces = [k for k in history[0] if k.startswith(("RF", "pair0"))]
+# It resumed: the run computed step 4 only.
+check(re.findall(r"^step +(\d+)/", log, re.M) == ["4"] and
+      len(again) == len(history) and all(
+          a[k] == b[k] for a, b in zip(history, again) for k in forces),
+      "sliding 3D on Q2 hexahedra: restarted from step 3, step 4 computed, "
+      "every force of history.csv bit for bit")
 if mpi_available():
-    serial = out + "/q2_sliding3d_lagrange_multiplier"
     parallel = out + "/q2_sliding3d_np2"
     run(tribos, sliding, parallel,
         q2_sets + ["Contact/Method=lagrange multiplier"], mpi_ranks=2)
