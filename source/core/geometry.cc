@@ -4,6 +4,7 @@
  * evaluation on the cells takes.
  */
 
+#include <tribos/base/cells_from_first_process.h>
 #include <tribos/core/problem.h>
 
 #include <deal.II/base/mpi.h>
@@ -23,27 +24,24 @@ namespace tribos
     // CellId, the same in the serial and the distributed mesh).
     if (Utilities::MPI::broadcast(mpi_communicator, serial_curved.empty(), 0))
       return;
-    std::vector<CellId::binary_type> mine;
+    std::vector<CellId> mine;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
-        mine.push_back(cell->id().template to_binary<dim>());
-    const auto requests = Utilities::MPI::gather(mpi_communicator, mine, 0);
-    std::map<unsigned int, std::vector<double>> answers;
-    for (unsigned int rank = 0; rank < requests.size(); ++rank)
-      for (const auto &id : requests[rank])
+        mine.push_back(cell->id());
+    const std::vector<double> x = cells_from_first_process(
+      mpi_communicator,
+      serial,
+      mine,
+      [&](const auto &cell, std::vector<double> &numbers)
       {
-        const auto cell = serial.create_cell_iterator(CellId(id));
-        for (const auto &x :
+        for (const auto &point :
              serial_curved.support_points[cell->active_cell_index()])
           for (unsigned int d = 0; d < dim; ++d)
-            answers[rank].push_back(x[d]);
-      }
-    const auto received =
-      Utilities::MPI::some_to_some(mpi_communicator, answers);
+            numbers.push_back(point[d]);
+      });
     curved_cells.support_points.assign(triangulation.n_active_cells(), {});
     if (mine.empty())
       return;
-    const auto        &x    = received.at(0);
     const unsigned int n    = x.size() / (dim * mine.size());
     unsigned int       next = 0;
     for (const auto &cell : triangulation.active_cell_iterators())

@@ -1,3 +1,4 @@
+#include <tribos/base/cells_from_first_process.h>
 #include <tribos/base/import_constraints.h>
 #include <tribos/base/text.h>
 #include <tribos/core/problem.h>
@@ -297,32 +298,26 @@ namespace tribos
       Utilities::MPI::broadcast(mpi_communicator, serial.n_levels(), 0);
     if (n_levels > 1)
     {
-      std::vector<CellId::binary_type> mine;
+      std::vector<CellId> mine;
       for (const auto &cell : triangulation.active_cell_iterators())
         if (!cell->is_artificial() && cell->level() > 0)
-          mine.push_back(cell->id().template to_binary<dim>());
-      const auto requests = Utilities::MPI::gather(mpi_communicator, mine, 0);
-      std::map<unsigned int, std::vector<double>> answers;
-      for (unsigned int rank = 0; rank < requests.size(); ++rank)
-        for (const auto &id : requests[rank])
+          mine.push_back(cell->id());
+      const std::vector<double> x = cells_from_first_process(
+        mpi_communicator,
+        serial,
+        mine,
+        [](const auto &cell, std::vector<double> &numbers)
         {
-          const auto cell = serial.create_cell_iterator(CellId(id));
           for (const unsigned int v : cell->vertex_indices())
             for (unsigned int d = 0; d < dim; ++d)
-              answers[rank].push_back(cell->vertex(v)[d]);
-        }
-      const auto received =
-        Utilities::MPI::some_to_some(mpi_communicator, answers);
-      if (!mine.empty())
-      {
-        const auto  &x    = received.at(0);
-        unsigned int next = 0;
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (!cell->is_artificial() && cell->level() > 0)
-            for (const unsigned int v : cell->vertex_indices())
-              for (unsigned int d = 0; d < dim; ++d)
-                cell->vertex(v)[d] = x[next++];
-      }
+              numbers.push_back(cell->vertex(v)[d]);
+        });
+      unsigned int next = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (!cell->is_artificial() && cell->level() > 0)
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              cell->vertex(v)[d] = x[next++];
     }
     distribute_curved_cells(serial, serial_curved);
   }
