@@ -332,19 +332,6 @@ namespace tribos
 
   namespace
   {
-    /** The quadratic functions of a segment's ends (xi = -1, +1) and
-     * middle (0), and their derivatives. */
-    void
-    quadratic_1d(const double xi, double *L, double *dL)
-    {
-      L[0]  = 0.5 * xi * (xi - 1.);
-      L[1]  = 0.5 * xi * (xi + 1.);
-      L[2]  = 1. - xi * xi;
-      dL[0] = xi - 0.5;
-      dL[1] = xi + 0.5;
-      dL[2] = -2. * xi;
-    }
-
     const QGauss<1> &
     line_rule()
     {
@@ -398,7 +385,7 @@ namespace tribos
       if (n_nodes == 3)
       {
         double dL[3];
-        quadratic_1d(2 * line_rule().point(q)[0] - 1, N, dL);
+        quadratic_segment_shape(2 * line_rule().point(q)[0] - 1, N, dL);
         for (unsigned int i = 0; i < 3; ++i)
           dN[i][0] = dL[i];
         weight = 2 * line_rule().weight(q);
@@ -429,8 +416,8 @@ namespace tribos
         const unsigned int a_of[9] = {0, 1, 0, 1, 2, 2, 0, 1, 2};
         const unsigned int b_of[9] = {0, 0, 1, 1, 0, 1, 2, 2, 2};
         double             L1[3], dL1[3], L2[3], dL2[3];
-        quadratic_1d(2 * square_rule().point(q)[0] - 1, L1, dL1);
-        quadratic_1d(2 * square_rule().point(q)[1] - 1, L2, dL2);
+        quadratic_segment_shape(2 * square_rule().point(q)[0] - 1, L1, dL1);
+        quadratic_segment_shape(2 * square_rule().point(q)[1] - 1, L2, dL2);
         for (unsigned int i = 0; i < 9; ++i)
         {
           N[i]     = L1[a_of[i]] * L2[b_of[i]];

@@ -53,13 +53,9 @@ namespace tribos
       {
         // The 1D functions of the nodes at -1, 1 and 0, in each direction;
         // node i sits at (at_1[i], at_2[i]).
-        Number l[2][3];
+        Number l[2][3], dl[3];
         for (unsigned int d = 0; d < 2; ++d)
-        {
-          l[d][0] = 0.5 * xi[d] * (xi[d] - 1.);
-          l[d][1] = 0.5 * xi[d] * (xi[d] + 1.);
-          l[d][2] = (1. - xi[d]) * (1. + xi[d]);
-        }
+          quadratic_segment_shape(xi[d], l[d], dl);
         constexpr unsigned int at_1[9] = {0, 1, 0, 1, 2, 2, 0, 1, 2},
                                at_2[9] = {0, 0, 1, 1, 0, 1, 2, 2, 2};
         for (unsigned int i = 0; i < 9; ++i)

@@ -26,20 +26,6 @@ namespace tribos
     constexpr double       projection_limit  = 3.;
     constexpr unsigned int newton_iterations = 30;
 
-    /** The quadratic shape functions of the ends (xi = -1, +1) and the
-     * middle (xi = 0) and their derivatives. */
-    template <typename Number>
-    void
-    shape(const Number &xi, Number *N, Number *dN)
-    {
-      N[0]  = 0.5 * xi * (xi - 1.);
-      N[1]  = 0.5 * xi * (xi + 1.);
-      N[2]  = 1. - xi * xi;
-      dN[0] = xi - 0.5;
-      dN[1] = xi + 0.5;
-      dN[2] = -2. * xi;
-    }
-
     /** Point and tangent dx/dxi of the curve through @p x at @p xi. */
     template <typename Number, typename XiNumber>
     void
@@ -49,7 +35,7 @@ namespace tribos
           Vec3<Number>              &tangent)
     {
       XiNumber N[3], dN[3];
-      shape(xi, N, dN);
+      quadratic_segment_shape(xi, N, dN);
       for (unsigned int d = 0; d < 3; ++d)
       {
         point[d] = N[0] * (*x[0])[d] + N[1] * (*x[1])[d] + N[2] * (*x[2])[d];
@@ -280,7 +266,7 @@ namespace tribos
           {
             const double xi = gauss_x[q];
             double       N[3], dN[3];
-            shape(xi, N, dN);
+            quadratic_segment_shape(xi, N, dN);
             Vec3<AD> p, t;
             curve(x_ad, AD(xi), p, t);
             AD weight = gauss_w[q] * norm(t);
@@ -335,8 +321,8 @@ namespace tribos
             if (input.axisymmetric)
               weight *= 2. * M_PI * p[0];
             AD N[3], dN[3], N_m[3], dN_m[3];
-            shape(xi, N, dN);
-            shape(eta_ad, N_m, dN_m);
+            quadratic_segment_shape(xi, N, dN);
+            quadratic_segment_shape(eta_ad, N_m, dN_m);
             const AD phi   = c[0] * N[0] + c[1] * N[1] + c[2] * N[2];
             const AD w_phi = weight * phi;
             for (unsigned int a_node = 0; a_node < 3; ++a_node)

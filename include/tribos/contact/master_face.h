@@ -52,6 +52,26 @@ namespace tribos
 
 
   /**
+   * The shape functions of the quadratic segment on xi in [-1, 1] and
+   * their derivatives: its ends (xi = -1, +1), then its middle (xi = 0).
+   * The 2D Q2 and P2 contact faces are this segment; the nine-node
+   * quadrilateral's functions are products of two.
+   */
+  template <typename Number>
+  void
+  quadratic_segment_shape(const Number &xi, Number *N, Number *dN)
+  {
+    N[0]  = 0.5 * xi * (xi - 1.);
+    N[1]  = 0.5 * xi * (xi + 1.);
+    N[2]  = 1. - xi * xi;
+    dN[0] = xi - 0.5;
+    dN[1] = xi + 0.5;
+    dN[2] = -2. * xi;
+  }
+
+
+
+  /**
    * Geometry of a master face: a 2-node segment in 2D, a 4-node bilinear
    * quadrilateral in 3D (deal.II's lexicographic vertex order), with local
    * coordinates xi in [-1, 1]^(dim-1). The vertex order is chosen by the
