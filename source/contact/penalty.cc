@@ -64,7 +64,8 @@ namespace tribos
     AD       magnitude;
     result.status = ContactStatus::stick;
     traction      = trial;
-    if (!law.frozen_stick && coulomb_return(trial, limit, traction, magnitude))
+    if (!law.frozen_stick &&
+        coulomb_return(trial, limit, traction, magnitude, law.slipped))
     {
       result.status = ContactStatus::slip;
       result.slip_increment =

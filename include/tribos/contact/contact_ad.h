@@ -93,20 +93,25 @@ namespace tribos
   /**
    * The Coulomb return map (17)-(19), written once for every method: the
    * trial traction @p trial inside the cone of radius @p limit >= 0 is
-   * kept (stick; equality to round-off, relative 1e-12, sticks as in the
-   * paper's Table 1), outside it is brought back to the cone,
-   * limit trial / |trial| (slip). Returns whether the point slips;
-   * @p magnitude gets |trial|.
+   * kept (stick), outside it is brought back to the cone,
+   * limit trial / |trial| (slip). On the cone to round-off (relative
+   * 1e-12) the point sticks as in the paper's Table 1, unless it
+   * @p slipped at the last converged state (ContactLaw::slipped): then it
+   * goes on slipping. Returns whether the point slips; @p magnitude gets
+   * |trial|.
    */
   template <typename Number>
   bool
   coulomb_return(const Vec3<Number> &trial,
                  const Number       &limit,
                  Vec3<Number>       &traction,
-                 Number             &magnitude)
+                 Number             &magnitude,
+                 const bool          slipped = false)
   {
-    magnitude = safe_norm(trial);
-    if (value_of(magnitude) > value_of(limit) * (1. + 1e-12))
+    magnitude              = safe_norm(trial);
+    const double tolerance = slipped ? -1e-12 : 1e-12;
+    if (value_of(magnitude) > 0 &&
+        value_of(magnitude) > value_of(limit) * (1. + tolerance))
     {
       traction = scale(limit / magnitude, trial);
       return true;
