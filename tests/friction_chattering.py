@@ -1,8 +1,9 @@
 """Friction chattering: a slipping node whose slip keeps reversing between
 Newton iterations is held in stick (Contact/Chattering remedy = freeze).
 
-parameters/ironing.prm with 2D mortar contact on the faceted master and
-full Newton steps, pressed down and 0.4 mm into the slide (t in [0, 1.2]).
+parameters/ironing.prm with 2D mortar contact on the faceted master, the
+primal penalty and full Newton steps, pressed down and 0.4 mm into the
+slide (t in [0, 1.2]).
 At t = 0.69 an edge node of the contact zone with a small pressure slipped
 one way in one iterate and the other way in the next: the residual is
 piecewise linear along the Newton direction, with the stick region in
@@ -29,8 +30,13 @@ from tribos_test import setup, run, read_csv, check, finish
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/../parameters/ironing.prm"
 mu = 0.3
+# The case that cycled: the primal penalty with full Newton steps (what
+# parameters/ironing.prm used then; it now solves the penalty in mixed
+# form, where this cycling does not arise).
 common = ["Time stepping/End time=1.2", "Time stepping/Number of steps=120",
-          "Output/Write VTU=false", "Output/Frequency=10"]
+          "Output/Write VTU=false", "Output/Frequency=10",
+          "Contact/Penalty formulation=primal",
+          "Nonlinear solver/Line search=false"]
 mortar = run(tribos, prm, out + "/mortar",
              common + ["Contact/Discretization=mortar",
                        "Contact/Master smoothing=none"],
@@ -40,10 +46,16 @@ check(mortar.returncode == 0,
 held = mortar.stdout.count("reversing slip")
 print("        increments in which the remedy acted: %d" % held)
 
+# The cone is checked on the pressures above the round-off of the
+# tractions (1e-9 of the largest pressure): the file's penalty in mixed
+# form has the tractions as unknowns, and a node that just touches
+# converges to a pressure of 1e-12 and a shear of the same round-off.
 worst = 0.0
 for step in range(10, 121, 10):
-    for row in read_csv(out + "/mortar/contact-%05d.csv" % step):
-        if row["CSTATUS"] >= 1 and row["CPRESS"] > 0:
+    rows = read_csv(out + "/mortar/contact-%05d.csv" % step)
+    floor = 1e-9 * max([r["CPRESS"] for r in rows] + [0])
+    for row in rows:
+        if row["CSTATUS"] >= 1 and row["CPRESS"] > floor:
             shear = math.sqrt(row["CSHEAR_x"] ** 2 + row["CSHEAR_y"] ** 2)
             worst = max(worst, shear / (mu * row["CPRESS"]))
 check(worst <= 1 + 1e-6,

@@ -401,16 +401,20 @@ namespace tribos
       const auto   n_hanging = hanging.size();
       const auto  &penalty   = pair.description.normal_penalty;
       const double E         = pair.contact_modulus;
-      lines.push_back("contact pair <" + pair.description.text +
-                      ">: " + Parameters::to_string(pair.description.method) +
-                      ", " + std::to_string(pair.n_nodes()) + " slave nodes" +
-                      (n_hanging > 0 ? " (" + std::to_string(n_hanging) +
-                                         " hanging on others)" :
-                                       std::string()) +
-                      ", contact modulus E = " + to_scientific(E) + ", h = " +
-                      to_scientific(h_min) + " to " + to_scientific(h_max) +
-                      ", eps_N = " + to_scientific(penalty.resolve(E, h_max)) +
-                      " to " + to_scientific(penalty.resolve(E, h_min)));
+      lines.push_back(
+        "contact pair <" + pair.description.text +
+        ">: " + Parameters::to_string(pair.description.method) + ", " +
+        std::to_string(pair.n_nodes()) + " slave nodes" +
+        (n_hanging > 0 ?
+           " (" + std::to_string(n_hanging) + " hanging on others)" :
+           std::string()) +
+        ", contact modulus E = " + to_scientific(E) +
+        ", h = " + to_scientific(h_min) + " to " + to_scientific(h_max) +
+        (pair.description.method ==
+             Parameters::EnforcementMethod::lagrange_multiplier ?
+           std::string() :
+           ", eps_N = " + to_scientific(penalty.resolve(E, h_max)) + " to " +
+             to_scientific(penalty.resolve(E, h_min))));
     }
     return lines;
   }

@@ -12,6 +12,9 @@ namespace tribos
     switch (method)
     {
       case Parameters::EnforcementMethod::penalty:
+        if (parameters.penalty_formulation ==
+            Parameters::PenaltyFormulation::mixed)
+          return std::make_shared<LagrangeMultiplier<dim>>(parameters, true);
         return std::make_shared<Penalty<dim>>();
       case Parameters::EnforcementMethod::augmented_lagrangian:
         return std::make_shared<AugmentedLagrangian<dim>>();

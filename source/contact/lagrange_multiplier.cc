@@ -45,8 +45,10 @@ namespace tribos
 
   template <int dim>
   LagrangeMultiplier<dim>::LagrangeMultiplier(
-    const Parameters::Contact &parameters)
+    const Parameters::Contact &parameters,
+    const bool                 regularized)
     : parameters(parameters)
+    , regularized(regularized)
   {
   }
 
@@ -64,11 +66,20 @@ namespace tribos
     const double E    = pair.contact_modulus;
     ContactLaw   law;
     law.friction_coefficient = pair.description.friction_coefficient;
-    law.normal_penalty = pair.description.normal_penalty.resolve(E, node.size);
-    // The semismooth stick/slip parameter c_T.
+    // The semismooth parameters c (normal) and c_T (stick/slip).
+    law.normal_penalty =
+      parameters.normal_complementarity.resolve(E, node.size);
     law.tangential_penalty =
       parameters.friction_complementarity.resolve(E, node.size);
     law.touch = 1e-12 * node.size;
+    if (regularized)
+    {
+      law.normal_compliance =
+        1. / pair.description.normal_penalty.resolve(E, node.size);
+      if (law.friction_coefficient > 0)
+        law.tangential_compliance =
+          1. / pair.description.tangential_penalty.resolve(E, node.size);
+    }
     for (unsigned int d = 0; d < dim; ++d)
       if (homogeneous.is_constrained(node.dofs[d]) &&
           homogeneous.get_constraint_entries(node.dofs[d])->empty())
@@ -120,8 +131,12 @@ namespace tribos
     force                      = multiplier;
     const AD       pressure    = -dot(multiplier, n);
     const Vec3<AD> tau         = multiplier + scale(pressure, n);
+    // The gap of the conditions: g_N, or with the penalty in mixed form
+    // g_N + t_N/eps_N (zero where the penalty law holds).
+    const AD condition_gap = gap + law.normal_compliance * pressure;
     if (!law.frozen_closed &&
-        value_of(pressure) - law.normal_penalty * (value_of(gap) - law.touch) <
+        value_of(pressure) -
+            law.normal_penalty * (value_of(condition_gap) - law.touch) <
           0)
     {
       constraint    = multiplier;
@@ -162,17 +177,23 @@ namespace tribos
     Vec3<AD> tangential = tau_free;
     if (law.friction_coefficient > 0)
     {
-      const Vec3<AD> slip  = free_part(kinematics.slip);
+      // The slip of the conditions: dg_T, or in mixed form its part
+      // beyond the elastic slip (T - T_n)/eps_T of the penalty law.
+      Vec3<AD> slip = free_part(kinematics.slip);
+      if (law.tangential_compliance > 0)
+        slip = slip - scale(law.tangential_compliance,
+                            tau_free - free_part(kinematics.committed));
       const Vec3<AD> trial = tau_free + scale(law.tangential_penalty, slip);
       // The Coulomb bound of the augmented (Alart-Curnier) form, on
       // max(0, t_N - c g_N): never negative, also in iterates whose
       // multiplier is tensile; equal to mu t_N at convergence (g_N = 0).
-      const AD limit = law.friction_coefficient *
-                       positive_part(AD(pressure - law.normal_penalty * gap));
+      const AD limit =
+        law.friction_coefficient *
+        positive_part(AD(pressure - law.normal_penalty * condition_gap));
       Vec3<AD> returned;
       AD       magnitude;
       if (!law.frozen_stick &&
-          coulomb_return(trial, limit, returned, magnitude))
+          coulomb_return(trial, limit, returned, magnitude, law.slipped))
       {
         tangential            = tau_free - returned;
         result.status         = ContactStatus::slip;
@@ -189,7 +210,7 @@ namespace tribos
     // tangential forces into every iterate.)
     Vec3<AD> t[2];
     tangent_frame<dim>(n, t);
-    constraint[0] = law.normal_penalty * gap;
+    constraint[0] = law.normal_penalty * condition_gap;
     constraint[1] = dot(tangential, t[0]);
     constraint[2] = dot(tangential, t[1]);
     for (unsigned int d = 0; d < 3; ++d)

@@ -10,19 +10,28 @@ namespace tribos
    * (dim unknowns, numbered after the displacement dofs) and its rows, the
    * semismooth complementarity conditions of normal contact and Coulomb
    * friction (primal-dual active set; see local_law() in the source). c
-   * (Penalty factor) and c_T (Friction complementarity parameter) steer
-   * the active set and scale the rows; they never change the solution.
+   * (Normal complementarity parameter) and c_T (Friction complementarity
+   * parameter) steer the active set and scale the rows; they never change
+   * the solution.
+   *
+   * With @p regularized (Contact/Penalty formulation = mixed) the same
+   * unknowns solve the penalty law instead of exact contact: the gap in
+   * the conditions is g_N + t_N/eps_N and the stick slip dg_T - (T -
+   * T_n)/eps_T (the perturbed Lagrangian of Method = penalty, whose
+   * solution it has).
    */
   template <int dim>
   class LagrangeMultiplier : public Enforcement<dim>
   {
   public:
-    explicit LagrangeMultiplier(const Parameters::Contact &parameters);
+    explicit LagrangeMultiplier(const Parameters::Contact &parameters,
+                                const bool                 regularized = false);
 
     Parameters::EnforcementMethod
     method() const override
     {
-      return Parameters::EnforcementMethod::lagrange_multiplier;
+      return regularized ? Parameters::EnforcementMethod::penalty :
+                           Parameters::EnforcementMethod::lagrange_multiplier;
     }
 
     unsigned int
@@ -67,6 +76,8 @@ namespace tribos
 
   private:
     const Parameters::Contact &parameters;
+    /** The penalty law in mixed form (see the class). */
+    const bool regularized;
   };
 } // namespace tribos
 

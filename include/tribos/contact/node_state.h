@@ -37,6 +37,13 @@ namespace tribos
      */
     double multiplier = 0;
     /**
+     * Penalty formulation = mixed: 1/eps_N and 1/eps_T, the compliances
+     * that regularize the multiplier conditions into the penalty law
+     * (zero: exact contact).
+     */
+    double normal_compliance     = 0;
+    double tangential_compliance = 0;
+    /**
      * Lagrange multipliers only: bit d set if the slave node's displacement
      * component d is fixed (Dirichlet or a symmetry plane). A stick
      * condition along a tangent in which the slave cannot move would make

@@ -34,6 +34,13 @@ namespace tribos
       standard
     };
 
+    /** Contact/Penalty formulation. */
+    enum class PenaltyFormulation
+    {
+      primal,
+      mixed
+    };
+
     /** Contact/Chattering remedy. */
     enum class ChatteringRemedy
     {
@@ -61,9 +68,14 @@ namespace tribos
       /** Status changes per increment beyond which a node chatters. */
       unsigned int     chattering_flips;
       ChatteringRemedy chattering_remedy;
-      /** Lagrange multipliers: the semismooth stick/slip parameter c_T. */
-      PenaltyValue friction_complementarity;
-      MortarBasis  mortar_basis;
+      /** Lagrange multipliers: the semismooth parameters of the normal
+       * condition (c) and of the stick/slip decision (c_T). */
+      PenaltyValue normal_complementarity;
+      /** How the penalty law is solved (primal: forces of the
+       * displacements; mixed: the tractions as unknowns). */
+      PenaltyFormulation penalty_formulation;
+      PenaltyValue       friction_complementarity;
+      MortarBasis        mortar_basis;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
