@@ -2,6 +2,7 @@
 #include <tribos/contact/mortar_discretization.h>
 #include <tribos/contact/node_to_segment_discretization.h>
 #include <tribos/contact/rigid_surface_discretization.h>
+#include <tribos/contact/smoothed_node_to_face_discretization.h>
 #include <tribos/contact/smoothed_node_to_segment_discretization.h>
 
 namespace tribos
@@ -109,19 +110,33 @@ namespace tribos
   {
     if (!description.rigid_surface.empty())
       return std::make_unique<RigidSurfaceDiscretization<dim>>(parameters);
-    // Master smoothing (averaged nodal normals) exists in 2D.
     const bool smoothed =
-      dim == 2 && parameters.smoothing != Parameters::MasterSmoothing::none;
+      parameters.smoothing != Parameters::MasterSmoothing::none;
+    // The mortar's smoothed master normals exist in 2D.
+    AssertThrow(!smoothed || dim == 2 ||
+                  description.discretization !=
+                    Parameters::Discretization::mortar,
+                ExcMessage("Contact pair <" + description.text +
+                           ">: Contact/Master smoothing = averaged normals "
+                           "with Discretization = mortar is available in "
+                           "Dimension = 2 only (3D mortar integrates over "
+                           "the faces with the slave's averaged normals); "
+                           "allowed in 3D: node to segment, or Master "
+                           "smoothing = none."));
     if (description.discretization == Parameters::Discretization::mortar)
       return std::make_unique<MortarDiscretization<dim>>(
         parameters,
         parameters.mortar_basis == Parameters::MortarBasis::dual,
-        smoothed,
+        smoothed && dim == 2,
         axisymmetric);
-    if constexpr (dim == 2)
-      if (smoothed)
+    if (smoothed)
+    {
+      if constexpr (dim == 2)
         return std::make_unique<SmoothedNodeToSegmentDiscretization>(
           parameters);
+      else
+        return std::make_unique<SmoothedNodeToFaceDiscretization>(parameters);
+    }
     return std::make_unique<NodeToSegmentDiscretization<dim>>(parameters);
   }
 

@@ -6,24 +6,6 @@ namespace tribos
   {
     using AD = ContactAD;
 
-    /**
-     * R v for the rotation R that takes the unit vector @p from to the unit
-     * vector @p to about their common normal (from x to): R v = c v + w x v
-     * + (w . v) w / (1 + c), w = from x to, c = from . to. The committed
-     * traction's turn with the surface's normal.
-     */
-    template <typename Number>
-    Vec3<Number>
-    turn(const Vec3<double> &from,
-         const Vec3<Number> &onto,
-         const Vec3<Number> &v)
-    {
-      const Vec3<Number> f = to<Number>(from);
-      const Number       c = dot(f, onto);
-      const Vec3<Number> w = cross(f, onto);
-      return scale(c, v) + cross(w, v) + scale(dot(w, v) / (1. + c), w);
-    }
-
     /** Seed @p n_values entries of @p x as independent AD variables. */
     template <int dim>
     Vec3<ContactAD>

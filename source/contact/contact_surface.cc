@@ -541,6 +541,16 @@ namespace tribos
           }
         }
 
+      if constexpr (dim == 3)
+      {
+        std::set<unsigned int> ring;
+        for (const unsigned int g : face.neighbours)
+          for (unsigned int v = 0; v < face_list[g].n_vertices; ++v)
+            ring.insert(face_list[g].nodes[v]);
+        for (unsigned int v = 0; v < face.n_vertices; ++v)
+          ring.erase(face.nodes[v]);
+        face.ring.assign(ring.begin(), ring.end());
+      }
       if constexpr (dim == 2)
         for (const unsigned int g : face.neighbours)
         {

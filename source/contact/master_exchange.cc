@@ -125,7 +125,8 @@ namespace tribos
     }
 
     // The faces whose nodes are known (a smoothed master: and the nodes
-    // beyond its ends), in the order of the surface.
+    // beyond its ends, 2D, or around its vertices, 3D), in the order of
+    // the surface.
     pair.known_faces.clear();
     for (unsigned int f = 0; f < faces.size(); ++f)
     {
@@ -133,8 +134,12 @@ namespace tribos
       for (unsigned int i = 0; i < faces[f].n_nodes() && known; ++i)
         known = pair.master_known[faces[f].node(i)];
       if (pair.discretization->needs_nodes_beyond())
+      {
         for (const int m : faces[f].beyond)
           known = known && (m < 0 || pair.master_known[m]);
+        for (const unsigned int m : faces[f].ring)
+          known = known && pair.master_known[m];
+      }
       pair.face_known[f] = known;
       if (known)
         pair.known_faces.push_back(f);

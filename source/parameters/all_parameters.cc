@@ -50,12 +50,6 @@ namespace tribos
       contact.parse_parameters(prm);
       contact.check(dimension);
       AssertThrow(contact.smoothing == Parameters::MasterSmoothing::none ||
-                    dimension == 2,
-                  dealii::ExcMessage(
-                    "Parameter <Contact/Master smoothing> = <averaged "
-                    "normals> is available in Dimension = 2 only; allowed in "
-                    "3D: none."));
-      AssertThrow(contact.smoothing == Parameters::MasterSmoothing::none ||
                     finite_element.degree == 1,
                   dealii::ExcMessage(
                     "Parameter <Contact/Master smoothing> = <averaged "

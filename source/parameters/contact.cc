@@ -163,16 +163,18 @@ namespace tribos
           "none",
           dealii::Patterns::Selection("none|averaged normals"),
           "none: the master is its faces (piecewise linear in 2D, bilinear "
-          "in 3D). averaged normals (2D only): the normal field of each "
-          "deformable master is interpolated between averaged nodal normals, "
-          "so projection, gap and contact force stay continuous when a slave "
-          "node crosses a master vertex (no chattering between segments at "
-          "kinks of a coarse or strongly deformed master). With "
-          "Discretization = mortar (Q1) the integrals stay over the master's "
-          "segments and only the nodal normal changes: the smoothed master "
-          "normal averaged over the node's segments, instead of the slave's "
-          "own normal, which tilts at the edge of the contact zone on a "
-          "coarse curved slave.");
+          "quadrilaterals or triangles in 3D). averaged normals: the normal "
+          "field of each deformable master is interpolated between averaged "
+          "nodal normals, so projection, gap and contact force stay "
+          "continuous when a slave node crosses a master vertex (2D) or "
+          "face edge (3D): no chattering between faces at kinks of a coarse "
+          "or strongly deformed master, which makes Newton stall in large "
+          "sliding. Node to segment in 2D and 3D (linear faces). With "
+          "Discretization = mortar (2D, Q1) the integrals stay over the "
+          "master's segments and only the nodal normal changes: the smoothed "
+          "master normal averaged over the node's segments, instead of the "
+          "slave's own normal, which tilts at the edge of the contact zone on "
+          "a coarse curved slave; 3D mortar keeps the slave's normals.");
         prm.declare_entry("Search distance",
                           "0",
                           Text::non_negative_number(),

@@ -120,8 +120,10 @@ namespace tribos
                           "Vertical distance between the blocks.");
         prm.declare_entry("Upper block offset",
                           "0",
-                          Text::any_number(),
-                          "Shift of the upper block in x.");
+                          Patterns::Anything(),
+                          "Shift of the upper block in x, or in x and y "
+                          "(3D: 'x, y'; a punch narrower than the lower block "
+                          "placed inside its width).");
         prm.declare_entry("Upper bottom radius",
                           "0",
                           Text::non_negative_number(),
@@ -151,12 +153,19 @@ namespace tribos
       parse_parameters(ParameterHandler &prm) override
       {
         prm.enter_subsection("Two blocks");
-        lower_size          = Text::positive_list(prm, "Lower block size");
-        upper_size          = Text::positive_list(prm, "Upper block size");
-        lower_subdivisions  = Text::cell_counts(prm, "Lower subdivisions");
-        upper_subdivisions  = Text::cell_counts(prm, "Upper subdivisions");
-        gap                 = prm.get_double("Gap");
-        upper_offset        = prm.get_double("Upper block offset");
+        lower_size         = Text::positive_list(prm, "Lower block size");
+        upper_size         = Text::positive_list(prm, "Upper block size");
+        lower_subdivisions = Text::cell_counts(prm, "Lower subdivisions");
+        upper_subdivisions = Text::cell_counts(prm, "Upper subdivisions");
+        gap                = prm.get_double("Gap");
+        upper_offset =
+          Text::parse_doubles(prm.get("Upper block offset"),
+                              "Scene/Two blocks/Upper block offset");
+        AssertThrow(upper_offset.size() == 1 || upper_offset.size() == 2,
+                    dealii::ExcMessage(
+                      "Parameter <Scene/Two blocks/Upper block offset> = <" +
+                      prm.get("Upper block offset") +
+                      ">: expected one number (x) or two (x, y)."));
         upper_bottom_radius = prm.get_double("Upper bottom radius");
         AssertThrow(upper_bottom_radius == 0 ||
                       upper_bottom_radius > 0.5 * upper_size[0],
@@ -197,7 +206,8 @@ namespace tribos
       std::vector<unsigned int> lower_subdivisions;
       std::vector<unsigned int> upper_subdivisions;
       double                    gap;
-      double                    upper_offset;
+      /** Shift of the upper block in x (and y). */
+      std::vector<double> upper_offset;
       /** Radius of the upper block's arc-shaped bottom; 0: flat. */
       double upper_bottom_radius;
       /** Lower and upper corner of the box whose cells are refined
@@ -252,7 +262,16 @@ namespace tribos
                0);
 
       Point<dim> origin;
-      origin[0]       = s.upper_offset;
+      origin[0] = s.upper_offset[0];
+      if (s.upper_offset.size() > 1)
+      {
+        AssertThrow(dim == 3,
+                    dealii::ExcMessage(
+                      "Parameter <Scene/Two blocks/Upper block offset>: a "
+                      "shift in y needs Dimension = 3; give one number in "
+                      "2D."));
+        origin[1] = s.upper_offset[1];
+      }
       origin[dim - 1] = lower_size[dim - 1] + s.gap;
       make_box(upper,
                scaled_counts<dim>(s.upper_subdivisions,

@@ -60,7 +60,8 @@ namespace tribos
    *
    * Implementations: NodeToSegmentDiscretization (faceted master, 2D
    * segments and 3D bilinear faces), SmoothedNodeToSegmentDiscretization
-   * (2D, averaged nodal normals), RigidSurfaceDiscretization (analytic
+   * and SmoothedNodeToFaceDiscretization (2D and 3D, averaged nodal
+   * normals), RigidSurfaceDiscretization (analytic
    * masters) and MortarDiscretization (2D Q1/Q2 segments, 3D bilinear
    * faces, dual or standard basis). To add one (triangle faces, say):
    * derive from this class, implement the search and the element, and
@@ -118,8 +119,9 @@ namespace tribos
       return 0;
     }
 
-    /** Whether a master face is usable only with the nodes beyond its ends
-     * known (a smoothed master's normals). */
+    /** Whether a master face is usable only with the nodes around it
+     * known (a smoothed master's normals: 2D the nodes beyond its ends,
+     * 3D the ring of ContactSurface::Face). */
     virtual bool
     needs_nodes_beyond() const
     {

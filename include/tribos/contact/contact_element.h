@@ -5,6 +5,7 @@
 #include <tribos/contact/master_face.h>
 #include <tribos/contact/node_state.h>
 #include <tribos/contact/rigid_surface.h>
+#include <tribos/contact/smoothed_face.h>
 #include <tribos/contact/smoothed_segment.h>
 
 namespace tribos
@@ -28,6 +29,24 @@ namespace tribos
 
   namespace internal
   {
+    /**
+     * R v for the rotation R that takes the unit vector @p from to the unit
+     * vector @p to about their common normal (from x to): R v = c v + w x v
+     * + (w . v) w / (1 + c), w = from x to, c = from . to. The committed
+     * traction's turn with the surface's normal.
+     */
+    template <typename Number>
+    Vec3<Number>
+    turn(const Vec3<double> &from,
+         const Vec3<Number> &onto,
+         const Vec3<Number> &v)
+    {
+      const Vec3<Number> f = to<Number>(from);
+      const Number       c = dot(f, onto);
+      const Vec3<Number> w = cross(f, onto);
+      return scale(c, v) + cross(w, v) + scale(dot(w, v) / (1. + c), w);
+    }
+
     /** @p n entries (dim of them from @p first on) of @p x seeded as
      * independent AD variables. */
     template <int dim>
@@ -102,6 +121,20 @@ namespace tribos
     Vec3<double> x[4], x_old[2];
     bool         has[2] = {false, false};
     double       xi     = 0;
+  };
+
+  /** A face of a smoothed 3D master: the stencil (SmoothedFace: the
+   * face's vertices, then the other vertices of the faces around them),
+   * its nodes now and (the face's vertices) at the last converged step,
+   * the slave's smoothed projection, and whether the committed state lies
+   * on this face. */
+  struct SmoothedFaceInput
+  {
+    SmoothedFace face;
+    Vec3<double> x[SmoothedFace::max_nodes], x_old[4];
+    double       xi[2]     = {0, 0};
+    double       g         = 0;
+    bool         same_face = false;
   };
 
   /** A rigid surface and its translation now and at the last converged
@@ -204,6 +237,36 @@ namespace tribos
              const Enforcement<2> &enforcement,
              double               *R,
              double               *K);
+  };
+
+
+
+  /**
+   * The 3D element against a master whose normal field is smoothed by
+   * averaged nodal normals (SmoothedFace, Contact/Master smoothing): the
+   * interface laws of NodeToSegment with the projection, the gap and the
+   * normal of the smoothed surface. The force acts on the slave and on the
+   * face's vertices (-N_a(xi) times it); the other nodes of the stencil
+   * get no force, but the nodal normals depend on them, so their columns
+   * are part of the (exact, AD) tangent. The committed traction turns with
+   * the normal and, on the same face, spins with the face about it (the
+   * frame of the face's tangents and the smoothed normal), so that a rigid
+   * rotation leaves a sticking traction as it was in the co-rotating
+   * frame.
+   */
+  struct NodeToSmoothedFace
+  {
+    /** Displacement dofs at most: the slave and a full stencil. */
+    static constexpr unsigned int max_dofs = 3 * (1 + SmoothedFace::max_nodes);
+
+    /** As NodeToSegment::evaluate(); dofs: slave, the stencil's nodes,
+     * then the enforcement's unknowns. */
+    static ContactPointResult
+    evaluate(const SlaveInput        &slave,
+             const SmoothedFaceInput &input,
+             const Enforcement<3>    &enforcement,
+             double                  *R,
+             double                  *K);
   };
 
 

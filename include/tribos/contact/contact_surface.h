@@ -108,8 +108,15 @@ namespace tribos
        * surface (of the neighbouring faces with the same orientation), or
        * -1 where the surface ends. Used by the smoothed master normals.
        */
-      int                beyond[2] = {-1, -1};
-      types::material_id body;
+      int beyond[2] = {-1, -1};
+      /**
+       * 3D only: the vertices of the neighbouring faces that are not this
+       * face's own, the ring on which the smoothed master normals of its
+       * vertices depend (with its vertices, the stencil of
+       * SmoothedFace).
+       */
+      std::vector<unsigned int> ring;
+      types::material_id        body;
       /** The MPI process that owns the face's cell. */
       unsigned int owner = 0;
       /** The face's cell (a partition's weights are given per cell). */
