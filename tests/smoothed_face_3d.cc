@@ -4,9 +4,10 @@
  * patch of bilinear quadrilaterals and on a fan of six triangles:
  *
  * 1. Continuity across a face edge (the reason for the smoothing): a slave
- *    point slid across the edge between two faces, its element evaluated
- *    on either face at the edge gives the same gap and the same nodal
- *    forces (assembled onto the surface's nodes) to 1e-9 relative; the
+ *    point on the edge between two faces, sticking with a history
+ *    committed on one of them, its element evaluated on either face gives
+ *    the same gap and the same nodal forces (assembled onto the surface's
+ *    nodes, friction included) to 1e-9 relative; the
  *    faceted element (NodeToSegment) jumps there by more than 0.1 %, so the
  *    check can fail.
  * 2. The tangent (Sacado AD) against central finite differences of the
@@ -23,6 +24,7 @@
 #include <tribos/contact/lagrange_multiplier.h>
 #include <tribos/contact/penalty.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -133,7 +135,8 @@ namespace
     std::vector<Vec3<double>> old;
     NodeState                 committed;
     ContactLaw                law;
-    bool                      same_face = true;
+    /** The face of the committed state (surface numbering), -1: none. */
+    int committed_face = -1;
   };
 
   Setup
@@ -181,7 +184,22 @@ namespace
     if (!setup.shape.project(slave, input.x, input.xi, input.g) ||
         setup.shape.outside(input.xi) > band)
       return false;
-    input.same_face = setup.same_face;
+    // The committed face's vertices in the stencil, as the discretization
+    // finds them.
+    if (setup.committed_face >= 0)
+    {
+      const auto &vertices = setup.surface.faces[setup.committed_face];
+      bool        found    = true;
+      for (unsigned int v = 0; v < vertices.size() && found; ++v)
+      {
+        const auto i =
+          std::find(setup.stencil.begin(), setup.stencil.end(), vertices[v]);
+        found                       = i != setup.stencil.end();
+        input.committed_vertices[v] = i - setup.stencil.begin();
+        input.committed_old[v]      = setup.old[vertices[v]];
+      }
+      input.n_committed_vertices = found ? vertices.size() : 0;
+    }
     SlaveInput s;
     s.position   = slave;
     s.committed  = &setup.committed;
@@ -240,7 +258,7 @@ namespace
                   double            &faceted,
                   double            &gap_jump)
   {
-    const Setup on_f = make_setup(surface, f), on_g = make_setup(surface, g);
+    Setup on_f = make_setup(surface, f), on_g = make_setup(surface, g);
     // A point on the smoothed normal line through the edge point: the
     // smoothed projection puts it on the edge from both faces.
     Vec3<double> nodal[4];
@@ -262,6 +280,25 @@ namespace
       scale(1 - s, surface.x[a]) + scale(s, surface.x[b]);
     const Vec3<double> normal = scale(1 - s, nodal[la]) + scale(s, nodal[lb]);
     const Vec3<double> slave  = point - scale(0.01 / norm(normal), normal);
+    // A sticking history committed on face f: the surface has moved a
+    // little since, the traction is tangent to the committed normal.
+    for (Setup *setup : {&on_f, &on_g})
+    {
+      for (unsigned int k = 0; k < surface.x.size(); ++k)
+        setup->old[k] =
+          surface.x[k] + Vec3<double>{{0.004 * std::sin(3. * k + s),
+                                       0.004 * std::cos(2. * k),
+                                       0.003 * std::sin(5. * k)}};
+      const Vec3<double> n           = scale(1. / norm(normal), normal);
+      setup->committed.result.status = ContactStatus::stick;
+      setup->committed.result.xi[0]  = 0.3;
+      setup->committed.result.xi[1]  = -0.2;
+      setup->committed.result.normal = n;
+      setup->committed.point         = point + Vec3<double>{{0.003, -0.002, 0}};
+      const Vec3<double> t{{1, 0.5, 0}};
+      setup->committed.result.traction = scale(30., t - scale(dot(t, n), n));
+      setup->committed_face            = f;
+    }
 
     std::vector<double> Rf(3 * (1 + on_f.stencil.size())),
       Rg(3 * (1 + on_g.stencil.size()));
@@ -367,7 +404,7 @@ namespace
       for (unsigned int i = 0; i < base.x.size(); ++i)
         for (unsigned int d = 0; d < 3; ++d)
           setup.old[i][d] = base.x[i][d] + 0.01 * u(random);
-      setup.same_face               = sample % 2 == 0;
+      setup.committed_face          = sample % 2 == 0 ? int(f) : -1;
       setup.committed               = NodeState();
       setup.committed.result.status = ContactStatus::stick;
       setup.committed.result.xi[0]  = 0.3 * u(random);
@@ -477,7 +514,7 @@ namespace
     setup.committed.result.normal   = n;
     setup.committed.point           = xbar;
     setup.committed.result.traction = scale(2., a[0] - scale(dot(a[0], n), n));
-    setup.same_face                 = true;
+    setup.committed_face            = f;
 
     std::vector<double> R(3 * (1 + setup.stencil.size()));
     ContactPointResult  result;

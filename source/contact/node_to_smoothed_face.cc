@@ -7,46 +7,61 @@ namespace tribos
     using AD = ContactAD;
 
     /**
-     * The committed traction @p T (tangent to the committed normal
-     * @p n_old) spun with the face about that normal: the in-plane angle
-     * phi of the map F that takes the committed frame (the face's tangents
-     * @p a_old at the committed coordinates and @p n_old) to the current
-     * one (@p a, @p n at the same coordinates), after the rotation R1 that
-     * takes n_old to n: tan phi = (G_21 - G_12)/(G_11 + G_22) with G =
-     * R1^T F in an orthonormal frame of the old tangent plane. The frame
-     * need not be orthogonal (a smoothed normal is not the face's): F is
-     * built on its dual basis, so a rigid rotation Q gives F = Q and the
-     * result R1 Spin(phi) T = Q T. Returned about @p n_old, still to be
-     * turned to the current normal.
+     * R v for the rotation R that takes the unit vector @p from to the unit
+     * vector @p onto (internal::turn() with both of the number type).
      */
     Vec3<AD>
-    spin_with_face(const Vec3<double> *a_old,
-                   const Vec3<double> &n_old,
-                   const Vec3<AD>     *a,
-                   const Vec3<AD>     &n,
-                   const Vec3<double> &T)
+    turn(const Vec3<AD> &from, const Vec3<AD> &onto, const Vec3<AD> &v)
     {
-      const double       volume  = dot(a_old[0], cross(a_old[1], n_old));
-      const Vec3<double> dual[3] = {scale(1. / volume, cross(a_old[1], n_old)),
-                                    scale(1. / volume, cross(n_old, a_old[0])),
-                                    scale(1. / volume,
-                                          cross(a_old[0], a_old[1]))};
-      const auto         F       = [&](const Vec3<double> &v)
+      const AD       c = dot(from, onto);
+      const Vec3<AD> w = cross(from, onto);
+      return scale(c, v) + cross(w, v) + scale(dot(w, v) / (1. + c), w);
+    }
+
+    /**
+     * The rotation of a face between the last converged step and now at
+     * local coordinates @p xi, applied to @p v: the rotation R1 that takes
+     * the face's normal then (@p x_old) to its normal now (@p x), after
+     * the spin phi about the old normal that remains of the polar
+     * decomposition of the face's in-plane deformation (tan phi = (G_21 -
+     * G_12)/(G_11 + G_22), G = R1^T F_s in an orthonormal frame of the old
+     * tangent plane; Rodrigues' formula, so v need not be tangent). A
+     * rigid rotation Q of the face gives Q v.
+     */
+    template <class Face>
+    Vec3<AD>
+    rotate_with_face(const Vec3<double> *x_old,
+                     const Vec3<AD>     *x,
+                     const double       *xi,
+                     const Vec3<AD>     &v)
+    {
+      Vec3<double> xbar_old, a_old[2], n_old;
+      Face::geometry(x_old, xi, xbar_old, a_old, n_old);
+      Vec3<AD> xbar, a[2], n;
+      Face::geometry(x, xi, xbar, a, n);
+      // Dual basis of the old tangents (in the old tangent plane).
+      const double m11 = dot(a_old[0], a_old[0]), m12 = dot(a_old[0], a_old[1]),
+                   m22           = dot(a_old[1], a_old[1]);
+      const double       det     = m11 * m22 - m12 * m12;
+      const Vec3<double> dual[2] = {
+        scale(1. / det, scale(m22, a_old[0]) - scale(m12, a_old[1])),
+        scale(1. / det, scale(m11, a_old[1]) - scale(m12, a_old[0]))};
+      const auto F = [&](const Vec3<double> &w)
       {
-        return scale(dot(dual[0], v), a[0]) + scale(dot(dual[1], v), a[1]) +
-               scale(dot(dual[2], v), n);
+        return scale(dot(dual[0], w), a[0]) + scale(dot(dual[1], w), a[1]);
       };
-      const Vec3<double> e1 =
-        scale(1. / norm(a_old[0] - scale(dot(a_old[0], n_old), n_old)),
-              a_old[0] - scale(dot(a_old[0], n_old), n_old));
+      const Vec3<double> e1 = scale(1. / norm(a_old[0]), a_old[0]);
       const Vec3<double> e2 = cross(n_old, e1);
       const Vec3<AD>     r1 = internal::turn(n_old, n, to<AD>(e1)),
                      r2     = internal::turn(n_old, n, to<AD>(e2));
       const Vec3<AD> f1 = F(e1), f2 = F(e2);
-      const AD       c = dot(r1, f1) + dot(r2, f2);
-      const AD       s = dot(r2, f1) - dot(r1, f2);
-      const AD       r = sqrt(c * c + s * s);
-      return scale(c / r, to<AD>(T)) + scale(s / r, to<AD>(cross(n_old, T)));
+      const AD       c    = dot(r1, f1) + dot(r2, f2);
+      const AD       s    = dot(r2, f1) - dot(r1, f2);
+      const AD       r    = sqrt(c * c + s * s);
+      const Vec3<AD> axis = to<AD>(n_old);
+      const Vec3<AD> spun = scale(c / r, v) + scale(s / r, cross(axis, v)) +
+                            scale((1. - c / r) * dot(axis, v), axis);
+      return internal::turn(n_old, n, spun);
     }
   } // namespace
 
@@ -112,30 +127,33 @@ namespace tribos
     const NodeState &committed = *slave.committed;
     kinematics.slip      = internal::slip_increment(moved, committed, normal);
     kinematics.committed = internal::committed_traction(committed, normal);
-    if (input.same_face && committed.closed() &&
+    if (input.n_committed_vertices > 0 && committed.closed() &&
         value_of(dot(to<AD>(committed.result.normal), normal)) > 0)
     {
-      // The face's frame at the committed coordinates, then and now.
-      Vec3<double> nodal_old[4], xbar_old, a_old[2], n_old, dn_old[2];
-      face.nodal_normals(input.x_old, nodal_old);
-      face.field(input.x_old,
-                 nodal_old,
-                 committed.result.xi,
-                 xbar_old,
-                 a_old,
-                 n_old,
-                 dn_old);
-      Vec3<AD> xbar_now, a_now[2], n_now, dn_now[2];
-      face
-        .field(xm, nodal, committed.result.xi, xbar_now, a_now, n_now, dn_now);
-      n_now               = scale(1. / norm(n_now), n_now);
-      const Vec3<AD> spun = spin_with_face(a_old,
-                                           committed.result.normal,
-                                           a_now,
-                                           n_now,
-                                           committed.result.traction);
-      kinematics.committed =
-        internal::turn(committed.result.normal, normal, spun);
+      // The committed traction and normal rotated with the face the node
+      // was on at the last converged step, at its committed coordinates
+      // (a rigid rotation of the bodies rotates the sticking traction
+      // exactly), then turned to the normal now. The face is the
+      // committed one whichever face the node is on now, so the residual
+      // does not jump when the node crosses an edge within the increment.
+      Vec3<AD> x_committed[4];
+      for (unsigned int v = 0; v < input.n_committed_vertices; ++v)
+        x_committed[v] = xm[input.committed_vertices[v]];
+      const auto rotate = [&](const Vec3<double> &w)
+      {
+        if (input.n_committed_vertices == 3)
+          return rotate_with_face<TriangleFace>(input.committed_old,
+                                                x_committed,
+                                                committed.result.xi,
+                                                to<AD>(w));
+        return rotate_with_face<MasterFace<3>>(input.committed_old,
+                                               x_committed,
+                                               committed.result.xi,
+                                               to<AD>(w));
+      };
+      kinematics.committed = turn(rotate(committed.result.normal),
+                                  normal,
+                                  rotate(committed.result.traction));
     }
 
     AD weights[5];

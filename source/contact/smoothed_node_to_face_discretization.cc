@@ -101,7 +101,7 @@ namespace tribos
     if (state.paired && pair.face_known[state.face])
     {
       Projection p;
-      if (try_face(state.face, p) == 0 &&
+      if (try_face(state.face, p) <= 1e-12 &&
           p.distance <= parameters.search_distance)
         return accept(state.face, p);
     }
@@ -185,7 +185,23 @@ namespace tribos
       input.face.field(input.x, nodal, input.xi, xbar, a, n, dn);
       input.g = dot(slave.position - xbar, n) / dot(n, n);
     }
-    input.same_face = pair.committed[k].face == face;
+    // The face of the committed state, if its vertices are in the
+    // stencil (the node moved on to it or to a neighbour).
+    const int committed_face = pair.committed[k].face;
+    if (committed_face >= 0)
+    {
+      const auto &f       = pair.master->faces()[committed_face];
+      const auto &stencil = stencils[face];
+      bool        found   = true;
+      for (unsigned int v = 0; v < f.n_vertices && found; ++v)
+      {
+        const auto i = std::find(stencil.begin(), stencil.end(), f.nodes[v]);
+        found        = i != stencil.end();
+        input.committed_vertices[v] = i - stencil.begin();
+        input.committed_old[v]      = pair.old_master_positions[f.nodes[v]];
+      }
+      input.n_committed_vertices = found ? f.n_vertices : 0;
+    }
     state.result =
       NodeToSmoothedFace::evaluate(slave, input, *pair.enforcement, R, K);
     state.point = slave.position - scale(state.result.gap, state.result.normal);

@@ -126,15 +126,19 @@ namespace tribos
   /** A face of a smoothed 3D master: the stencil (SmoothedFace: the
    * face's vertices, then the other vertices of the faces around them),
    * its nodes now and (the face's vertices) at the last converged step,
-   * the slave's smoothed projection, and whether the committed state lies
-   * on this face. */
+   * the slave's smoothed projection, and the face the committed state lies
+   * on: its vertices in the stencil (n_committed_vertices = 0 if it has
+   * none or they are not all in the stencil) and at the last converged
+   * step. */
   struct SmoothedFaceInput
   {
     SmoothedFace face;
     Vec3<double> x[SmoothedFace::max_nodes], x_old[4];
-    double       xi[2]     = {0, 0};
-    double       g         = 0;
-    bool         same_face = false;
+    double       xi[2]                 = {0, 0};
+    double       g                     = 0;
+    unsigned int n_committed_vertices  = 0;
+    unsigned int committed_vertices[4] = {0, 0, 0, 0};
+    Vec3<double> committed_old[4];
   };
 
   /** A rigid surface and its translation now and at the last converged
@@ -248,11 +252,11 @@ namespace tribos
    * normal of the smoothed surface. The force acts on the slave and on the
    * face's vertices (-N_a(xi) times it); the other nodes of the stencil
    * get no force, but the nodal normals depend on them, so their columns
-   * are part of the (exact, AD) tangent. The committed traction turns with
-   * the normal and, on the same face, spins with the face about it (the
-   * frame of the face's tangents and the smoothed normal), so that a rigid
-   * rotation leaves a sticking traction as it was in the co-rotating
-   * frame.
+   * are part of the (exact, AD) tangent. The committed traction rotates
+   * with the face it was committed on (its normal's turn and its in-plane
+   * spin) and then turns to the current normal, so that a rigid rotation
+   * leaves a sticking traction as it was in the co-rotating frame, and the
+   * residual stays continuous when the node crosses to another face.
    */
   struct NodeToSmoothedFace
   {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -257,10 +258,21 @@ namespace tribos
       xi[1]                  = start.xi[1];
       Vec3<double> xbar, a[2], n, dn[2];
       field(x, nodal, xi, xbar, a, n, dn);
-      g           = dot(point - xbar, n) / dot(n, n);
-      double size = 0;
-      for (unsigned int k = 1; k < n_vertices; ++k)
-        size = std::max(size, norm(x[k] - x[0]));
+      g = dot(point - xbar, n) / dot(n, n);
+      // Converged once the step is at the round-off of the coordinates:
+      // a fixed 1e-14 of the face size is below it where the coordinates
+      // are large against the face (12 against 0.3 on the ironing's
+      // foundation), the iteration then ran out and the projection was
+      // lost, and the node's force jumped between Newton iterates.
+      double size = 0, magnitude = norm(point);
+      for (unsigned int k = 0; k < n_vertices; ++k)
+      {
+        size      = std::max(size, norm(x[k] - x[0]));
+        magnitude = std::max(magnitude, norm(x[k]));
+      }
+      const double round_off =
+        64 * std::numeric_limits<double>::epsilon() * magnitude;
+      double last = std::numeric_limits<double>::infinity();
       for (unsigned int iteration = 0; iteration < 30; ++iteration)
       {
         field(x, nodal, xi, xbar, a, n, dn);
@@ -277,11 +289,15 @@ namespace tribos
         g += step[2];
         if (!std::isfinite(g) || std::abs(xi[0]) > 10 || std::abs(xi[1]) > 10)
           return false;
-        if (std::abs(step[0]) + std::abs(step[1]) < 1e-14 &&
-            std::abs(step[2]) <= 1e-14 * (size + std::abs(g)))
+        // The step in length units (xi spans the face's size over 2).
+        last = std::max(0.5 * size * (std::abs(step[0]) + std::abs(step[1])),
+                        std::abs(step[2]));
+        if (last <= std::max(1e-14 * size, round_off))
           return true;
       }
-      return false;
+      // Round-off that the test above does not see ends the iteration
+      // here; a projection that still moves is none.
+      return last <= 1e-10 * size;
     }
 
     /** Whether @p xi lies on the face or its extension by @p band. */
