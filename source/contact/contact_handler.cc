@@ -117,8 +117,7 @@ namespace tribos
     slave.law       = pair.enforcement->law(pair, k, state, homogeneous);
     slave.law.frozen_closed = monitor.frozen(p, k);
     slave.law.frozen_stick  = monitor.frozen_stick(p, k);
-    slave.law.slipped = pair.committed[k].result.status == ContactStatus::slip;
-    slave.area        = pair.area[k];
+    slave.area              = pair.area[k];
     slave.unknowns =
       pair.enforcement->n_node_unknowns() > 0 ? &state.lambda : nullptr;
     slave.consistent =

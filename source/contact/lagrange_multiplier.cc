@@ -193,7 +193,7 @@ namespace tribos
       Vec3<AD> returned;
       AD       magnitude;
       if (!law.frozen_stick &&
-          coulomb_return(trial, limit, returned, magnitude, law.slipped))
+          coulomb_return(trial, limit, returned, magnitude))
       {
         tangential            = tau_free - returned;
         result.status         = ContactStatus::slip;

@@ -64,8 +64,7 @@ namespace tribos
     AD       magnitude;
     result.status = ContactStatus::stick;
     traction      = trial;
-    if (!law.frozen_stick &&
-        coulomb_return(trial, limit, traction, magnitude, law.slipped))
+    if (!law.frozen_stick && coulomb_return(trial, limit, traction, magnitude))
     {
       result.status = ContactStatus::slip;
       result.slip_increment =

@@ -65,19 +65,6 @@ namespace tribos
      * traction is within the Coulomb cone.
      */
     bool frozen_stick = false;
-    /**
-     * The node slipped at the last converged state. An increment starts
-     * with its trial traction on the Coulomb cone (no slip yet, the
-     * committed traction at the limit); there the return map's two
-     * branches give the same traction and differ in the derivative only.
-     * Such a node takes the slip branch (Coulomb's slip goes on), a
-     * sticking one the stick branch (the paper's Table 1). With the stick
-     * branch for all, the first Newton iterate of a sliding increment
-     * drags the master's surface along with the slave by the whole
-     * increment, and the ironing's Newton diverged from there in a fifth
-     * of its increments.
-     */
-    bool slipped = false;
   };
 
 
