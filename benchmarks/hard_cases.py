@@ -16,8 +16,9 @@ machine state for both), and the rows carry its numbers in columns
 base_*; wall times are medians over --runs alternating pairs.
 
 Columns: case, runs, status, steps, increments, cutbacks, newton,
-newton_all, newton_per_step (newton_all over the nominal steps), wall
-(median, s), then the force columns of the case at its times
+newton_all, newton_per_step (newton_all over the nominal steps), median_order
+(Newton's observed order near convergence, the median over the
+increments), wall (median, s), then the force columns of the case at its times
 (e.g. V@1 and H@1 for the ironing: the punch's vertical and horizontal
 reaction), and with --baseline the same prefixed base_.
 """
@@ -99,6 +100,16 @@ CASES = [
       "Boundary conditions/Symmetry=12, 13, 0, 2",
       "Boundary conditions/Dirichlet=11 : z : -0.02*t ; 4 : xyz : 0, 0, 0",
       "Contact/Penalty factor=1000*E/h"] + MORTAR, {}, ()),
+    # The same with the penalty in mixed form (hertz_3d.prm keeps the
+    # default primal form).
+    ("mortar_hertz_3d_level3_mixed", "hertz_3d",
+     ["Scene/Cylinder over block/With block=true",
+      "Scene/Cylinder over block/Contact refinements=3",
+      "Contact/Pairs=10 : 5",
+      "Boundary conditions/Symmetry=12, 13, 0, 2",
+      "Boundary conditions/Dirichlet=11 : z : -0.02*t ; 4 : xyz : 0, 0, 0",
+      "Contact/Penalty factor=1000*E/h",
+      "Contact/Penalty formulation=mixed"] + MORTAR, {}, ()),
     ("upsetting_structured_penalty", "upsetting", UPSETTING_STRUCTURED, {},
      ()),
     ("upsetting_structured_lagrange", "upsetting",
@@ -144,6 +155,8 @@ def run_once(tribos, prm, sets, forces, times, timeout, keep=None):
             status = "stopped after %d s" % timeout
         wall = time.time() - start
         h = read_csv(os.path.join(folder, "history.csv"))
+        order = median_order(read_csv(os.path.join(folder,
+                                                   "convergence.csv")))
         if keep:
             with open(os.path.join(folder, "stdout.txt"), "w") as f:
                 f.write(result.stdout + result.stderr
@@ -162,12 +175,27 @@ def run_once(tribos, prm, sets, forces, times, timeout, keep=None):
            "newton_all": int(sum(r["newton_iterations_all"] for r in h)),
            "wall": wall}
     row["newton_per_step"] = "%.2f" % (row["newton_all"] / n)
+    row["median_order"] = "%.2f" % order if order is not None else ""
     for label, column in forces.items():
         for t in times:
             value = interpolate(h, column, t)
             row["%s@%g" % (label, t)] = \
                 "%.4f" % abs(value) if value is not None else ""
     return row
+
+
+def median_order(convergence):
+    """Newton's observed order near convergence: per increment the larger
+    of the last two finite orders above round-off (as
+    benchmarks/robustness_study.py), the median over the increments."""
+    orders = []
+    for increment in sorted(set(r["increment"] for r in convergence)):
+        o = [r["order"] for r in convergence
+             if r["increment"] == increment and math.isfinite(r["order"])
+             and r["relative_residual"] > 1e-13]
+        if o:
+            orders.append(max(o[-2:]))
+    return statistics.median(orders) if orders else None
 
 
 def interpolate(rows, column, t):
