@@ -136,13 +136,8 @@ namespace tribos
 
     /**
      * The committed traction @p T (tangent to the committed face) turned with
-     * the face: the rotation of the polar decomposition of the map F_s =
-     * a_alpha (x) a^alpha_o + n (x) n_o, which takes the committed tangents
-     * @p a_old and normal @p n_old to the current @p a and @p n at the same
-     * local coordinates: the rotation taking n_o to n, then about n_o the
-     * angle phi of the in-plane rest G = R1^T F_s (2 x 2 in an orthonormal
-     * frame e_1, e_2 of the old tangent plane): tan phi = (G_21 - G_12) /
-     * (G_11 + G_22). In 2D phi = 0.
+     * the face: in 2D with its normal, in 3D also spun with its in-plane
+     * deformation (internal::rotate_with_face()).
      */
     template <int dim, typename Number>
     Vec3<Number>
@@ -155,34 +150,7 @@ namespace tribos
       if constexpr (dim == 2)
         return turn(n_old, n, to<Number>(T));
       else
-      {
-        // Dual basis of the old tangents.
-        const double m11           = dot(a_old[0], a_old[0]),
-                     m12           = dot(a_old[0], a_old[1]),
-                     m22           = dot(a_old[1], a_old[1]);
-        const double       det     = m11 * m22 - m12 * m12;
-        const Vec3<double> dual[2] = {
-          scale(1. / det, scale(m22, a_old[0]) - scale(m12, a_old[1])),
-          scale(1. / det, scale(m11, a_old[1]) - scale(m12, a_old[0]))};
-        const auto F = [&](const Vec3<double> &v)
-        {
-          return scale(dot(dual[0], v), a[0]) + scale(dot(dual[1], v), a[1]) +
-                 scale(dot(n_old, v), n);
-        };
-        const Vec3<double> e1 = scale(1. / norm(a_old[0]), a_old[0]);
-        const Vec3<double> e2 = cross(n_old, e1);
-        // G_ij = (R1 e_i) . (F_s e_j).
-        const Vec3<Number> r1 = turn(n_old, n, to<Number>(e1)),
-                           r2 = turn(n_old, n, to<Number>(e2));
-        const Vec3<Number> f1 = F(e1), f2 = F(e2);
-        const Number       c = dot(r1, f1) + dot(r2, f2);
-        const Number       s = dot(r2, f1) - dot(r1, f2);
-        const Number       r = sqrt(c * c + s * s);
-        // Rotation by phi about n_old of T (tangent to the old face).
-        const Vec3<Number> spun = scale(c / r, to<Number>(T)) +
-                                  scale(s / r, to<Number>(cross(n_old, T)));
-        return turn(n_old, n, spun);
-      }
+        return internal::rotate_with_face(a_old, n_old, a, n, to<Number>(T));
     }
 
 

@@ -19,14 +19,9 @@ namespace tribos
     }
 
     /**
-     * The rotation of a face between the last converged step and now at
-     * local coordinates @p xi, applied to @p v: the rotation R1 that takes
-     * the face's normal then (@p x_old) to its normal now (@p x), after
-     * the spin phi about the old normal that remains of the polar
-     * decomposition of the face's in-plane deformation (tan phi = (G_21 -
-     * G_12)/(G_11 + G_22), G = R1^T F_s in an orthonormal frame of the old
-     * tangent plane; Rodrigues' formula, so v need not be tangent). A
-     * rigid rotation Q of the face gives Q v.
+     * The rotation of a face between the last converged step (vertices
+     * @p x_old) and now (@p x) at local coordinates @p xi, applied to @p v
+     * (internal::rotate_with_face()).
      */
     template <class Face>
     Vec3<AD>
@@ -39,29 +34,7 @@ namespace tribos
       Face::geometry(x_old, xi, xbar_old, a_old, n_old);
       Vec3<AD> xbar, a[2], n;
       Face::geometry(x, xi, xbar, a, n);
-      // Dual basis of the old tangents (in the old tangent plane).
-      const double m11 = dot(a_old[0], a_old[0]), m12 = dot(a_old[0], a_old[1]),
-                   m22           = dot(a_old[1], a_old[1]);
-      const double       det     = m11 * m22 - m12 * m12;
-      const Vec3<double> dual[2] = {
-        scale(1. / det, scale(m22, a_old[0]) - scale(m12, a_old[1])),
-        scale(1. / det, scale(m11, a_old[1]) - scale(m12, a_old[0]))};
-      const auto F = [&](const Vec3<double> &w)
-      {
-        return scale(dot(dual[0], w), a[0]) + scale(dot(dual[1], w), a[1]);
-      };
-      const Vec3<double> e1 = scale(1. / norm(a_old[0]), a_old[0]);
-      const Vec3<double> e2 = cross(n_old, e1);
-      const Vec3<AD>     r1 = internal::turn(n_old, n, to<AD>(e1)),
-                     r2     = internal::turn(n_old, n, to<AD>(e2));
-      const Vec3<AD> f1 = F(e1), f2 = F(e2);
-      const AD       c    = dot(r1, f1) + dot(r2, f2);
-      const AD       s    = dot(r2, f1) - dot(r1, f2);
-      const AD       r    = sqrt(c * c + s * s);
-      const Vec3<AD> axis = to<AD>(n_old);
-      const Vec3<AD> spun = scale(c / r, v) + scale(s / r, cross(axis, v)) +
-                            scale((1. - c / r) * dot(axis, v), axis);
-      return internal::turn(n_old, n, spun);
+      return internal::rotate_with_face(a_old, n_old, a, n, v);
     }
   } // namespace
 

@@ -47,6 +47,51 @@ namespace tribos
       return scale(c, v) + cross(w, v) + scale(dot(w, v) / (1. + c), w);
     }
 
+    /**
+     * R v for the rotation R of a face between the last converged step and
+     * now at the same local coordinates, from its tangents and normal then
+     * (@p a_old, @p n_old) and now (@p a, @p n): the rotation R1 that takes
+     * n_old to n, after the spin phi about n_old that remains of the polar
+     * decomposition of the face's in-plane deformation F_s (tan phi =
+     * (G_21 - G_12)/(G_11 + G_22), G = R1^T F_s in an orthonormal frame of
+     * the old tangent plane). F_s is built on the dual basis of the old
+     * tangents, since a smoothed normal is not the face's own; Rodrigues'
+     * formula, so @p v need not be tangent. A rigid rotation Q of the face
+     * gives Q v. The committed traction's turn with a 3D master face,
+     * faceted or smoothed.
+     */
+    template <typename Number>
+    Vec3<Number>
+    rotate_with_face(const Vec3<double> *a_old,
+                     const Vec3<double> &n_old,
+                     const Vec3<Number> *a,
+                     const Vec3<Number> &n,
+                     const Vec3<Number> &v)
+    {
+      const double m11 = dot(a_old[0], a_old[0]), m12 = dot(a_old[0], a_old[1]),
+                   m22           = dot(a_old[1], a_old[1]);
+      const double       det     = m11 * m22 - m12 * m12;
+      const Vec3<double> dual[2] = {
+        scale(1. / det, scale(m22, a_old[0]) - scale(m12, a_old[1])),
+        scale(1. / det, scale(m11, a_old[1]) - scale(m12, a_old[0]))};
+      const auto F = [&](const Vec3<double> &w)
+      {
+        return scale(dot(dual[0], w), a[0]) + scale(dot(dual[1], w), a[1]);
+      };
+      const Vec3<double> e1 = scale(1. / norm(a_old[0]), a_old[0]);
+      const Vec3<double> e2 = cross(n_old, e1);
+      const Vec3<Number> r1 = turn(n_old, n, to<Number>(e1)),
+                         r2 = turn(n_old, n, to<Number>(e2));
+      const Vec3<Number> f1 = F(e1), f2 = F(e2);
+      const Number       c    = dot(r1, f1) + dot(r2, f2);
+      const Number       s    = dot(r2, f1) - dot(r1, f2);
+      const Number       r    = sqrt(c * c + s * s);
+      const Vec3<Number> axis = to<Number>(n_old);
+      const Vec3<Number> spun = scale(c / r, v) + scale(s / r, cross(axis, v)) +
+                                scale((1. - c / r) * dot(axis, v), axis);
+      return turn(n_old, n, spun);
+    }
+
     /** @p n entries (dim of them from @p first on) of @p x seeded as
      * independent AD variables. */
     template <int dim>
