@@ -122,13 +122,18 @@ namespace tribos
   bool
   ContactSearch<dim>::closest_face(const Vec3<double> &x,
                                    unsigned int       &face,
-                                   double             &squared_distance) const
+                                   double             &squared_distance,
+                                   Vec3<double>       *closest_point) const
   {
     if (tree->elements.empty())
       return false;
     const auto result = tree->tree.closest_point_and_primitive(point(x));
     face = tree->face_of_element[result.second - tree->elements.cbegin()];
     squared_distance = CGAL::squared_distance(result.first, point(x));
+    if (closest_point != nullptr)
+      *closest_point = {{CGAL::to_double(result.first.x()),
+                         CGAL::to_double(result.first.y()),
+                         CGAL::to_double(result.first.z())}};
     return true;
   }
 

@@ -123,6 +123,26 @@ namespace tribos
 
 
     /**
+     * How deep behind a master face a slave face of an open node may lie
+     * and still be taken: penetrated, not on the far side of the master.
+     * Twice the larger face size covers a meshed initial overlap of about
+     * an element; the distance both faces moved in the increment covers a
+     * slave pushed through the master in one increment (which a bound of
+     * one element size missed: the body passed through with zero force,
+     * issue 56). The far side of a master body lies farther behind than
+     * this on any mesh that resolves the body's thickness.
+     */
+    inline double
+    behind_reach(const double slave_size,
+                 const double master_size,
+                 const double motion)
+    {
+      return 2. * std::max(slave_size, master_size) + motion;
+    }
+
+
+
+    /**
      * 2D: the master segments that overlap slave node @p k's segments in
      * the projection onto their lines, face them and are not too deep
      * behind them (within @p search_distance: reached). False if the
@@ -152,6 +172,23 @@ namespace tribos
         const double        length_squared = dot(e, e);
         const Vec3<double>  n_s =
           scale(1. / std::sqrt(length_squared), cross(ez, e));
+        const double slave_motion = std::max(
+          norm(x_a - pair.old_slave_positions[slave_faces[f].nodes[0]]),
+          norm(x_b - pair.old_slave_positions[slave_faces[f].nodes[1]]));
+        // How far master face m and this segment moved towards each other
+        // at most in the increment.
+        const auto motion = [&](const unsigned int m)
+        {
+          double master_motion = 0;
+          for (unsigned int v = 0; v < faces[m].n_vertices; ++v)
+          {
+            const unsigned int n = faces[m].nodes[v];
+            master_motion        = std::max(master_motion,
+                                     norm(pair.master_positions[n] -
+                                          pair.old_master_positions[n]));
+          }
+          return slave_motion + master_motion;
+        };
 
         // Whether master face m overlaps this slave segment in the
         // projection onto its line, faces it and is not too deep behind
@@ -195,7 +232,8 @@ namespace tribos
             gap_max          = std::max(gap_max, gap);
           }
           const double length = std::sqrt(length_squared);
-          if (gap_max < -length && !was_closed)
+          if (gap_max < -behind_reach(length, norm(y_d - y_c), motion(m)) &&
+              !was_closed)
             return 1;
           walker.reached |= gap_min <= std::min(search_distance, length);
           return 2;
@@ -238,7 +276,13 @@ namespace tribos
           height_min = std::min(height_min, dot(x[v] - plane.x0, plane.n0));
           height_max = std::max(height_max, dot(x[v] - plane.x0, plane.n0));
         }
-        const double length = std::sqrt(std::abs(plane.area));
+        const double length       = std::sqrt(std::abs(plane.area));
+        double       slave_motion = 0;
+        for (unsigned int v = 0; v < n_s; ++v)
+          slave_motion =
+            std::max(slave_motion,
+                     norm(x[v] -
+                          pair.old_slave_positions[slave_faces[f].nodes[v]]));
 
         // Whether master face m overlaps this slave face in the plane and
         // is not too deep behind it (as in 2D).
@@ -257,7 +301,18 @@ namespace tribos
           }
           if (!internal::overlaps_in_plane(plane, y, n_m))
             return 0;
-          if (gap_max < -length && !was_closed)
+          double master_motion = 0;
+          for (unsigned int v = 0; v < n_m; ++v)
+            master_motion =
+              std::max(master_motion,
+                       norm(y[v] -
+                            pair.old_master_positions[faces[m].nodes[v]]));
+          if (gap_max <
+                -behind_reach(length,
+                              std::sqrt(std::abs(
+                                internal::auxiliary_plane(y, n_m).area)),
+                              slave_motion + master_motion) &&
+              !was_closed)
             return 1;
           walker.reached |= gap_min <= std::min(search_distance, length);
           return 2;
@@ -271,6 +326,39 @@ namespace tribos
           return false;
       }
       return true;
+    }
+
+
+    /**
+     * How deep slave node @p k lies inside the master: its distance to the
+     * closest master point if it lies behind the face there (within 25
+     * degrees of the inward normal: beside the end of a master surface is
+     * not inside), else 0.
+     */
+    template <int dim>
+    double
+    depth_inside(const ContactPair<dim> &pair, const unsigned int k)
+    {
+      const Vec3<double> &x = pair.slave_positions[k];
+      unsigned int        m;
+      double              squared_distance;
+      Vec3<double>        closest;
+      if (!pair.search.closest_face(x, m, squared_distance, &closest) ||
+          squared_distance == 0)
+        return 0;
+      const auto  &face = pair.master->faces()[m];
+      Vec3<double> y[4];
+      for (unsigned int v = 0; v < face.n_vertices; ++v)
+        y[v] = pair.master_positions[face.nodes[v]];
+      Vec3<double> normal;
+      if constexpr (dim == 2)
+        normal = cross(Vec3<double>{{0., 0., 1.}}, y[1] - y[0]);
+      else
+        normal = internal::auxiliary_plane(y, face.n_vertices).n0;
+      const double distance = std::sqrt(squared_distance);
+      return dot(x - closest, normal) < -0.9 * distance * norm(normal) ?
+               distance :
+               0;
     }
   } // namespace
 
@@ -299,6 +387,11 @@ namespace tribos
     state.distance = walker.closest <= parameters.search_distance ?
                        walker.closest :
                        std::numeric_limits<double>::quiet_NaN();
+    // A node inside the master has a negative distance: reported as an open
+    // gap of +0.29 it read as clear of a master it had passed into.
+    const double depth = depth_inside(pair, k);
+    if (depth > 0 && depth <= parameters.search_distance)
+      state.distance = -depth;
     if (!walker.reached)
       found.clear();
     if (!found.empty())

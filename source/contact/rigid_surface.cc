@@ -2,6 +2,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
+
 namespace tribos
 {
   template <int dim>
@@ -64,6 +66,41 @@ namespace tribos
       shift[d] = value[d];
     return shift;
   }
+
+
+
+  template <int dim>
+  bool
+  RigidSurface<dim>::passed_through(const Vec3<double> &x_old,
+                                    const Vec3<double> &shift_old,
+                                    const Vec3<double> &x,
+                                    const Vec3<double> &shift,
+                                    const double        tolerance) const
+  {
+    if (description.type == "plane")
+      return false;
+    // The path relative to the centre (sphere, circle) or the axis
+    // (cylinder), from a to b.
+    const auto radial = [&](const Vec3<double> &r)
+    {
+      return description.type == "cylinder" && dim == 3 ?
+               r - scale(dot(r, direction), direction) :
+               r;
+    };
+    const Vec3<double> a = radial(x_old - (point + shift_old));
+    const Vec3<double> b = radial(x - (point + shift));
+    const double       R = description.radius;
+    if (norm(a) <= R || norm(b) <= R)
+      return false;
+    const Vec3<double> d  = b - a;
+    const double       dd = dot(d, d);
+    if (dd == 0)
+      return false;
+    const double t = std::clamp(-dot(a, d) / dd, 0., 1.);
+    return norm(a + scale(t, d)) < R - tolerance;
+  }
+
+
 
   template class RigidSurface<2>;
   template class RigidSurface<3>;

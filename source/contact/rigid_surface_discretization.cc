@@ -1,6 +1,8 @@
 #include <tribos/contact/contact_pair.h>
 #include <tribos/contact/rigid_surface_discretization.h>
 
+#include <cmath>
+
 namespace tribos
 {
   template <int dim>
@@ -78,11 +80,29 @@ namespace tribos
     double                               *R,
     double                               *K,
     std::vector<types::global_dof_index> &dofs,
-    std::string &)
+    std::string                          &refusal)
   {
     NodeState  &state = pair.current[k];
     const auto &edge  = pair.slave->nodes()[k].edge;
     this->element_dofs(pair, k, -1, dofs);
+    // A node the surface went through within the increment (deeper than
+    // half its size): the increment is refused, so that the stepper cuts
+    // it, rather than closing with zero force on the far side.
+    const double size = std::pow(std::max(pair.area[k], 0.), 1. / (dim - 1));
+    if (pair.rigid->passed_through(pair.old_slave_positions[k],
+                                   rigid.shift_old,
+                                   slave.position,
+                                   rigid.shift,
+                                   0.5 * size))
+    {
+      if (refusal.empty())
+        refusal = "contact pair <" + pair.description.text +
+                  ">: the rigid surface <" + pair.rigid->name() +
+                  "> passed through a slave node within the increment "
+                  "(tunnelling: outside at its start and end, through the "
+                  "surface's interior between); the increment is cut";
+      return {ElementOutcome::Kind::refused, false};
+    }
     if (edge[0] < 0)
       state.result =
         NodeToRigid<dim>::evaluate(slave, rigid, *pair.enforcement, R, K);

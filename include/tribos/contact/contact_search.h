@@ -40,13 +40,14 @@ namespace tribos
 
     /**
      * The face closest to @p point among those of the tree (its number on
-     * the surface) and the squared distance to it. Returns false if the
-     * tree has no faces.
+     * the surface), the squared distance to it and, if @p closest_point is
+     * not null, the closest point. Returns false if the tree has no faces.
      */
     bool
     closest_face(const Vec3<double> &point,
                  unsigned int       &face,
-                 double             &squared_distance) const;
+                 double             &squared_distance,
+                 Vec3<double>       *closest_point = nullptr) const;
 
   private:
     struct Tree;

@@ -67,6 +67,22 @@ namespace tribos
       xbar                  = x - scale(gap, n);
     }
 
+    /**
+     * Whether a point that moved from @p x_old (surface shifted by
+     * @p shift_old) to @p x (shifted by @p shift) went through the
+     * surface's interior along the straight relative path, deeper than
+     * @p tolerance, although it is outside at both ends: a sphere or
+     * cylinder moved through a body in one increment, which the gaps at the
+     * end of the increment cannot see (tunnelling). A plane cannot be
+     * passed that way (its gap is linear along the path).
+     */
+    bool
+    passed_through(const Vec3<double> &x_old,
+                   const Vec3<double> &shift_old,
+                   const Vec3<double> &x,
+                   const Vec3<double> &shift,
+                   const double        tolerance) const;
+
   private:
     const Parameters::RigidSurface     description;
     Vec3<double>                       point;

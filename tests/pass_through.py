@@ -1,0 +1,83 @@
+"""Bodies that pass through each other within one increment (issue 56).
+
+(1) Mortar, a punch pushed into a block by more than an element in one
+    increment (tests/pass_through.prm): the search skipped master faces
+    more than a segment behind an open slave node, and the run completed
+    with normal force 0 and the penetrated nodes reported open (COPEN =
+    +0.29 for nodes 0.29 inside). Now one increment gives the force of ten
+    (to the Newton tolerance), penalty and multipliers, quadrilaterals and
+    hexahedra, and no slave node reports an open gap.
+(2) A rigid circle moved through a thin strip by four radii in one
+    increment (tests/tunnelling.prm): every node is outside the circle at
+    the increment's start and end, so the end gaps closed the increment
+    with zero force. Now the swept path is checked: the increment is cut
+    back until the circle cannot jump over a node, and the result equals
+    a run of twenty increments."""
+
+import sys
+
+from tribos_test import setup, run, read_csv, check, finish
+
+tribos, tests, out = setup(sys.argv)
+
+
+def last(folder):
+    return read_csv(folder + "/history.csv")[-1]
+
+
+def contact_rows(folder, step):
+    return read_csv("%s/contact-%05d.csv" % (folder, step))
+
+
+# (1) mortar, 2D
+for method in ("penalty", "lagrange multiplier"):
+    tag = method.split()[0]
+    forces = {}
+    for steps in (1, 10):
+        folder = "%s/mortar_2d_%s_%d" % (out, tag, steps)
+        run(tribos, tests + "/pass_through.prm", folder,
+            ["Contact/Method=" + method,
+             "Time stepping/Number of steps=%d" % steps])
+        forces[steps] = last(folder)["pair0_normal_force"]
+    one, ten = forces[1], forces[10]
+    check(ten > 10 and abs(one - ten) < 1e-6 * ten,
+          "mortar 2D, %s: one increment gives %.10g, ten %.10g" %
+          (method, one, ten))
+    rows = contact_rows("%s/mortar_2d_%s_1" % (out, tag), 1)
+    check(all(r["COPEN"] < 1e-3 for r in rows) and
+          all(r["CSTATUS"] > 0 for r in rows),
+          "mortar 2D, %s, one increment: every slave node closed, largest "
+          "COPEN %.2e" % (method, max(r["COPEN"] for r in rows)))
+
+# (1) mortar, 3D hexahedra
+blocks = ["Scene/Two blocks/Gap=0.01",
+          "Scene/Two blocks/Upper block offset=0.2, 0.2",
+          "Boundary conditions/Dirichlet=4 : xyz : 0, 0, 0 ; "
+          "15 : xyz : 0, 0, -0.3*t",
+          "Boundary conditions/Symmetry=", "Boundary conditions/Neumann=",
+          "Materials/Young's modulus=100, 100",
+          "Contact/Pairs=14 : 5", "Contact/Discretization=mortar"]
+forces = {}
+for steps in (1, 3):
+    folder = "%s/mortar_3d_%d" % (out, steps)
+    run(tribos, tests + "/two_blocks_3d.prm", folder,
+        blocks + ["Time stepping/Number of steps=%d" % steps])
+    forces[steps] = last(folder)["pair0_normal_force"]
+check(forces[3] > 10 and abs(forces[1] - forces[3]) < 1e-6 * forces[3],
+      "mortar 3D hexahedra: one increment gives %.10g, three %.10g"
+      % (forces[1], forces[3]))
+
+# (2) rigid tunnelling
+one = out + "/tunnelling_1"
+run(tribos, tests + "/tunnelling.prm", one)
+twenty = out + "/tunnelling_20"
+run(tribos, tests + "/tunnelling.prm", twenty,
+    ["Time stepping/Number of steps=20"])
+f1, f20 = last(one)["pair0_normal_force"], last(twenty)["pair0_normal_force"]
+check(last(one)["cutbacks"] >= 1,
+      "tunnelling: the one increment was cut back %d times"
+      % last(one)["cutbacks"])
+check(f20 > 1 and abs(f1 - f20) < 1e-6 * f20,
+      "tunnelling: normal force %.10g after the cut increment, %.10g in "
+      "twenty increments" % (f1, f20))
+finish()
