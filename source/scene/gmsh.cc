@@ -8,8 +8,6 @@
 #include <tribos/scene/mesh_tools.h>
 #include <tribos/scene/scene.h>
 
-#include <deal.II/grid/grid_in.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -78,95 +76,15 @@ namespace tribos
         read_gmsh(*this, refinement, tria, &curved);
       }
 
+      unsigned int
+      mesh_order(const unsigned int dim) const override
+      {
+        return dim == 2 ? GmshSecondOrder::order<2>(mesh_file) :
+                          GmshSecondOrder::order<3>(mesh_file);
+      }
+
       std::string mesh_file;
     };
-
-
-
-    /**
-     * What a gmsh element type number is, for the message that refuses it.
-     */
-    std::string
-    gmsh_element_name(const int type)
-    {
-      switch (type)
-      {
-        case 2:
-          return "3-node triangles";
-        case 4:
-          return "4-node tetrahedra";
-        case 6:
-          return "6-node prisms";
-        case 7:
-          return "5-node pyramids";
-        case 8:
-          return "3-node (second-order) lines";
-        case 9:
-          return "6-node (second-order) triangles";
-        case 10:
-          return "9-node (second-order) quadrilaterals";
-        case 11:
-          return "10-node (second-order) tetrahedra";
-        case 12:
-          return "27-node (second-order) hexahedra";
-        case 16:
-          return "8-node (second-order) quadrilaterals";
-        case 17:
-          return "20-node (second-order) hexahedra";
-        default:
-          return "gmsh element type " + std::to_string(type);
-      }
-    }
-
-
-
-    /**
-     * The checks deal.II's reader does not make, before it runs: an ASCII
-     * gmsh file (the reader takes a binary one for garbage) that is
-     * complete (a file cut inside its element list is read as a mesh with
-     * fewer cells, without complaint).
-     */
-    void
-    check_gmsh_file(const std::string &file)
-    {
-      const std::string name = "Parameter <Scene/Mesh file> = <" + file + ">";
-      AssertThrow(std::filesystem::is_regular_file(file),
-                  ExcMessage(name + ": the file does not exist."));
-      std::ifstream input(file, std::ios::binary);
-      std::string   line;
-      std::getline(input, line);
-      AssertThrow(Text::trim(line) == "$MeshFormat",
-                  ExcMessage(name +
-                             ": not a gmsh mesh file (its first line is not "
-                             "$MeshFormat)."));
-      double version   = 0;
-      int    file_type = -1;
-      std::getline(input, line);
-      std::istringstream(line) >> version >> file_type;
-      AssertThrow(file_type == 0,
-                  ExcMessage(name +
-                             ": a binary gmsh file; tribos reads ASCII "
-                             "files. Save it with 'gmsh -save -format msh2' "
-                             "or 'Mesh.Binary = 0;'."));
-      // The last section the file opened, for the message of a cut file.
-      std::string section;
-      bool        complete = false;
-      while (std::getline(input, line))
-      {
-        line = Text::trim(line);
-        if (line == "$EndElements")
-          complete = true;
-        else if (!line.empty() && line[0] == '$' && line.rfind("$End", 0) != 0)
-          section = line;
-      }
-      AssertThrow(complete,
-                  ExcMessage(name + ": the file is incomplete: it ends " +
-                             (section.empty() ?
-                                std::string("after its header") :
-                                "inside its " + section + " section") +
-                             " (no $EndElements line: cut while it was "
-                             "written or copied?). Write the mesh again."));
-    }
 
 
 
@@ -192,29 +110,6 @@ namespace tribos
 
 
 
-    /** A second-order mesh file's cells and (@p curved, if not null) their
-     * curved geometry; false if @p file is first-order. */
-    template <int dim>
-    bool
-    read_second_order(const std::string  &file,
-                      const unsigned int  refinement,
-                      Triangulation<dim> &tria,
-                      CurvedCells<dim>   *curved)
-    {
-      std::vector<std::vector<Point<dim>>> coarse;
-      if (!GmshSecondOrder::read(file, tria, coarse))
-        return false;
-      check_one_kind(file, tria);
-      if (curved != nullptr)
-        curved->support_points =
-          GmshSecondOrder::refine(tria, refinement, coarse);
-      else
-        tria.refine_global(refinement);
-      return true;
-    }
-
-
-
     template <int dim>
     void
     read_gmsh(const GmshScene    &p,
@@ -222,48 +117,18 @@ namespace tribos
               Triangulation<dim> &tria,
               CurvedCells<dim>   *curved)
     {
-      check_gmsh_file(p.mesh_file);
-      if (read_second_order(p.mesh_file, refinement, tria, curved))
-        return;
-      GridIn<dim> grid_in;
-      grid_in.attach_triangulation(tria);
-      std::ifstream input(p.mesh_file);
-      try
-      {
-        grid_in.read_msh(input);
-      }
-      catch (const ExceptionBase &e)
-      {
-        // deal.II's message lists its own element codes; say in the
-        // user's terms what the file holds and what tribos takes.
-        std::ostringstream info;
-        e.print_info(info);
-        const std::string what  = info.str();
-        const std::string key   = "Element Identifier <";
-        const auto        start = what.find(key);
-        if (start != std::string::npos)
-        {
-          const int type = std::atoi(what.c_str() + start + key.size());
-          AssertThrow(false,
-                      ExcMessage(
-                        "Parameter <Scene/Mesh file> = <" + p.mesh_file +
-                        ">: the mesh has " + gmsh_element_name(type) +
-                        ", which tribos does not read. It takes "
-                        "quadrilaterals or triangles in 2D, hexahedra or "
-                        "tetrahedra in 3D, of order 1 or 2: mesh with "
-                        "'Mesh.ElementOrder = 1;' or '= 2;'."));
-        }
-        std::string        first_line;
-        std::istringstream lines(what);
-        while (first_line.empty() && std::getline(lines, first_line))
-          first_line = Text::trim(first_line);
-        AssertThrow(false,
-                    ExcMessage(
-                      "Parameter <Scene/Mesh file> = <" + p.mesh_file +
-                      ">: deal.II cannot read the mesh: " + first_line));
-      }
+      AssertThrow(!p.mesh_file.empty(),
+                  ExcMessage("Parameter <Scene/Mesh file> is empty: Scene/"
+                             "Name = gmsh needs a gmsh .msh file."));
+      std::vector<std::vector<Point<dim>>> coarse;
+      const bool                           second_order =
+        GmshSecondOrder::read(p.mesh_file, tria, coarse);
       check_one_kind(p.mesh_file, tria);
-      tria.refine_global(refinement);
+      if (second_order && curved != nullptr)
+        curved->support_points =
+          GmshSecondOrder::refine(tria, refinement, coarse);
+      else
+        tria.refine_global(refinement);
     }
   } // namespace
 

@@ -1,15 +1,16 @@
 #include <tribos/scene/gmsh_second_order.h>
+#include <tribos/scene/msh_file.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/reference_cell.h>
 
-#include <gmsh.h>
-
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <map>
-#include <unordered_map>
 #include <utility>
 
 namespace tribos
@@ -18,20 +19,6 @@ namespace tribos
   {
     namespace
     {
-      /** gmsh's state between open and close, released on every path. */
-      struct GmshSession
-      {
-        GmshSession()
-        {
-          gmsh::initialize(0, nullptr, false);
-          gmsh::option::setNumber("General.Terminal", 0);
-        }
-        ~GmshSession()
-        {
-          gmsh::finalize();
-        }
-      };
-
       using Edge = std::array<unsigned int, 2>;
 
       /**
@@ -78,11 +65,15 @@ namespace tribos
         {{2, 3, 7, 6}},
         {{4, 5, 6, 7}}};
 
-      /** The second-order cell of gmsh type @p type (gmsh's node ordering),
-       * or null if @p type is none in @p dim dimensions. */
+      /** The cell of gmsh type @p type (gmsh's node ordering) that tribos
+       * reads in @p dim dimensions (first order: corners only), or null. */
       const CellKind *
-      second_order_cell(const int dim, const int type)
+      cell_kind(const int dim, const int type)
       {
+        static const CellKind tri3{3, {}, 3, {}, -1, -1};
+        static const CellKind quad4{4, {}, 4, {}, -1, -1};
+        static const CellKind tet4{4, {}, 4, {}, -1, -1};
+        static const CellKind hex8{8, {}, 8, {}, -1, -1};
         static const CellKind tri6{3, triangle_edges, 3, {}, -1, -1};
         static const CellKind quad8{4, quad_edges, 4, {}, -1, -1};
         static const CellKind quad9{4, quad_edges, 4, {}, -1, 8};
@@ -90,24 +81,18 @@ namespace tribos
         static const CellKind hex20{8, hex_edges, 8, hex_faces, -1, -1};
         static const CellKind hex27{8, hex_edges, 8, hex_faces, 20, 26};
         if (dim == 2)
-          return type == 9  ? &tri6 :
+          return type == 2  ? &tri3 :
+                 type == 3  ? &quad4 :
+                 type == 9  ? &tri6 :
                  type == 16 ? &quad8 :
                  type == 10 ? &quad9 :
                               nullptr;
-        return type == 11 ? &tet10 :
+        return type == 4  ? &tet4 :
+               type == 5  ? &hex8 :
+               type == 11 ? &tet10 :
                type == 17 ? &hex20 :
                type == 12 ? &hex27 :
                             nullptr;
-      }
-
-      /** Whether gmsh type @p type is a first-order cell of @p dim
-       * dimensions that deal.II's reader takes (prisms and pyramids too:
-       * the scene refuses a mesh of several kinds). */
-      bool
-      first_order_cell(const int dim, const int type)
-      {
-        return dim == 2 ? (type == 2 || type == 3) :
-                          (type == 4 || type == 5 || type == 6 || type == 7);
       }
 
       /** The number of corners of gmsh face or edge element type @p type
@@ -132,23 +117,19 @@ namespace tribos
         }
       }
 
-      /** gmsh's description of element type @p type. */
+      /** What element type @p type is, for messages. */
       std::string
       describe(const int type)
       {
-        std::string         name;
-        int                 dim = 0, order = 0, n_nodes = 0, n_primary = 0;
-        std::vector<double> coordinates;
-        gmsh::model::mesh::getElementProperties(type,
-                                                name,
-                                                dim,
-                                                order,
-                                                n_nodes,
-                                                coordinates,
-                                                n_primary);
-        return "'" + name + "' cells (gmsh element type " +
-               std::to_string(type) + ", order " + std::to_string(order) + ")";
+        const MshElementType *kind = msh_element_type(type);
+        return "'" + std::string(kind != nullptr ? kind->name : "unknown") +
+               "' cells (gmsh element type " + std::to_string(type) +
+               (kind != nullptr ? ", order " + std::to_string(kind->order) :
+                                  std::string()) +
+               ")";
       }
+
+
 
       /** The sorted copy of @p indices: the key of an edge, face or cell. */
       template <typename Container>
@@ -160,44 +141,33 @@ namespace tribos
         return k;
       }
 
-      /** The physical tag of gmsh entity (@p d, @p tag): 0 without one. */
-      int
-      physical_tag(const std::string &name, const int d, const int tag)
-      {
-        std::vector<int> groups;
-        gmsh::model::getPhysicalGroupsForEntity(d, tag, groups);
-        AssertThrow(groups.size() <= 1,
-                    ExcMessage(name + ": the mesh's entity " +
-                               std::to_string(tag) + " of dimension " +
-                               std::to_string(d) +
-                               " is in several physical groups; tribos "
-                               "(like deal.II's reader) takes one per "
-                               "entity: its body or boundary id."));
-        return groups.empty() ? 0 : groups[0];
-      }
-
-
       /**
-       * A second-order gmsh model (open in the session) into deal.II's
-       * cell data and the positions of its cells' other nodes, kept by the
-       * sorted vertex numbers of their edge, face or cell.
+       * A gmsh mesh file (read and checked by read_msh_file()) into
+       * deal.II's cell data and, for second-order cells, the positions of
+       * their other nodes, kept by the sorted vertex numbers of their edge,
+       * face or cell. What the file format allows but tribos cannot mesh
+       * is refused here, naming the element's line: cells of other kinds,
+       * orders mixed, cells of a higher dimension than Dimension, a 2D mesh
+       * off the x-y plane, degenerate, inverted or twisted cells.
        */
       template <int dim>
       class Reader
       {
       public:
         /** @p name starts the messages. */
-        explicit Reader(const std::string &name)
-          : name(name)
+        Reader(const MshFile &file, const std::string &name)
+          : file(file)
+          , name(name)
         {
         }
 
-        /** Whether the model's cells are second-order; refuses cells of
-         * other orders or kinds, and first- and second-order mixed. */
-        bool
-        second_order() const;
+        /** The order of the file's cells (1 or 2); refuses cells of other
+         * kinds or orders, first and second order mixed, cells of a
+         * dimension above @p dim, and a file without cells. */
+        unsigned int
+        order() const;
 
-        /** The nodes, the cells and the boundary elements. */
+        /** The cells and the boundary elements. */
         void
         read();
 
@@ -212,22 +182,33 @@ namespace tribos
         support_points(const Triangulation<dim> &triangulation) const;
 
       private:
-        const Point<dim> &
-        position(const std::size_t tag) const;
+        Point<dim>
+        position(const std::size_t node) const;
 
-        /** Cell @p nodes of @p kind, body @p material. */
+        /** The message start for the element @p e. */
+        std::string
+        at(const MshFile::Element &e) const;
+
+        /** Cell @p e of @p kind. */
         void
-        add_cell(const CellKind    &kind,
-                 const std::size_t *nodes,
-                 const unsigned int material);
+        add_cell(const CellKind &kind, const MshFile::Element &e);
+
+        /** Refuse cell @p e (its vertices @p corner, deal.II order) if it
+         * is degenerate, inverted or twisted. */
+        void
+        check_shape(const MshFile::Element          &e,
+                    const std::vector<unsigned int> &corner) const;
 
         void
-        read_boundary(const int d);
+        add_boundary(const MshFile::Element &e);
 
-        const std::string                               name;
-        std::unordered_map<std::size_t, Point<dim>>     node;
+        const MshFile    &file;
+        const std::string name;
+        /** First-order meshes number their vertices as deal.II's reader
+         * does (in the order of $Nodes), second-order ones as first met. */
+        bool                                            second_order = false;
         std::vector<Point<dim>>                         vertices;
-        std::unordered_map<std::size_t, unsigned int>   vertex_of_node;
+        std::vector<unsigned int>                       vertex_of_node;
         std::map<std::vector<unsigned int>, Point<dim>> node_of;
         std::vector<CellData<dim>>                      cells;
         SubCellData                                     boundary;
@@ -237,57 +218,73 @@ namespace tribos
 
 
       template <int dim>
-      bool
-      Reader<dim>::second_order() const
+      std::string
+      Reader<dim>::at(const MshFile::Element &e) const
       {
-        std::vector<int> types;
-        gmsh::model::mesh::getElementTypes(types, dim);
-        AssertThrow(!types.empty(),
-                    ExcMessage(name + ": the mesh has no " +
-                               std::string(dim == 2 ? "2D" : "3D") +
-                               " cells (with Dimension = " +
-                               std::to_string(dim) + ")."));
-        // A first-order mesh is deal.II's reader's.
-        if (std::all_of(types.begin(),
-                        types.end(),
-                        [](const int type)
-                        { return first_order_cell(dim, type); }))
-          return false;
-        bool first_order = false;
-        for (const int type : types)
-        {
-          first_order = first_order || first_order_cell(dim, type);
-          AssertThrow(
-            first_order_cell(dim, type) || second_order_cell(dim, type),
-            ExcMessage(
-              name + ": the mesh has " + describe(type) +
-              ", which tribos does not read. It takes cells of "
-              "order 1 (" +
-              (dim == 2 ? "triangles, quadrilaterals" :
-                          "tetrahedra, hexahedra") +
-              ") or 2 (" +
-              (dim == 2 ? "tri6, quad8, quad9" : "tet10, hex20, hex27") +
-              "): mesh with 'Mesh.ElementOrder = 1;' or '= 2;'."));
-        }
-        AssertThrow(!first_order,
-                    ExcMessage(name +
-                               ": the mesh mixes first- and second-order "
-                               "cells; tribos takes one order per mesh."));
-        return true;
+        return file.file + ":" + std::to_string(e.line) + ": element " +
+               std::to_string(e.tag);
       }
 
 
 
       template <int dim>
-      const Point<dim> &
-      Reader<dim>::position(const std::size_t tag) const
+      unsigned int
+      Reader<dim>::order() const
       {
-        const auto it = node.find(tag);
-        AssertThrow(it != node.end(),
-                    ExcMessage(name + ": an element refers to node " +
-                               std::to_string(tag) +
-                               ", which the mesh does not have."));
-        return it->second;
+        bool first = false, second = false;
+        for (const auto &e : file.elements)
+        {
+          AssertThrow(e.dim <= dim,
+                      ExcMessage(name + " (" + at(e) + "): the mesh has " +
+                                 describe(e.type) + " of dimension " +
+                                 std::to_string(e.dim) +
+                                 ", but Dimension = " + std::to_string(dim) +
+                                 ". Set Dimension = 3 for a 3D mesh (a 2D "
+                                 "run would take its surface triangles or "
+                                 "quadrilaterals as its cells)."));
+          if (e.dim != dim)
+            continue;
+          const CellKind *kind = cell_kind(dim, e.type);
+          AssertThrow(
+            kind != nullptr,
+            ExcMessage(
+              name + " (" + at(e) + "): the mesh has " + describe(e.type) +
+              ", which tribos does not read. It takes cells of order 1 (" +
+              (dim == 2 ? "triangles or quadrilaterals" :
+                          "tetrahedra or hexahedra") +
+              ") or 2 (" +
+              (dim == 2 ? "tri6, quad8, quad9" : "tet10, hex20, hex27") +
+              "), one kind per mesh: mesh with 'Mesh.ElementOrder = 1;' or "
+              "'= 2;'" +
+              (dim == 3 ? ", and without prisms or pyramids ('Mesh."
+                          "RecombineAll = 1;' with 'Mesh.SubdivisionAlgorithm "
+                          "= 2;' gives hexahedra only)" :
+                          std::string()) +
+              "."));
+          (kind->edges.empty() ? first : second) = true;
+        }
+        AssertThrow(first || second,
+                    ExcMessage(name + ": the mesh has no " +
+                               std::string(dim == 2 ? "2D" : "3D") +
+                               " cells (with Dimension = " +
+                               std::to_string(dim) + ")."));
+        AssertThrow(!(first && second),
+                    ExcMessage(name +
+                               ": the mesh mixes first- and second-order "
+                               "cells; tribos takes one order per mesh."));
+        return second ? 2 : 1;
+      }
+
+
+
+      template <int dim>
+      Point<dim>
+      Reader<dim>::position(const std::size_t node) const
+      {
+        Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = file.nodes[node].x[d];
+        return x;
       }
 
 
@@ -296,71 +293,71 @@ namespace tribos
       void
       Reader<dim>::read()
       {
-        std::vector<std::size_t> node_tags;
-        std::vector<double>      coordinates, parametric;
-        gmsh::model::mesh::getNodes(node_tags,
-                                    coordinates,
-                                    parametric,
-                                    -1,
-                                    -1,
-                                    false,
-                                    false);
-        for (std::size_t i = 0; i < node_tags.size(); ++i)
+        second_order = order() == 2;
+        vertex_of_node.assign(file.nodes.size(), numbers::invalid_unsigned_int);
+        // A 2D mesh must lie in the x-y plane: deal.II would drop z.
+        if (dim == 2)
         {
-          Point<dim> x;
-          for (unsigned int d = 0; d < dim; ++d)
-            x[d] = coordinates[3 * i + d];
-          node[node_tags[i]] = x;
+          double extent = 0;
+          for (const auto &node : file.nodes)
+            for (unsigned int d = 0; d < 3; ++d)
+              extent = std::max(extent, std::abs(node.x[d]));
+          for (const auto &e : file.elements)
+            if (e.dim == dim)
+              for (const std::size_t n : e.nodes)
+                AssertThrow(std::abs(file.nodes[n].x[2]) <= 1e-10 * extent,
+                            ExcMessage(
+                              name + " (" + file.file + ":" +
+                              std::to_string(file.nodes[n].line) +
+                              "): a node of the 2D mesh has z = " +
+                              std::to_string(file.nodes[n].x[2]) +
+                              "; with Dimension = 2 the mesh must lie in the "
+                              "x-y plane (z = 0)."));
         }
-
-        gmsh::vectorpair entities;
-        gmsh::model::getEntities(entities, dim);
-        for (const auto &[d, tag] : entities)
-        {
-          const int        material = physical_tag(name, d, tag);
-          std::vector<int> types;
-          std::vector<std::vector<std::size_t>> tags, nodes;
-          gmsh::model::mesh::getElements(types, tags, nodes, d, tag);
-          for (unsigned int b = 0; b < types.size(); ++b)
+        if (!second_order)
+          for (std::size_t n = 0; n < file.nodes.size(); ++n)
           {
-            const std::size_t n_nodes = nodes[b].size() / tags[b].size();
-            for (std::size_t e = 0; e < tags[b].size(); ++e)
-              add_cell(*second_order_cell(dim, types[b]),
-                       &nodes[b][e * n_nodes],
-                       material);
+            vertex_of_node[n] = vertices.size();
+            vertices.push_back(position(n));
           }
-        }
+        for (const auto &e : file.elements)
+          if (e.dim == dim)
+            add_cell(*cell_kind(dim, e.type), e);
         // The boundary elements: lines in 2D, faces (and lines) in 3D.
-        for (int d = 1; d < dim; ++d)
-          read_boundary(d);
+        for (const auto &e : file.elements)
+          if (e.dim >= 1 && e.dim < dim)
+            add_boundary(e);
       }
 
 
 
       template <int dim>
       void
-      Reader<dim>::add_cell(const CellKind    &kind,
-                            const std::size_t *nodes,
-                            const unsigned int material)
+      Reader<dim>::add_cell(const CellKind &kind, const MshFile::Element &e)
       {
-        // The corners become the vertices, numbered when first seen.
+        const std::vector<std::size_t> &nodes = e.nodes;
+        // The corners become the vertices (second order: numbered when
+        // first met).
         const bool hyper_cube = (kind.n_corners == (dim == 2 ? 4u : 8u));
         hyper_cubes           = hyper_cubes || hyper_cube;
         simplices             = simplices || !hyper_cube;
         std::vector<unsigned int> corner(kind.n_corners);
         for (unsigned int c = 0; c < kind.n_corners; ++c)
         {
-          const auto [it, is_new] =
-            vertex_of_node.emplace(nodes[c], vertices.size());
-          if (is_new)
+          unsigned int &vertex = vertex_of_node[nodes[c]];
+          if (vertex == numbers::invalid_unsigned_int)
+          {
+            vertex = vertices.size();
             vertices.push_back(position(nodes[c]));
-          corner[c] = it->second;
+          }
+          corner[c] = vertex;
         }
         CellData<dim> cell(kind.n_corners);
         for (unsigned int c = 0; c < kind.n_corners; ++c)
           cell.vertices[hyper_cube ? GeometryInfo<dim>::ucd_to_deal[c] : c] =
             corner[c];
-        cell.material_id = material;
+        cell.material_id = e.physical;
+        check_shape(e, cell.vertices);
         cells.push_back(cell);
 
         Point<dim> sum_corners, sum_middles;
@@ -409,52 +406,104 @@ namespace tribos
 
       template <int dim>
       void
-      Reader<dim>::read_boundary(const int d)
+      Reader<dim>::add_boundary(const MshFile::Element &e)
       {
-        gmsh::vectorpair entities;
-        gmsh::model::getEntities(entities, d);
-        for (const auto &[entity_dim, tag] : entities)
+        const unsigned int n_corners = boundary_corners(e.type);
+        AssertThrow(n_corners > 0 && (n_corners == 2) == (e.dim == 1),
+                    ExcMessage(name + " (" + at(e) +
+                               "): the mesh's boundary "
+                               "has " +
+                               describe(e.type) +
+                               ", which tribos does not read."));
+        CellData<1> line;
+        CellData<2> face(n_corners);
+        for (unsigned int c = 0; c < n_corners; ++c)
         {
-          const int        id = physical_tag(name, entity_dim, tag);
-          std::vector<int> types;
-          std::vector<std::vector<std::size_t>> tags, nodes;
-          gmsh::model::mesh::getElements(types, tags, nodes, entity_dim, tag);
-          for (unsigned int b = 0; b < types.size(); ++b)
-          {
-            const unsigned int n_corners = boundary_corners(types[b]);
-            AssertThrow(n_corners > 0 && (n_corners == 2) == (d == 1),
-                        ExcMessage(name + ": the mesh's boundary has " +
-                                   describe(types[b]) +
-                                   ", which tribos does not read."));
-            const std::size_t n_nodes = nodes[b].size() / tags[b].size();
-            for (std::size_t e = 0; e < tags[b].size(); ++e)
-            {
-              CellData<1> line;
-              CellData<2> face(n_corners);
-              for (unsigned int c = 0; c < n_corners; ++c)
-              {
-                const std::size_t tag_c = nodes[b][e * n_nodes + c];
-                const auto        it    = vertex_of_node.find(tag_c);
-                AssertThrow(it != vertex_of_node.end(),
-                            ExcMessage(name +
-                                       ": a boundary element's corner is "
-                                       "no corner of a cell (node " +
-                                       std::to_string(tag_c) + ")."));
-                (d == 1 ? line.vertices[c] : face.vertices[c]) = it->second;
-              }
-              if (d == 1)
-              {
-                line.boundary_id = id;
-                boundary.boundary_lines.push_back(line);
-              }
-              else
-              {
-                face.boundary_id = id;
-                boundary.boundary_quads.push_back(face);
-              }
-            }
-          }
+          const unsigned int vertex = vertex_of_node[e.nodes[c]];
+          AssertThrow(vertex != numbers::invalid_unsigned_int,
+                      ExcMessage(name + " (" + at(e) +
+                                 "): a boundary element's corner is no "
+                                 "corner of a cell (node " +
+                                 std::to_string(file.nodes[e.nodes[c]].tag) +
+                                 ")."));
+          (e.dim == 1 ? line.vertices[c] : face.vertices[c]) = vertex;
         }
+        if (e.dim == 1)
+        {
+          line.boundary_id = e.physical;
+          boundary.boundary_lines.push_back(line);
+        }
+        else
+        {
+          face.boundary_id = e.physical;
+          boundary.boundary_quads.push_back(face);
+        }
+      }
+
+
+
+      template <int dim>
+      void
+      Reader<dim>::check_shape(const MshFile::Element          &e,
+                               const std::vector<unsigned int> &corner) const
+      {
+        // Simplices: the signed volume; hyper cubes: the Jacobian at each
+        // corner (its edges to the neighbours in deal.II's lexicographic
+        // order, signed by the corner's parity): all of one sign and none
+        // near zero. The sign itself is free (deal.II turns inverted cells
+        // over).
+        double h = 0;
+        for (const unsigned int a : corner)
+          for (const unsigned int b : corner)
+            h = std::max(h, vertices[a].distance(vertices[b]));
+        const auto det =
+          [&](const unsigned int v, const std::array<unsigned int, dim> &to)
+        {
+          Tensor<2, dim> J;
+          for (unsigned int d = 0; d < dim; ++d)
+            for (unsigned int i = 0; i < dim; ++i)
+              J[i][d] = vertices[corner[to[d]]][i] - vertices[corner[v]][i];
+          return determinant(J);
+        };
+        std::vector<double> dets;
+        if (corner.size() == dim + 1)
+        {
+          std::array<unsigned int, dim> to;
+          for (unsigned int d = 0; d < dim; ++d)
+            to[d] = d + 1;
+          dets.push_back(det(0, to));
+        }
+        else
+          for (unsigned int v = 0; v < corner.size(); ++v)
+          {
+            std::array<unsigned int, dim> to;
+            int                           parity = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+            {
+              to[d] = v ^ (1u << d);
+              parity *= (v & (1u << d)) ? -1 : 1;
+            }
+            dets.push_back(parity * det(v, to));
+          }
+        double smallest_size = std::numeric_limits<double>::max();
+        for (const double d : dets)
+          smallest_size = std::min(smallest_size, std::abs(d));
+        const bool degenerate =
+          !(h > 0) || smallest_size <= 1e-12 * std::pow(h, dim);
+        const bool one_sign =
+          std::all_of(dets.begin(),
+                      dets.end(),
+                      [&](const double d) { return (d > 0) == (dets[0] > 0); });
+        AssertThrow(!degenerate && one_sign,
+                    ExcMessage(
+                      name + " (" + at(e) + "): the " +
+                      msh_element_type(e.type)->name + " is " +
+                      (degenerate ?
+                         std::string("degenerate (zero ") +
+                           (dim == 2 ? "area" : "volume") + " at a corner)" :
+                         std::string("inverted or twisted at some of its "
+                                     "corners (the Jacobian changes sign)")) +
+                      ". Mesh it again."));
       }
 
 
@@ -463,6 +512,8 @@ namespace tribos
       void
       Reader<dim>::create(Triangulation<dim> &triangulation)
       {
+        if (!second_order)
+          GridTools::delete_unused_vertices(vertices, cells, boundary);
         if (hyper_cubes && !simplices)
         {
           GridTools::invert_cells_with_negative_measure(vertices, cells);
@@ -526,19 +577,40 @@ namespace tribos
          std::vector<std::vector<Point<dim>>> &support_points)
     {
       const std::string name = "Parameter <Scene/Mesh file> = <" + file + ">";
-      GmshSession       session;
-      gmsh::open(file);
-      std::string error;
-      gmsh::logger::getLastError(error);
-      AssertThrow(error.empty(),
-                  ExcMessage(name + ": gmsh cannot read the mesh: " + error));
-      Reader<dim> reader(name);
-      if (!reader.second_order())
-        return false;
+      MshFile           mesh;
+      try
+      {
+        mesh = read_msh_file(file);
+      }
+      catch (const MshError &error)
+      {
+        AssertThrow(false, ExcMessage(name + ": " + error.what()));
+      }
+      Reader<dim> reader(mesh, name);
       reader.read();
       reader.create(triangulation);
+      if (reader.order() == 1)
+        return false;
       support_points = reader.support_points(triangulation);
       return true;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    order(const std::string &file)
+    {
+      const std::string name = "Parameter <Scene/Mesh file> = <" + file + ">";
+      try
+      {
+        return Reader<dim>(read_msh_file(file), name).order();
+      }
+      catch (const MshError &error)
+      {
+        AssertThrow(false, ExcMessage(name + ": " + error.what()));
+      }
+      return 1;
     }
 
 
@@ -551,5 +623,9 @@ namespace tribos
     read(const std::string &,
          Triangulation<3> &,
          std::vector<std::vector<Point<3>>> &);
+    template unsigned int
+    order<2>(const std::string &);
+    template unsigned int
+    order<3>(const std::string &);
   } // namespace GmshSecondOrder
 } // namespace tribos

@@ -12,14 +12,19 @@ namespace tribos
   using namespace dealii;
 
   /**
-   * Second-order gmsh meshes (tri6, quad8, quad9 in 2D; tet10, hex20, hex27
-   * in 3D), read with gmsh's own library (libgmsh): deal.II 9.4's reader
-   * takes first-order cells only. The triangulation gets the cells' vertices
-   * with deal.II's conventions for gmsh files (a cell's body id is the
-   * physical tag of its entity, a boundary face's id that of its face
-   * element's entity); the mid-side, face and centre nodes give the curved
-   * geometry as the support points of the quadratic Lagrange element of
-   * the cell's kind (FE_Q(2), FE_SimplexP(2)).
+   * gmsh meshes, first- or second-order, read by tribos's own reader
+   * (read_msh_file(): every count, tag and reference checked, the line
+   * named in every message) and built into a triangulation here, where
+   * what tribos cannot mesh is refused (other kinds of cells, a 3D mesh
+   * with Dimension = 2, a 2D mesh off the x-y plane, degenerate, inverted
+   * or twisted cells). Neither deal.II's reader nor libgmsh is used: both
+   * crash or hang on some malformed files (issue 56). A cell's body id is
+   * the physical tag of its element, a boundary face's id that of its face
+   * element. First-order meshes get deal.II's reader's vertex numbering
+   * (the $Nodes order) and clean-up. Second-order ones (tri6, quad8, quad9
+   * in 2D; tet10, hex20, hex27 in 3D) also give the curved geometry: the
+   * mid-side, face and centre nodes as the support points of the quadratic
+   * Lagrange element of the cell's kind (FE_Q(2), FE_SimplexP(2)).
    *
    * The serendipity cells (quad8, hex20) have no face or centre nodes; their
    * geometry lies in the Q2 space (every serendipity function is a Q2
@@ -31,13 +36,12 @@ namespace tribos
   namespace GmshSecondOrder
   {
     /**
-     * Read @p file (an existing, complete gmsh file) with libgmsh. If its
-     * cells are second-order, build them into the empty @p triangulation,
-     * put per coarse cell (by index on level 0) the positions of the
-     * quadratic element's support points into @p support_points, and
-     * return true. If its cells are first-order, leave both untouched and
-     * return false (deal.II's reader takes the file). Refuses a file gmsh
-     * cannot read, and cells of other kinds or orders, naming them.
+     * Read @p file and build its cells into the empty @p triangulation. If
+     * they are second-order, put per coarse cell (by index on level 0) the
+     * positions of the quadratic element's support points into
+     * @p support_points and return true; return false for first-order
+     * cells. Refuses a malformed file or cells tribos cannot mesh, naming
+     * the file's line.
      */
     template <int dim>
     bool
@@ -61,6 +65,12 @@ namespace tribos
     refine(Triangulation<dim>                         &triangulation,
            const unsigned int                          refinement,
            const std::vector<std::vector<Point<dim>>> &coarse_support_points);
+
+    /** The order (1 or 2) of the @p dim dimensional cells of @p file; the
+     * same refusals as read(). */
+    template <int dim>
+    unsigned int
+    order(const std::string &file);
   } // namespace GmshSecondOrder
 } // namespace tribos
 
