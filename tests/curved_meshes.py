@@ -111,7 +111,16 @@ for mesh, bound in (("tri6", 2e-5), ("quad8", 2e-5), ("quad9", 2e-5)):
     check(abs(refined / area - 1) < 1e-12,
           "quarter disc, curved %s, Refinement = 2: the coarse cells' area "
           "%.10f (to %.1e)" % (mesh, refined, abs(refined / area - 1)))
-area, result = disc(out + "/disc_p1", "quad9")
+# The default degree follows the mesh: a second-order mesh runs as Q2 with
+# its curved geometry (issue 56: the mid-side nodes were dropped).
+area, result = disc(out + "/disc_default", "quad9")
+check(abs(area / exact - 1) < 2e-5
+      and "takes their vertices only" not in result.stderr,
+      "quarter disc, quad9, Polynomial degree as meshed (the default): "
+      "curved, area within %.1e of pi/4, no warning"
+      % abs(area / exact - 1))
+area, result = disc(out + "/disc_p1", "quad9",
+                    ["Finite element/Polynomial degree=1"])
 check(area / exact - 1 < -1e-3
       and "Polynomial degree = 1 takes their vertices only" in result.stderr,
       "quarter disc, quad9 with Polynomial degree = 1: straight cells, area "

@@ -1,5 +1,6 @@
 #include <tribos/base/text.h>
 #include <tribos/parameters/all_parameters.h>
+#include <tribos/scene/scene.h>
 
 #include <algorithm>
 #include <boost/property_tree/json_parser.hpp>
@@ -40,6 +41,8 @@ namespace tribos
       dimension = prm.get_integer("Dimension");
       scene.parse_parameters(prm);
       finite_element.parse_parameters(prm);
+      finite_element.resolve_degree(
+        finite_element.degree == 0 ? scene.geometry->mesh_order(dimension) : 1);
       AssertThrow(!finite_element.axisymmetric || dimension == 2,
                   dealii::ExcMessage("Parameter <Finite element/Axisymmetric> "
                                      "= true needs Dimension = 2, not " +

@@ -1,5 +1,7 @@
 #include <tribos/parameters/finite_element.h>
 
+#include <string>
+
 namespace tribos
 {
   namespace Parameters
@@ -9,10 +11,13 @@ namespace tribos
     {
       prm.enter_subsection("Finite element");
       prm.declare_entry("Polynomial degree",
-                        "1",
-                        dealii::Patterns::Integer(1, 2),
+                        "as meshed",
+                        dealii::Patterns::Selection("as meshed|1|2"),
                         "Degree of the Lagrange displacement element: 1 (Q1, "
-                        "P1 on triangles and tetrahedra) or 2 (Q2, P2).");
+                        "P1 on triangles and tetrahedra) or 2 (Q2, P2); as "
+                        "meshed: 2 for a second-order gmsh mesh (tri6, quad8, "
+                        "quad9, tet10, hex20, hex27: its curved geometry "
+                        "kept), else 1.");
       prm.declare_entry("Quadrature points",
                         "0",
                         dealii::Patterns::Integer(0, 6),
@@ -52,17 +57,33 @@ namespace tribos
     FiniteElement::parse_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Finite element");
-      degree              = prm.get_integer("Polynomial degree");
-      n_quadrature_points = prm.get_integer("Quadrature points");
-      if (n_quadrature_points == 0)
-        n_quadrature_points = degree + 1;
+      const std::string degree_text = prm.get("Polynomial degree");
+      degree = degree_text == "as meshed" ? 0 : std::stoi(degree_text);
+      n_quadrature_points  = prm.get_integer("Quadrature points");
       f_bar                = prm.get_bool("F-bar");
       axisymmetric         = prm.get_bool("Axisymmetric");
       split_into_simplices = prm.get("Cells") == "simplices";
-      AssertThrow(!f_bar || degree == 1,
-                  dealii::ExcMessage("Parameter <Finite element/F-bar> = "
-                                     "true needs Polynomial degree = 1."));
       prm.leave_subsection();
+    }
+
+
+
+    void
+    FiniteElement::resolve_degree(const unsigned int mesh_order)
+    {
+      if (degree == 0)
+        degree = mesh_order;
+      if (n_quadrature_points == 0)
+        n_quadrature_points = degree + 1;
+      AssertThrow(!f_bar || degree == 1,
+                  dealii::ExcMessage(
+                    "Parameter <Finite element/F-bar> = true needs Polynomial "
+                    "degree = 1" +
+                    std::string(mesh_order == 2 ?
+                                  " (as meshed, the second-order mesh gives "
+                                  "2: set Polynomial degree = 1)" :
+                                  "") +
+                    "."));
     }
   } // namespace Parameters
 } // namespace tribos

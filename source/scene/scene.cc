@@ -110,6 +110,14 @@ namespace tribos
 
 
 
+  unsigned int
+  SceneGeometry::mesh_order(const unsigned int) const
+  {
+    return 1;
+  }
+
+
+
   template <int dim>
   void
   merge_bodies(const std::vector<const Triangulation<dim> *> &bodies,

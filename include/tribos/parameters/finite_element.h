@@ -13,9 +13,11 @@ namespace tribos
     /** Subsection `Finite element`: the displacement discretization. */
     struct FiniteElement
     {
-      /** Lagrange degree of the displacement field (1 or 2). */
+      /** Lagrange degree of the displacement field (1 or 2; 0 = as meshed
+       * until resolve_degree()). */
       unsigned int degree;
-      /** Gauss points per direction; 0 means degree + 1. */
+      /** Gauss points per direction (0 = degree + 1 until
+       * resolve_degree()). */
       unsigned int n_quadrature_points;
       /** Q1 only: the F-bar element against volumetric locking. */
       bool f_bar;
@@ -30,6 +32,12 @@ namespace tribos
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      /** Polynomial degree = as meshed becomes @p mesh_order (the scene's
+       * cells' order), and the default number of quadrature points
+       * follows the degree; checks what depends on the degree. */
+      void
+      resolve_degree(const unsigned int mesh_order);
     };
   } // namespace Parameters
 } // namespace tribos

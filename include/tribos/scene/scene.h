@@ -85,6 +85,14 @@ namespace tribos
                   Triangulation<3>  &triangulation,
                   CurvedCells<3>    &curved) const;
 
+    /**
+     * The order of the mesh's cells in @p dim dimensions: 2 for a
+     * second-order mesh file, which Finite element/Polynomial degree = as
+     * meshed follows; 1 for every generated scene.
+     */
+    virtual unsigned int
+    mesh_order(const unsigned int dim) const;
+
     /** The scene's Scene/Name. */
     std::string name;
   };
