@@ -50,6 +50,10 @@ namespace tribos
     {
       std::signal(SIGTERM, note_signal);
       std::signal(SIGINT, note_signal);
+      // A closed pipe on the console (tribos ... | head -2) is no reason to
+      // stop a run: the console's writes fail quietly and the run ends
+      // with its files and summary as usual.
+      std::signal(SIGPIPE, SIG_IGN);
     }
 
 

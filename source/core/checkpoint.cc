@@ -40,6 +40,8 @@ namespace tribos
     const fs::path temporary = target.string() + ".part";
     fs::remove_all(temporary);
     fs::create_directories(temporary);
+    // A failed write (a full disk) leaves no partial checkpoint behind.
+    try
     {
       std::ofstream out(temporary / "state.bin", std::ios::binary);
       AssertThrow(out,
@@ -64,6 +66,14 @@ namespace tribos
                   dealii::ExcMessage("Cannot write the checkpoint <" +
                                      (temporary / "state.bin").string() +
                                      "> (disk full?)."));
+    }
+    catch (...)
+    {
+      std::error_code ignored;
+      fs::remove_all(temporary, ignored);
+      AssertThrow(false,
+                  dealii::ExcMessage("Cannot write the checkpoint <" +
+                                     target.string() + "> (disk full?)."));
     }
     // The old checkpoint goes only once the new one is complete.
     const fs::path old = target.string() + ".old";

@@ -41,7 +41,9 @@ namespace tribos
     /**
      * Catch SIGTERM and SIGINT: the first one is only noted (the run
      * stops at its next Newton iteration); a second one of the same kind
-     * ends the process at once (the default action).
+     * ends the process at once (the default action). SIGPIPE is
+     * ignored: a console piped into a program that closed it does not end
+     * the run.
      */
     void
     install();

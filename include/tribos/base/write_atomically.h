@@ -23,12 +23,24 @@ namespace tribos
     {
       std::ofstream out(temporary);
       AssertThrow(out, dealii::ExcMessage("Cannot write <" + temporary + ">."));
-      writer(out);
-      out.flush();
-      if (!out)
+      // A writer that fails on the full disk throws its own words (deal.II:
+      // "output stream error"); the message says what happened, and the
+      // partial file goes either way.
+      bool written = false;
+      try
+      {
+        writer(out);
+        out.flush();
+        written = static_cast<bool>(out);
+      }
+      catch (...)
+      {
+      }
+      if (!written)
       {
         out.close();
-        std::filesystem::remove(temporary);
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
         AssertThrow(false,
                     dealii::ExcMessage("Cannot write <" + filename +
                                        "> (disk full?)."));
