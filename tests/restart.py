@@ -13,6 +13,7 @@ another mesh; the same cells on a moved mesh, other materials, an end time
 before the checkpoint, a checkpoint with one byte changed) exit 1 with a
 message and leave the output alone."""
 
+import math
 import os
 import shutil
 import subprocess
@@ -128,11 +129,78 @@ for name, sets, directory, message in [
          reference + "/checkpoint-00004", "Materials/Young's modulus"),
         ("end time before the checkpoint", ["Time stepping/End time=0.5"],
          reference + "/checkpoint-00004", "nothing is left to do"),
-        ("changed byte", [], corrupt, "checksum")]:
+        ("changed byte", [], corrupt, "checksum"),
+        # Issue 56: another method or discretization on the same mesh (the
+        # contact state belongs to the other one; accepted before).
+        ("other method", ["Contact/Method=augmented lagrangian"],
+         reference + "/checkpoint-00004", "method and discretization"),
+        ("other discretization", ["Contact/Discretization=mortar"],
+         reference + "/checkpoint-00004", "method and discretization")]:
     result = run(tribos, tests + "/sliding_block.prm", reference, sets,
                  expect_success=False, extra=["--restart", directory])
     check(result.returncode == 1 and message in result.stderr and
           open(reference + "/history.csv").read() == before,
           "bad restart (%s): exit 1, message <%s>, output kept"
           % (name, message))
+
+# Issue 56: the same mesh file with two boundaries' or two bodies' tags
+# swapped (a restart took it; its contact force was 0 afterwards).
+squares = out + "/two_squares"
+run(tribos, tests + "/gmsh_import.prm", squares,
+    ["Scene/Mesh file=%s/two_squares.msh" % tests,
+     "Time stepping/Number of steps=4", "Output/Checkpoint every=2"])
+text = open(tests + "/two_squares.msh").read()
+swaps = {"boundary ids": ("1 1 2 1 1 1 4", "1 1 2 2 1 1 4",
+                          "2 1 2 2 2 3 6", "2 1 2 1 2 3 6"),
+         "body ids": ("3 3 2 1 1 1 2 5 4", "3 3 2 2 1 1 2 5 4",
+                      "4 3 2 2 2 2 3 6 5", "4 3 2 1 2 2 3 6 5")}
+before = open(squares + "/history.csv").read()
+for name, (a, a_swapped, b, b_swapped) in swaps.items():
+    mesh = "%s/swapped_%s.msh" % (out, name.split()[0])
+    with open(mesh, "w") as f:
+        f.write(text.replace(a, a_swapped).replace(b, b_swapped))
+    result = run(tribos, tests + "/gmsh_import.prm", squares,
+                 ["Scene/Mesh file=" + mesh,
+                  "Time stepping/Number of steps=4"],
+                 expect_success=False,
+                 extra=["--restart", squares + "/checkpoint-00002"])
+    check(result.returncode == 1 and "ids changed" in result.stderr and
+          open(squares + "/history.csv").read() == before,
+          "bad restart (%s swapped in the mesh): exit 1, output kept" % name)
+
+# Issue 56: history.csv on restart. A restart that adds Output/Probes keeps
+# the earlier rows (it dropped rows 1-30: the header differed), the new
+# columns empty there; a malformed earlier row is refused before any file
+# of the earlier run is removed (it said "ERROR: stol" after checkpoints
+# and contact files beyond the restart's step were deleted).
+probes = out + "/probes"
+shutil.rmtree(probes, ignore_errors=True)
+shutil.copytree(reference, probes)
+run(tribos, tests + "/sliding_block.prm", probes,
+    ["Output/Probes=0, 0"], extra=["--restart",
+                                   reference + "/checkpoint-00004"])
+rows = read_csv(probes + "/history.csv")
+ref = read_csv(reference + "/history.csv")
+n_kept = len([r for r in ref if r["step"] <= 4])
+check("probe0_ux" in open(probes + "/history.csv").readline() and
+      len(rows) == len(ref) and
+      all(r["time"] == q["time"] for r, q in zip(rows, ref)) and
+      all(math.isnan(r["probe0_ux"]) for r in rows[:n_kept]) and
+      not math.isnan(rows[-1]["probe0_ux"]),
+      "restart adding Output/Probes: %d rows as before, the %d earlier ones "
+      "kept (probe columns empty there)" % (len(rows), n_kept))
+malformed = out + "/malformed_history"
+shutil.rmtree(malformed, ignore_errors=True)
+shutil.copytree(reference, malformed)
+lines = open(malformed + "/history.csv").read().splitlines(True)
+lines[2] = "1,x" + lines[2][3:]
+open(malformed + "/history.csv", "w").write("".join(lines))
+files = sorted(os.listdir(malformed))
+result = run(tribos, tests + "/sliding_block.prm", malformed, [],
+             expect_success=False,
+             extra=["--restart", malformed + "/checkpoint-00004"])
+check(result.returncode == 1 and "its line 3" in result.stderr and
+      sorted(os.listdir(malformed)) == files,
+      "restart with a malformed history.csv row: exit 1, the line named, "
+      "no file removed")
 finish()

@@ -212,11 +212,27 @@ namespace tribos
         text << (i > 0 ? ", " : "") << values[i];
       return text.str();
     };
-    std::string pairs;
+    // Per pair what it resolved to: the method and discretization the
+    // checkpoint's contact state (multipliers, penalty tractions, the
+    // mortar or node-to-segment pairing) belongs to.
+    std::string pairs, enforcement;
     for (const auto &pair : parameters.contact.pairs)
+    {
       pairs += (pairs.empty() ? "" : " ; ") + pair.text;
+      enforcement +=
+        (enforcement.empty() ? "" : " ; ") +
+        Parameters::to_string(pair.method) +
+        (pair.discretization == Parameters::Discretization::mortar ?
+           ", mortar" :
+           ", node to segment") +
+        (parameters.contact.penalty_formulation ==
+             Parameters::PenaltyFormulation::mixed ?
+           ", mixed" :
+           "");
+    }
     return {{"Scene/Name", parameters.scene.name},
             {"Contact/Pairs", pairs},
+            {"Contact pairs' method and discretization", enforcement},
             {"Materials/Model", list(m.models)},
             {"Materials/Young's modulus", list(m.youngs_moduli)},
             {"Materials/Poisson's ratio", list(m.poissons_ratios)},
@@ -234,18 +250,37 @@ namespace tribos
     const double weights[3] = {0.7071067811865476,
                                0.5773502691896258,
                                0.3183098861837907};
-    double       first = 0, second = 0;
+    // The body and boundary ids weigh the cells' and boundary faces'
+    // centres: the same mesh with two surfaces' tags or two bodies' ids
+    // swapped differs (a restart took it and lost its contact force).
+    double     first = 0, second = 0, bodies = 0, boundaries = 0;
+    const auto moment = [&](const Point<dim> &x)
+    {
+      double m = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        m += weights[d] * x[d];
+      return m;
+    };
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
+      {
         for (const auto v : cell->vertex_indices())
           for (unsigned int d = 0; d < dim; ++d)
           {
             first += weights[d] * cell->vertex(v)[d];
             second += cell->vertex(v)[d] * cell->vertex(v)[d];
           }
+        bodies += (cell->material_id() + 1.) * moment(cell->center());
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            boundaries += (face->boundary_id() + 1.) * moment(face->center());
+      }
     return {
       {"first vertex moment", Utilities::MPI::sum(first, mpi_communicator)},
-      {"second vertex moment", Utilities::MPI::sum(second, mpi_communicator)}};
+      {"second vertex moment", Utilities::MPI::sum(second, mpi_communicator)},
+      {"body id moment", Utilities::MPI::sum(bodies, mpi_communicator)},
+      {"boundary id moment",
+       Utilities::MPI::sum(boundaries, mpi_communicator)}};
   }
 
 
@@ -294,7 +329,8 @@ namespace tribos
                     std::abs(stored->second - value) <= 1e-9 * scale,
                   ExcMessage(where +
                              "the mesh differs from the checkpoint's "
-                             "(its vertices moved: " +
+                             "(its vertices moved, or its body or boundary "
+                             "ids changed: " +
                              name + " " +
                              (stored == c.geometry.end() ?
                                 std::string("missing") :

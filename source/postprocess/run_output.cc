@@ -11,6 +11,8 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <optional>
+#include <regex>
 #include <sstream>
 
 namespace tribos
@@ -18,6 +20,28 @@ namespace tribos
   namespace
   {
     const char *const axis = "xyz";
+
+    /**
+     * The step of a file or folder name of the run's own output series,
+     * which a fresh run may remove: solution-NNNNN.vtu, solution-NNNNN.pvtu,
+     * solution-NNNNN.RRRR.vtu, contact-NNNNN.csv, checkpoint-NNNNN (NNNNN
+     * five digits or more), each possibly with the ".part" of an
+     * interrupted write. Nothing for every other name.
+     */
+    std::optional<unsigned long>
+    series_step(const std::string &name)
+    {
+      static const std::regex series(
+        R"((solution-([0-9]{5,})(\.[0-9]{4})?\.(vtu|pvtu)|)"
+        R"(contact-([0-9]{5,})\.csv|checkpoint-([0-9]{5,}))(\.part|\.old)?)");
+      std::smatch match;
+      if (!std::regex_match(name, match, series))
+        return std::nullopt;
+      for (const unsigned int group : {2u, 5u, 6u})
+        if (match[group].matched && match[group].length() < 10)
+          return std::stoul(match[group].str());
+      return std::nullopt;
+    }
 
     /**
      * Runs @p work on every process and fails on all of them if it failed
@@ -111,40 +135,6 @@ namespace tribos
                                  error.message() + ")."));
           directory_lock =
             std::make_unique<DirectoryLock>(dir, "Output/Directory");
-          // Remove the series files and checkpoints of an earlier run, so
-          // that the folder holds one consistent run; other files are left
-          // alone. A restart keeps those of the steps up to its checkpoint
-          // (and the checkpoint it reads).
-          std::vector<std::filesystem::path> stale;
-          for (const auto &entry : std::filesystem::directory_iterator(dir))
-          {
-            const std::string name = entry.path().filename().string();
-            for (const std::string prefix :
-                 {"solution-", "contact-", "checkpoint-"})
-              if (name.rfind(prefix, 0) == 0)
-              {
-                unsigned int step = 0;
-                try
-                {
-                  step = std::stoul(name.substr(prefix.size(), 5));
-                }
-                catch (...)
-                {
-                }
-                const bool      is_checkpoint = prefix == "checkpoint-";
-                std::error_code same;
-                if ((is_checkpoint ? entry.is_directory() :
-                                     entry.is_regular_file()) &&
-                    (!restart || step > restart->stepper.step) &&
-                    !(restart &&
-                      std::filesystem::equivalent(entry.path(),
-                                                  parameters.restart_directory,
-                                                  same)))
-                  stale.push_back(entry.path());
-              }
-          }
-          for (const auto &path : stale)
-            std::filesystem::remove_all(path);
         }
       });
 
@@ -176,6 +166,42 @@ namespace tribos
                          root,
                          keep);
                      });
+    // Only once the CSV files of an earlier run have been read (a restart
+    // refuses a malformed one before anything is lost).
+    on_every_process(
+      mpi_communicator,
+      [&]()
+      {
+        if (!root)
+          return;
+        // Remove the series files and checkpoints of an earlier run, so
+        // that the folder holds one consistent run: only names of the
+        // run's own series (solution-NNNNN.vtu, .pvtu and rank pieces,
+        // contact-NNNNN.csv, checkpoint-NNNNN/, and their ".part"
+        // leftovers); a user's contact-notes.txt or
+        // checkpoint-important/ stays. A restart keeps those of the steps
+        // up to its checkpoint (and the checkpoint it reads).
+        std::vector<std::filesystem::path> stale;
+        for (const auto &entry : std::filesystem::directory_iterator(dir))
+        {
+          const auto step = series_step(entry.path().filename().string());
+          if (!step)
+            continue;
+          const bool is_checkpoint =
+            entry.path().filename().string().rfind("checkpoint-", 0) == 0;
+          std::error_code same;
+          if ((is_checkpoint ? entry.is_directory() :
+                               entry.is_regular_file()) &&
+              (!restart || *step > restart->stepper.step) &&
+              !(restart &&
+                std::filesystem::equivalent(entry.path(),
+                                            parameters.restart_directory,
+                                            same)))
+            stale.push_back(entry.path());
+        }
+        for (const auto &path : stale)
+          std::filesystem::remove_all(path);
+      });
   }
 
 

@@ -16,10 +16,12 @@ namespace tribos
   {
   public:
     /**
-     * With @p keep_through_increment >= 0 (a restart) an existing file with
-     * the same header keeps its rows whose column "increment" is at most
-     * that, and rows are appended after them; otherwise the file starts
-     * anew.
+     * With @p keep_through_increment >= 0 (a restart) an existing file
+     * keeps its rows whose column "increment" is at most that (in this
+     * run's columns: one the earlier run lacked is empty there), and rows
+     * are appended after them; otherwise the file starts anew. The file is
+     * replaced atomically; a malformed earlier file is refused with its
+     * line before it is changed.
      */
     CsvWriter(const std::string              &filename,
               const std::vector<std::string> &columns,
