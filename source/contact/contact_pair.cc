@@ -305,7 +305,27 @@ namespace tribos
       if (description.rigid_surface.empty())
       {
         pair.master = surface(description.master_boundary);
-        double E_m  = std::numeric_limits<double>::max();
+        // Slave and master meeting at an edge of one body: the nodes there
+        // sit on the master with zero gap and the body turns inside out
+        // at them (det F <= 0, with no hint at the pair).
+        std::set<types::global_dof_index> master_nodes;
+        for (const auto &node : pair.master->nodes())
+          master_nodes.insert(node.dofs[0]);
+        for (const auto &node : pair.slave->nodes())
+          AssertThrow(
+            master_nodes.count(node.dofs[0]) == 0,
+            ExcMessage(
+              "Parameter <Contact/Pairs>: in pair <" + description.text +
+              ">, the slave and master surfaces share nodes (they "
+              "meet at an edge of one body, e.g. at the slave node "
+              "at " +
+              Text::join(std::vector<double>(node.reference.begin(),
+                                             node.reference.begin() + dim)) +
+              "). Contact between two boundaries of one body that "
+              "meet each other is self-contact, which tribos does "
+              "not take yet: pair boundaries of different bodies, "
+              "or boundaries of one body that do not touch."));
+        double E_m = std::numeric_limits<double>::max();
         for (const auto body : pair.master->bodies())
           E_m = std::min(E_m, youngs_modulus(body));
         pair.contact_modulus = E_s * E_m / (E_s + E_m);

@@ -33,11 +33,14 @@ namespace tribos
     const auto     &dof_handler  = *layout.dof_handler;
     const IndexSet &owned        = layout.owned;
     const MPI_Comm  communicator = layout.communicator;
+    // Ids the mesh lacks get the smallest present body's density (never
+    // used), so that a list's error names an id the mesh has.
+    const auto &bodies = materials.bodies();
     for (unsigned int body = 0; body < materials.n_materials(); ++body)
-      densities.push_back(
-        Parameters::Materials::for_body(parameters.materials.densities,
-                                        body,
-                                        "Density"));
+      densities.push_back(Parameters::Materials::for_body(
+        parameters.materials.densities,
+        bodies.count(body) > 0 ? body : *bodies.begin(),
+        "Density"));
 
     for (Vector *v : {&velocity_owned,
                       &acceleration,

@@ -38,8 +38,16 @@ namespace tribos
                                  body,
                                  "Linear hardening modulus")}});
     };
+    // Indexed by body id; an id the mesh lacks gets the smallest present
+    // body's material (never used), so that a list's error names an id
+    // the mesh has (it named the first absent one).
+    const auto present = [&](const unsigned int body)
+    {
+      return body_ids.count(body) > 0 ? body : *body_ids.begin();
+    };
     for (unsigned int body = 0; body <= max_body; ++body)
-      materials.push_back(make(std::integral_constant<int, dim>(), body));
+      materials.push_back(
+        make(std::integral_constant<int, dim>(), present(body)));
     if (parameters.finite_element.axisymmetric)
     {
       // The most negative radius, relative to its cell's size, anywhere.
@@ -61,7 +69,7 @@ namespace tribos
                              std::to_string(worst_x) + "."));
       for (unsigned int body = 0; body <= max_body; ++body)
         axisymmetric_materials.push_back(
-          make(std::integral_constant<int, 3>(), body));
+          make(std::integral_constant<int, 3>(), present(body)));
     }
 
     // History only where a material has memory: elastic bodies pay nothing.

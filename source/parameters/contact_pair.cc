@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <set>
 
 namespace tribos
 {
@@ -102,6 +103,14 @@ namespace tribos
                   dealii::ExcMessage("Parameter <" + entry + "> = <" + text +
                                      ">: expected a positive number. " +
                                      allowed));
+      AssertThrow(result.value <= Text::largest_value &&
+                    result.value >= 1. / Text::largest_value,
+                  dealii::ExcMessage(
+                    "Parameter <" + entry + "> = <" + text +
+                    ">: the number is not of magnitude between 1e-150 and "
+                    "1e150 (products of two input values must neither "
+                    "overflow nor underflow). " +
+                    allowed));
       return result;
     }
 
@@ -195,9 +204,21 @@ namespace tribos
                                      item +
                                      "> must read 'slave : master' or "
                                      "'slave : master : key=value, ...'."));
+      for (unsigned int side = 0; side < 2; ++side)
+        AssertThrow(!Text::trim(parts[side]).empty(),
+                    dealii::ExcMessage(
+                      "Parameter <" + pair_entry + ">: item <" + item +
+                      "> has no " + (side == 0 ? "slave" : "master") +
+                      ": it must read 'slave : master' with a boundary id "
+                      "(or list) on each side" +
+                      (side == 1 ? " or a rigid surface's name as master." :
+                                   ".")));
       ContactPair pair;
       for (const auto id : Text::parse_unsigned(parts[0], pair_entry))
         pair.slave_boundary.insert(id);
+      AssertThrow(!pair.slave_boundary.empty(),
+                  dealii::ExcMessage("Parameter <" + pair_entry + ">: item <" +
+                                     item + "> has no slave boundary id."));
       bool is_rigid = false;
       for (const auto &surface : rigid_surfaces)
         if (surface.name == parts[1])
@@ -225,14 +246,15 @@ namespace tribos
                         " is both slave and master; a pair needs "
                         "different slave and master boundaries."));
       }
-      pair.method               = defaults.method;
-      pair.normal_penalty       = defaults.normal_penalty;
-      pair.tangential_penalty   = defaults.tangential_penalty;
-      pair.friction_coefficient = defaults.friction_coefficient;
-      pair.discretization       = pair.rigid_surface.empty() ?
-                                    defaults.discretization :
-                                    Discretization::node_to_segment;
-      bool tangential_given     = false;
+      pair.method                            = defaults.method;
+      pair.normal_penalty                    = defaults.normal_penalty;
+      pair.tangential_penalty                = defaults.tangential_penalty;
+      pair.friction_coefficient              = defaults.friction_coefficient;
+      pair.discretization                    = pair.rigid_surface.empty() ?
+                                                 defaults.discretization :
+                                                 Discretization::node_to_segment;
+      bool                  tangential_given = false;
+      std::set<std::string> keys;
       if (parts.size() == 3)
         for (const auto &option : Text::split_top_level(parts[2], ','))
         {
@@ -243,6 +265,13 @@ namespace tribos
                                          "> must read key=value."));
           const std::string key   = Text::trim(option.substr(0, equal));
           const std::string value = Text::trim(option.substr(equal + 1));
+          // 'mu=0.3, mu=0.9': which one was meant is not for tribos to
+          // guess.
+          AssertThrow(keys.insert(key).second,
+                      dealii::ExcMessage("Parameter <" + pair_entry +
+                                         ">: item <" + item + ">: option <" +
+                                         key +
+                                         "> is given twice; give it once."));
           if (key == "method")
           {
             pair.method = parse_method(value, pair_entry);
@@ -258,7 +287,9 @@ namespace tribos
           {
             char *end                 = nullptr;
             pair.friction_coefficient = std::strtod(value.c_str(), &end);
-            AssertThrow(*end == '\0' && pair.friction_coefficient >= 0,
+            AssertThrow(!value.empty() && *end == '\0' &&
+                          pair.friction_coefficient >= 0 &&
+                          pair.friction_coefficient <= Text::largest_value,
                         dealii::ExcMessage("Parameter <" + pair_entry +
                                            ">: mu = <" + value +
                                            "> must be a number >= 0."));
