@@ -125,15 +125,30 @@ namespace tribos
       keep_through_increment >= 0 ?
         kept_rows(filename, columns, keep_through_increment) :
         std::vector<std::string>();
-    // The earlier rows go to a complete new file before it replaces the
-    // old one: a run killed meanwhile leaves the old file whole.
-    write_atomically(filename,
-                     [&](std::ostream &out)
-                     {
-                       out << header << '\n';
-                       for (const auto &line : kept)
-                         out << line << '\n';
-                     });
+    // A restart's earlier rows go to a complete new file before it
+    // replaces the old one: a run killed meanwhile leaves the old file
+    // whole. A fresh run writes the file in place.
+    const auto write_header = [&](std::ostream &out)
+    {
+      out << header << '\n';
+      for (const auto &line : kept)
+        out << line << '\n';
+    };
+    if (keep_through_increment >= 0)
+      write_atomically(filename, write_header);
+    else
+    {
+      file.open(filename);
+      AssertThrow(file,
+                  dealii::ExcMessage("Cannot open <" + filename +
+                                     "> for writing: check Output/Directory."));
+      write_header(file);
+      file << std::flush;
+      AssertThrow(file,
+                  dealii::ExcMessage("Cannot write to <" + filename +
+                                     "> (disk full?)."));
+      return;
+    }
     file.open(filename, std::ios::app);
     AssertThrow(file,
                 dealii::ExcMessage("Cannot open <" + filename +
