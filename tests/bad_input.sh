@@ -190,6 +190,8 @@ expect set_no_break_space "<1<U+00A0>0>" "$tribos" "$good" \
 # range, slave and master meeting on one body (issue 56: the first ran with
 # a warning, the key's last value won silently, 1e300 passed, and the last
 # ended in "det F <= 0" without a hint at the pair).
+expect upper_offset_huge "beyond 1e6 times the blocks' size" "$tribos" "$blocks" \
+  --set "Scene/Two blocks/Upper block offset=1e150"
 expect pair_no_slave "has no slave" "$tribos" "$contact" --set "Contact/Pairs= : 2"
 expect pair_no_master "has no master" "$tribos" "$contact" --set "Contact/Pairs=3 : "
 expect pair_no_sides "has no slave" "$tribos" "$contact" --set "Contact/Pairs= : "

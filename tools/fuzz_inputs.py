@@ -20,6 +20,11 @@ hostile value in the copy. The run gets a time limit. Outcomes:
   half output   exit 1 with a history.csv written (bad input must write
                 nothing)
 
+With --meshes N, N more cases run the gmsh scene on a mesh file with one
+random defect (a line deleted, repeated or swapped, a number replaced by a
+hostile token, a token added or removed, the file cut): a message naming
+Scene/Mesh file is an input error; "unknown exception" is unclear.
+
 Writes one CSV row per case and prints the counts per outcome; exit status
 1 if any crash, hang, unclear message or half output occurred.
 
@@ -107,16 +112,128 @@ def classify(result, entry, folder, timed_out):
     if code == 1:
         if os.path.exists(os.path.join(folder, "history.csv")):
             return "half output"
-        if last in text or entry in text or "Scene" in text:
+        if "unknown exception" in text:
+            return "unclear"
+        if last in text or entry in text or "scene" in text.lower():
             return "input error"
         return "unclear"
     return "crash"
+
+
+# Mesh files to mutate (Dimension, file): first and second order, MSH 2.2
+# and (converted by gmsh where it is installed) 4.1.
+MESHES = [(2, "tests/two_squares.msh"), (2, "tests/square_tagged_sides.msh"),
+          (2, "tests/triangles.msh"), (2, "tests/inclined_square.msh"),
+          (2, "tests/quarter_disc_tri6.msh"),
+          (2, "tests/quarter_disc_quad8.msh"),
+          (2, "tests/quarter_disc_quad9.msh"),
+          (3, "tests/ball_octant_tet10.msh"),
+          (3, "tests/ball_octant_hex20.msh"),
+          (3, "tests/ball_octant_hex27.msh")]
+TOKENS = ["0", "-1", "1e18", "4294967296", "9223372036854775808", "nan",
+          "inf", "1e999", "abc", "", "2.5", "99", "1 2", "$Nodes",
+          "$EndElements", "3.0", "2147483648"]
+
+
+def mutate_mesh(text, generator):
+    """One random defect in a gmsh file's text: a line deleted, repeated or
+    swapped with the next, a number replaced by a hostile token, a token
+    added or removed, or the file cut. Returns (text, what was done)."""
+    lines = text.split("\n")
+    i = generator.randrange(len(lines))
+    kind = generator.randrange(7)
+    if kind == 0:
+        return "\n".join(lines[:i] + lines[i + 1:]), "line %d deleted" % (i + 1)
+    if kind == 1:
+        return ("\n".join(lines[:i + 1] + lines[i:]),
+                "line %d repeated" % (i + 1))
+    if kind == 2 and i + 1 < len(lines):
+        lines[i], lines[i + 1] = lines[i + 1], lines[i]
+        return "\n".join(lines), "lines %d and %d swapped" % (i + 1, i + 2)
+    if kind == 6:
+        cut = generator.randrange(len(text))
+        return text[:cut], "cut after %d characters" % cut
+    tokens = lines[i].split()
+    if not tokens:
+        return "\n".join(lines[:i] + lines[i + 1:]), "blank line deleted"
+    j = generator.randrange(len(tokens))
+    if kind == 3:
+        tokens.insert(j, generator.choice(TOKENS))
+        what = "token added to line %d" % (i + 1)
+    elif kind == 4 and len(tokens) > 1:
+        del tokens[j]
+        what = "token %d of line %d removed" % (j + 1, i + 1)
+    else:
+        token = generator.choice(TOKENS)
+        what = "line %d token %d <%s> -> <%s>" % (i + 1, j + 1, tokens[j],
+                                                 token)
+        tokens[j] = token
+    lines[i] = " ".join(tokens)
+    return "\n".join(lines), what
+
+
+def mesh_sources(work):
+    """MESHES, and their MSH 4.1 versions if gmsh is installed."""
+    sources = [(dim, os.path.join(ROOT, path)) for dim, path in MESHES]
+    if shutil.which("gmsh"):
+        for dim, path in list(sources):
+            target = os.path.join(work, os.path.basename(path)[:-4] +
+                                  "_41.msh")
+            done = subprocess.run(["gmsh", "-0", path, "-format", "msh41",
+                                   "-save", "-o", target],
+                                  capture_output=True)
+            if done.returncode == 0 and os.path.exists(target):
+                sources.append((dim, target))
+    return sources
+
+
+def fuzz_meshes(tribos, n_cases, generator, timeout, counts, rows, work):
+    """n_cases runs of the gmsh scene on mutated mesh files."""
+    prm = os.path.join(ROOT, "tests", "gmsh_import.prm")
+    sources = mesh_sources(work)
+    for case in range(n_cases):
+        dim, source = generator.choice(sources)
+        text, mutation = mutate_mesh(open(source).read(), generator)
+        mesh = os.path.join(work, "mesh_%03d.msh" % case)
+        with open(mesh, "w") as f:
+            f.write(text)
+        folder = os.path.join(work, "mesh_case_%03d" % case)
+        command = [tribos, prm, "--set", "Output/Directory=" + folder,
+                   "--set", "Dimension=%d" % dim,
+                   "--set", "Scene/Mesh file=" + mesh,
+                   "--set", "Scene/Refinement=0",
+                   "--set", "Materials/Young's modulus=1",
+                   "--set", "Boundary conditions/Dirichlet=",
+                   "--set", "Boundary conditions/Body force=" +
+                   ", ".join(["0"] * dim)]
+        timed_out = False
+        try:
+            result = subprocess.run(command, capture_output=True, text=True,
+                                    timeout=timeout)
+        except subprocess.TimeoutExpired:
+            timed_out, result = True, None
+        outcome = classify(result, "Scene/Mesh file", folder, timed_out)
+        counts[outcome] += 1
+        message = "" if result is None else \
+            (result.stderr.strip().splitlines() or [""])[-1][:160]
+        rows.append({"case": case, "scene": os.path.basename(source),
+                     "entry": "Scene/Mesh file", "value": mutation,
+                     "outcome": outcome,
+                     "exit": "" if result is None else result.returncode,
+                     "message": message})
+        print("%3d %-15s %-30s %s" % (case, outcome,
+                                      os.path.basename(source), mutation),
+              flush=True)
+        shutil.rmtree(folder, ignore_errors=True)
+        os.remove(mesh)
 
 
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("tribos")
     parser.add_argument("--cases", type=int, default=160)
+    parser.add_argument("--meshes", type=int, default=0,
+                        help="also this many runs on mutated gmsh files")
     parser.add_argument("--seed", type=int, default=47)
     parser.add_argument("--timeout", type=float, default=60)
     parser.add_argument("--out", default="")
@@ -174,6 +291,8 @@ def main():
                                                 entry[-40:], shown),
                   flush=True)
             shutil.rmtree(folder, ignore_errors=True)
+        fuzz_meshes(tribos, args.meshes, generator, args.timeout, counts,
+                    rows, work)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     if args.out:

@@ -166,6 +166,20 @@ namespace tribos
                       "Parameter <Scene/Two blocks/Upper block offset> = <" +
                       prm.get("Upper block offset") +
                       ">: expected one number (x) or two (x, y)."));
+        // The blocks' coordinates must resolve their sizes: at an offset
+        // of 1e150 the upper block's faces coincide in floating point and
+        // lose their boundary ids.
+        double extent = gap;
+        for (unsigned int d = 0; d < lower_size.size(); ++d)
+          extent = std::max(extent, lower_size[d]);
+        for (const double offset : upper_offset)
+          AssertThrow(std::abs(offset) <= 1e6 * extent,
+                      dealii::ExcMessage(
+                        "Parameter <Scene/Two blocks/Upper block offset> = <" +
+                        prm.get("Upper block offset") +
+                        ">: an offset beyond 1e6 times the blocks' size puts "
+                        "the upper block out of any reach (and beyond what "
+                        "its coordinates resolve)."));
         upper_bottom_radius = prm.get_double("Upper bottom radius");
         AssertThrow(upper_bottom_radius == 0 ||
                       upper_bottom_radius > 0.5 * upper_size[0],
