@@ -228,6 +228,12 @@ for mesh in truncated:"its line needs 9 numbers" binary:"a binary gmsh file" \
   expect "gmsh_${mesh%%:*}" "${mesh#*:}" "$tribos" "$tests/gmsh_import.prm" \
     --set "Scene/Mesh file=$meshes/${mesh%%:*}.msh"
 done
+# Body ids 1 and 5 with three moduli: the message named body id 3, which
+# the mesh does not have (issue 56).
+sed -e 's/^4 3 2 2 2 2 3 6 5$/4 3 2 5 2 2 3 6 5/' "$tests/two_squares.msh" \
+  > "$meshes/bodies_1_5.msh"
+expect material_absent_body "but the mesh has body id 5" "$tribos" \
+  "$tests/gmsh_import.prm" --set "Scene/Mesh file=$meshes/bodies_1_5.msh"
 expect gmsh_folded "is folded (its map's Jacobian is not positive" "$tribos" \
   "$tests/gmsh_import.prm" --set "Scene/Mesh file=$meshes/folded.msh" \
   --set "Finite element/Polynomial degree=2" --set "Boundary conditions/Dirichlet=0 : xy : 0, 0"

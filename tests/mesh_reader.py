@@ -115,6 +115,11 @@ refused("element_count_long", msh2(n_elements=5),
 refused("element_missing_node",
         msh2(elements=ELEMENTS[:2] + ["3 3 2 1 1 1 2 5"] + ELEMENTS[3:]),
         "its line needs 9 numbers")
+lines = open(tests + "/quarter_disc_tri6.msh").read().split("\n")
+count = lines.index("$Elements") + 1
+lines[count] = str(int(lines[count]) - 3)
+refused("tri6_element_count_short", "\n".join(lines),
+        "more entries than announced")
 refused("tet10_with_dimension_2", open(tests + "/ball_octant_tet10.msh").read(),
         "but Dimension = 2")
 
