@@ -142,6 +142,23 @@ namespace tribos
 
 
 
+    /** The largest distance the first @p n of @p nodes moved since the last
+     * converged increment (@p now and @p old: their positions). */
+    template <class Nodes>
+    double
+    largest_motion(const std::vector<Vec3<double>> &now,
+                   const std::vector<Vec3<double>> &old,
+                   const Nodes                     &nodes,
+                   const unsigned int               n)
+    {
+      double motion = 0;
+      for (unsigned int v = 0; v < n; ++v)
+        motion = std::max(motion, norm(now[nodes[v]] - old[nodes[v]]));
+      return motion;
+    }
+
+
+
     /**
      * 2D: the master segments that overlap slave node @p k's segments in
      * the projection onto their lines, face them and are not too deep
@@ -159,9 +176,8 @@ namespace tribos
       const Vec3<double>    ez{{0., 0., 1.}};
       // A node closed at the last converged step keeps faces however deep
       // an iterate pushes it (it must meet the contact force, not lose the
-      // master); an open one only sees faces less than a segment length
-      // behind it (steep slave segments would otherwise pair with faces
-      // beside them).
+      // master); an open one only sees faces within behind_reach() behind
+      // it (the far side of the master body lies beyond).
       const bool was_closed = pair.committed[k].closed();
       const bool quadratic  = pair.slave->quadratic();
       for (const unsigned int f : pair.slave->nodes()[k].faces)
@@ -172,23 +188,10 @@ namespace tribos
         const double        length_squared = dot(e, e);
         const Vec3<double>  n_s =
           scale(1. / std::sqrt(length_squared), cross(ez, e));
-        const double slave_motion = std::max(
-          norm(x_a - pair.old_slave_positions[slave_faces[f].nodes[0]]),
-          norm(x_b - pair.old_slave_positions[slave_faces[f].nodes[1]]));
-        // How far master face m and this segment moved towards each other
-        // at most in the increment.
-        const auto motion = [&](const unsigned int m)
-        {
-          double master_motion = 0;
-          for (unsigned int v = 0; v < faces[m].n_vertices; ++v)
-          {
-            const unsigned int n = faces[m].nodes[v];
-            master_motion        = std::max(master_motion,
-                                     norm(pair.master_positions[n] -
-                                          pair.old_master_positions[n]));
-          }
-          return slave_motion + master_motion;
-        };
+        const double slave_motion = largest_motion(pair.slave_positions,
+                                                   pair.old_slave_positions,
+                                                   slave_faces[f].nodes,
+                                                   2);
 
         // Whether master face m overlaps this slave segment in the
         // projection onto its line, faces it and is not too deep behind
@@ -231,9 +234,18 @@ namespace tribos
             gap_min          = std::min(gap_min, gap);
             gap_max          = std::max(gap_max, gap);
           }
+          // Deeper than the reach (at least twice the length: the cheap
+          // test first).
           const double length = std::sqrt(length_squared);
-          if (gap_max < -behind_reach(length, norm(y_d - y_c), motion(m)) &&
-              !was_closed)
+          if (!was_closed && gap_max < -2. * length &&
+              gap_max <
+                -behind_reach(length,
+                              norm(y_d - y_c),
+                              slave_motion +
+                                largest_motion(pair.master_positions,
+                                               pair.old_master_positions,
+                                               faces[m].nodes,
+                                               faces[m].n_vertices)))
             return 1;
           walker.reached |= gap_min <= std::min(search_distance, length);
           return 2;
@@ -277,12 +289,10 @@ namespace tribos
           height_max = std::max(height_max, dot(x[v] - plane.x0, plane.n0));
         }
         const double length       = std::sqrt(std::abs(plane.area));
-        double       slave_motion = 0;
-        for (unsigned int v = 0; v < n_s; ++v)
-          slave_motion =
-            std::max(slave_motion,
-                     norm(x[v] -
-                          pair.old_slave_positions[slave_faces[f].nodes[v]]));
+        const double slave_motion = largest_motion(pair.slave_positions,
+                                                   pair.old_slave_positions,
+                                                   slave_faces[f].nodes,
+                                                   n_s);
 
         // Whether master face m overlaps this slave face in the plane and
         // is not too deep behind it (as in 2D).
@@ -301,18 +311,15 @@ namespace tribos
           }
           if (!internal::overlaps_in_plane(plane, y, n_m))
             return 0;
-          double master_motion = 0;
-          for (unsigned int v = 0; v < n_m; ++v)
-            master_motion =
-              std::max(master_motion,
-                       norm(y[v] -
-                            pair.old_master_positions[faces[m].nodes[v]]));
-          if (gap_max <
-                -behind_reach(length,
-                              std::sqrt(std::abs(
-                                internal::auxiliary_plane(y, n_m).area)),
-                              slave_motion + master_motion) &&
-              !was_closed)
+          if (!was_closed && gap_max < -2. * length &&
+              gap_max <
+                -behind_reach(
+                  length,
+                  std::sqrt(std::abs(internal::auxiliary_plane(y, n_m).area)),
+                  slave_motion + largest_motion(pair.master_positions,
+                                                pair.old_master_positions,
+                                                faces[m].nodes,
+                                                n_m)))
             return 1;
           walker.reached |= gap_min <= std::min(search_distance, length);
           return 2;
@@ -388,10 +395,15 @@ namespace tribos
                        walker.closest :
                        std::numeric_limits<double>::quiet_NaN();
     // A node inside the master has a negative distance: reported as an open
-    // gap of +0.29 it read as clear of a master it had passed into.
-    const double depth = depth_inside(pair, k);
-    if (depth > 0 && depth <= parameters.search_distance)
-      state.distance = -depth;
+    // gap of +0.29 it read as clear of a master it had passed into. Its
+    // depth is at least walker.closest: beyond the search distance the
+    // query is skipped.
+    if (std::isfinite(state.distance))
+    {
+      const double depth = depth_inside(pair, k);
+      if (depth > 0 && depth <= parameters.search_distance)
+        state.distance = -depth;
+    }
     if (!walker.reached)
       found.clear();
     if (!found.empty())
