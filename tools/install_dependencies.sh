@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Install the Debian packages tribos needs, only those that are missing.
 set -euo pipefail
-packages=(cmake make g++ libdeal.ii-dev libcgal-dev numdiff gnuplot-nox
+packages=(cmake ninja-build g++ libdeal.ii-dev libcgal-dev numdiff gnuplot-nox
           openmpi-bin python3 libopenblas0-pthread)
 missing=()
 for p in "${packages[@]}"; do
