@@ -64,7 +64,7 @@ main(int argc, char **argv)
     tribos::Parameters::ContactPair pair;
     pair.slave_boundary  = {14};
     pair.master_boundary = {5};
-    pair.method          = tribos::Parameters::EnforcementMethod::penalty;
+    pair.method          = "penalty";
     pair.normal_penalty  = tribos::Parameters::PenaltyValue::parse("1e3", "");
     pair.tangential_penalty    = pair.normal_penalty;
     pair.friction_coefficient  = 0;

@@ -423,18 +423,17 @@ namespace tribos
       const double E         = pair.contact_modulus;
       lines.push_back(
         "contact pair <" + pair.description.text +
-        ">: " + Parameters::to_string(pair.description.method) + ", " +
+        ">: " + pair.description.method + ", " +
         std::to_string(pair.n_nodes()) + " slave nodes" +
         (n_hanging > 0 ?
            " (" + std::to_string(n_hanging) + " hanging on others)" :
            std::string()) +
         ", contact modulus E = " + to_scientific(E) +
         ", h = " + to_scientific(h_min) + " to " + to_scientific(h_max) +
-        (pair.description.method ==
-             Parameters::EnforcementMethod::lagrange_multiplier ?
-           std::string() :
+        (pair.enforcement->uses_normal_penalty() ?
            ", eps_N = " + to_scientific(penalty.resolve(E, h_max)) + " to " +
-             to_scientific(penalty.resolve(E, h_min))));
+             to_scientific(penalty.resolve(E, h_min)) :
+           std::string()));
     }
     return lines;
   }

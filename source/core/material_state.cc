@@ -1,4 +1,5 @@
 #include <tribos/core/material_state.h>
+#include <tribos/material/material_model.h>
 
 #include <type_traits>
 
@@ -22,21 +23,21 @@ namespace tribos
     // axisymmetric model, their 3D versions.
     const auto make = [&m](auto dimension, const unsigned int body)
     {
-      namespace P = Parameters;
-      return create_material<decltype(dimension)::value>(
-        P::Materials::for_body(m.models, body, "Model"),
-        P::Materials::for_body(m.youngs_moduli, body, "Young's modulus"),
-        P::Materials::for_body(m.poissons_ratios, body, "Poisson's ratio"),
-        {{P::Materials::for_body(m.yield_stresses, body, "Yield stress"),
-          P::Materials::for_body(m.saturation_yield_stresses,
-                                 body,
-                                 "Saturation yield stress"),
-          P::Materials::for_body(m.hardening_exponents,
-                                 body,
-                                 "Hardening exponent"),
-          P::Materials::for_body(m.linear_hardening_moduli,
-                                 body,
-                                 "Linear hardening modulus")}});
+      using Lists = Parameters::Materials;
+      // Every model's own lists first, then Poisson's ratio, Young's
+      // modulus and Model: the order in which the lists were read for a
+      // body before the registry, so that a file with several lists too
+      // short reports the same one.
+      for (const std::string &name : material_registry().names())
+        m.model(name)->check_body(body);
+      const double nu =
+        Lists::for_body(m.poissons_ratios, body, "Poisson's ratio");
+      const double E =
+        Lists::for_body(m.youngs_moduli, body, "Young's modulus");
+      const std::string &model = Lists::for_body(m.models, body, "Model");
+      return m.model(model)->template create<decltype(dimension)::value>(body,
+                                                                         E,
+                                                                         nu);
     };
     // Indexed by body id; an id the mesh lacks gets the smallest present
     // body's material (never used), so that a list's error names an id

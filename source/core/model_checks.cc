@@ -6,6 +6,7 @@
 
 #include <tribos/base/text.h>
 #include <tribos/core/problem.h>
+#include <tribos/material/material_model.h>
 #include <tribos/scene/scene.h>
 
 #include <deal.II/base/mpi.h>
@@ -179,14 +180,18 @@ namespace tribos
                            "on quadratic triangles or tetrahedra: the row "
                            "sums give the vertices zero or negative mass. "
                            "Use consistent, or Polynomial degree = 1."));
-    const auto &models = parameters.materials.models;
-    if (parameters.finite_element.degree == 1 &&
-        std::find(models.begin(), models.end(), "J2 plasticity") !=
-          models.end())
-      warn("Materials/Model = J2 plasticity on linear triangles or "
-           "tetrahedra (Finite element/Polynomial degree = 1): P1 locks in "
-           "isochoric plastic flow (too stiff, wrong pressures) except in "
-           "homogeneous deformation. Use Polynomial degree = 2.");
+    // The first listed model that locks (of any body id, present or not).
+    if (parameters.finite_element.degree == 1)
+      for (const std::string &model : parameters.materials.models)
+        if (parameters.materials.model(model)->locks_on_linear_simplices())
+        {
+          warn("Materials/Model = " + model +
+               " on linear triangles or tetrahedra (Finite "
+               "element/Polynomial degree = 1): P1 locks in isochoric "
+               "plastic flow (too stiff, wrong pressures) except in "
+               "homogeneous deformation. Use Polynomial degree = 2.");
+          break;
+        }
   }
 
 

@@ -8,6 +8,7 @@
 
 #include <tribos/base/exceptions.h>
 #include <tribos/core/problem.h>
+#include <tribos/material/material_model.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/cell_id.h>
@@ -219,24 +220,25 @@ namespace tribos
     for (const auto &pair : parameters.contact.pairs)
     {
       pairs += (pairs.empty() ? "" : " ; ") + pair.text;
-      enforcement +=
-        (enforcement.empty() ? "" : " ; ") +
-        Parameters::to_string(pair.method) +
-        (pair.discretization == Parameters::Discretization::mortar ?
-           ", mortar" :
-           ", node to segment") +
-        (parameters.contact.penalty_formulation ==
-             Parameters::PenaltyFormulation::mixed ?
-           ", mixed" :
-           "");
+      enforcement += (enforcement.empty() ? "" : " ; ") + pair.method + ", " +
+                     pair.discretization +
+                     (parameters.contact.penalty_formulation ==
+                          Parameters::PenaltyFormulation::mixed ?
+                        ", mixed" :
+                        "");
     }
-    return {{"Scene/Name", parameters.scene.name},
-            {"Contact/Pairs", pairs},
-            {"Contact pairs' method and discretization", enforcement},
-            {"Materials/Model", list(m.models)},
-            {"Materials/Young's modulus", list(m.youngs_moduli)},
-            {"Materials/Poisson's ratio", list(m.poissons_ratios)},
-            {"Materials/Yield stress", list(m.yield_stresses)}};
+    std::map<std::string, std::string> fingerprint = {
+      {"Scene/Name", parameters.scene.name},
+      {"Contact/Pairs", pairs},
+      {"Contact pairs' method and discretization", enforcement},
+      {"Materials/Model", list(m.models)},
+      {"Materials/Young's modulus", list(m.youngs_moduli)},
+      {"Materials/Poisson's ratio", list(m.poissons_ratios)}};
+    // The models' own entries (J2 plasticity's Materials/Yield stress).
+    for (const std::string &name : material_registry().names())
+      for (const auto &[entry, values] : m.model(name)->fingerprint())
+        fingerprint[entry] = list(values);
+    return fingerprint;
   }
 
 

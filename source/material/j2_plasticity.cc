@@ -1,5 +1,7 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/material/j2_plasticity.h>
+#include <tribos/material/material_model.h>
+#include <tribos/parameters/materials.h>
 
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -387,4 +389,132 @@ namespace tribos
   HardeningLaw::yield_stress(const double &) const;
   template class J2Plasticity<2>;
   template class J2Plasticity<3>;
+
+
+
+  namespace
+  {
+    /**
+     * Materials/Model = J2 plasticity, and its entries: the hardening law
+     * (36) per body id or one for all bodies, like Young's modulus.
+     */
+    class J2PlasticityModel : public MaterialInBothDimensions<J2PlasticityModel>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Yield stress",
+                          "1e100",
+                          Patterns::Anything(),
+                          "J2 plasticity: initial yield stress s0 of (36) "
+                          "(the default: no yield), per body id or one for "
+                          "all; > 0.");
+        prm.declare_entry("Saturation yield stress",
+                          "1e100",
+                          Patterns::Anything(),
+                          "J2 plasticity: s_inf of (36), >= s0.");
+        prm.declare_entry("Hardening exponent",
+                          "0",
+                          Patterns::Anything(),
+                          "J2 plasticity: delta of (36), >= 0.");
+        prm.declare_entry("Linear hardening modulus",
+                          "0",
+                          Patterns::Anything(),
+                          "J2 plasticity: H of (36), >= 0.");
+      }
+
+      void
+      parse_parameters(ParameterHandler &prm) override
+      {
+        using Lists    = Parameters::Materials;
+        yield_stresses = Lists::non_negative_list(prm, "Yield stress");
+        saturation_yield_stresses =
+          Lists::non_negative_list(prm, "Saturation yield stress");
+        hardening_exponents =
+          Lists::non_negative_list(prm, "Hardening exponent");
+        linear_hardening_moduli =
+          Lists::non_negative_list(prm, "Linear hardening modulus");
+      }
+
+      void
+      check_body_count(const unsigned int max_body_id) const override
+      {
+        using Lists = Parameters::Materials;
+        Lists::check_count(yield_stresses.size(), max_body_id, "Yield stress");
+        Lists::check_count(saturation_yield_stresses.size(),
+                           max_body_id,
+                           "Saturation yield stress");
+        Lists::check_count(hardening_exponents.size(),
+                           max_body_id,
+                           "Hardening exponent");
+        Lists::check_count(linear_hardening_moduli.size(),
+                           max_body_id,
+                           "Linear hardening modulus");
+      }
+
+      void
+      check_body(const unsigned int body) const override
+      {
+        hardening(body);
+      }
+
+      /** The yield stresses decide where the history of a checkpoint is
+       * plastic. */
+      std::vector<std::pair<std::string, std::vector<double>>>
+      fingerprint() const override
+      {
+        return {{"Materials/Yield stress", yield_stresses}};
+      }
+
+      bool
+      locks_on_linear_simplices() const override
+      {
+        return true;
+      }
+
+      template <int dim>
+      std::unique_ptr<Material<dim>>
+      make(const unsigned int body, const double E, const double nu) const
+      {
+        const HardeningLaw law = hardening(body);
+        AssertThrow(law.initial_yield > 0 && law.initial_yield < 1e299 &&
+                      law.saturation_yield >= law.initial_yield,
+                    ExcMessage("Materials: J2 plasticity needs a Yield "
+                               "stress s0 > 0 and a Saturation yield stress "
+                               ">= s0 for every plastic body."));
+        return std::make_unique<J2Plasticity<dim>>(E, nu, law);
+      }
+
+    private:
+      /** The law of body @p body (in the order of the lists' checks). */
+      HardeningLaw
+      hardening(const unsigned int body) const
+      {
+        using Lists = Parameters::Materials;
+        return {Lists::for_body(yield_stresses, body, "Yield stress"),
+                Lists::for_body(saturation_yield_stresses,
+                                body,
+                                "Saturation yield stress"),
+                Lists::for_body(hardening_exponents,
+                                body,
+                                "Hardening exponent"),
+                Lists::for_body(linear_hardening_moduli,
+                                body,
+                                "Linear hardening modulus")};
+      }
+
+      std::vector<double> yield_stresses;
+      std::vector<double> saturation_yield_stresses;
+      std::vector<double> hardening_exponents;
+      std::vector<double> linear_hardening_moduli;
+    };
+
+    // Rank 2: the third of Materials/Model's choices.
+    const MaterialRegistration j2_plasticity_registration =
+      register_material<J2PlasticityModel>(
+        "J2 plasticity",
+        "finite strain, Hencky elasticity, von Mises with the hardening (36)",
+        2);
+  } // namespace
 } // namespace tribos

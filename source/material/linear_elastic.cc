@@ -1,4 +1,5 @@
 #include <tribos/material/linear_elastic.h>
+#include <tribos/material/material_model.h>
 
 namespace tribos
 {
@@ -80,4 +81,28 @@ namespace tribos
 
   template class LinearElastic<2>;
   template class LinearElastic<3>;
+
+
+
+  namespace
+  {
+    /** Materials/Model = linear elastic. */
+    class LinearElasticModel
+      : public MaterialInBothDimensions<LinearElasticModel>
+    {
+    public:
+      template <int dim>
+      std::unique_ptr<Material<dim>>
+      make(const unsigned int /*body*/, const double E, const double nu) const
+      {
+        return std::make_unique<LinearElastic<dim>>(E, nu);
+      }
+    };
+
+    // Rank 0: the first of Materials/Model's choices.
+    const MaterialRegistration linear_elastic_registration =
+      register_material<LinearElasticModel>("linear elastic",
+                                            "small strain",
+                                            0);
+  } // namespace
 } // namespace tribos

@@ -1,12 +1,25 @@
-#include <tribos/material/j2_plasticity.h>
-#include <tribos/material/linear_elastic.h>
 #include <tribos/material/material.h>
-#include <tribos/material/neo_hookean.h>
+#include <tribos/material/material_model.h>
+#include <tribos/parameters/materials.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <sstream>
 
 namespace tribos
 {
+  Registry<MaterialModel> &
+  material_registry()
+  {
+    // Constructed on first use: the models' files register during static
+    // initialization, in no defined order.
+    static Registry<MaterialModel> models("material model");
+    return models;
+  }
+
+
+
   template <int dim>
   std::unique_ptr<Material<dim>>
   create_material(const std::string           &model,
@@ -14,28 +27,27 @@ namespace tribos
                   const double                 nu,
                   const std::array<double, 4> &hardening)
   {
-    if (model == "J2 plasticity")
+    // The subsection Materials as a parameter file with these values would
+    // give it, so that the model is made and checked exactly as in a run.
+    // The values as text with 17 digits read back to the same doubles.
+    ParameterHandler prm;
+    Parameters::Materials::declare_parameters(prm);
+    prm.enter_subsection("Materials");
+    const char *const entries[] = {"Yield stress",
+                                   "Saturation yield stress",
+                                   "Hardening exponent",
+                                   "Linear hardening modulus"};
+    for (unsigned int i = 0; i < hardening.size(); ++i)
     {
-      AssertThrow(hardening[0] > 0 && hardening[0] < 1e299 &&
-                    hardening[1] >= hardening[0],
-                  ExcMessage("Materials: J2 plasticity needs a Yield "
-                             "stress s0 > 0 and a Saturation yield stress "
-                             ">= s0 for every plastic body."));
-      return std::make_unique<J2Plasticity<dim>>(
-        E,
-        nu,
-        HardeningLaw{hardening[0], hardening[1], hardening[2], hardening[3]});
+      std::ostringstream text;
+      text.precision(17);
+      text << hardening[i];
+      prm.set(entries[i], text.str());
     }
-    if (model == "linear elastic")
-      return std::make_unique<LinearElastic<dim>>(E, nu);
-    if (model == "neo-Hookean")
-      return std::make_unique<NeoHookean<dim>>(E, nu);
-    AssertThrow(false,
-                ExcMessage("Parameter <Materials/Model>: unknown model <" +
-                           model +
-                           ">. Allowed: linear elastic, neo-Hookean, J2 "
-                           "plasticity."));
-    return nullptr;
+    prm.leave_subsection();
+    Parameters::Materials materials;
+    materials.parse_parameters(prm);
+    return materials.model(model)->template create<dim>(0, E, nu);
   }
 
   template std::unique_ptr<Material<2>>

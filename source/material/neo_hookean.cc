@@ -1,4 +1,5 @@
 #include <tribos/base/exceptions.h>
+#include <tribos/material/material_model.h>
 #include <tribos/material/neo_hookean.h>
 
 #include <cmath>
@@ -78,4 +79,27 @@ namespace tribos
 
   template class NeoHookean<2>;
   template class NeoHookean<3>;
+
+
+
+  namespace
+  {
+    /** Materials/Model = neo-Hookean. */
+    class NeoHookeanModel : public MaterialInBothDimensions<NeoHookeanModel>
+    {
+    public:
+      template <int dim>
+      std::unique_ptr<Material<dim>>
+      make(const unsigned int /*body*/, const double E, const double nu) const
+      {
+        return std::make_unique<NeoHookean<dim>>(E, nu);
+      }
+    };
+
+    // Rank 1: the second of Materials/Model's choices (and its default).
+    const MaterialRegistration neo_hookean_registration =
+      register_material<NeoHookeanModel>("neo-Hookean",
+                                         "compressible, finite strain",
+                                         1);
+  } // namespace
 } // namespace tribos

@@ -1,4 +1,6 @@
 #include <tribos/base/text.h>
+#include <tribos/contact/discretization/discretization_method.h>
+#include <tribos/contact/enforcement/enforcement_method.h>
 #include <tribos/parameters/contact.h>
 
 #include <cmath>
@@ -27,47 +29,32 @@ namespace tribos
           "makes one connected surface: a node on the edge between two of its "
           "parts is one node, and master faces continue across that edge. "
           "Per-pair keys: method, penalty, tangential penalty, mu, "
-          "discretization (node to segment | mortar). Example: "
-          "'10 : 3 ; 4 : plate : mu=0.2 ; 3 : 10, 11, 12'.");
+          "discretization (" +
+            discretization_registry().join(" | ") +
+            "). Example: '10 : 3 ; 4 : plate : mu=0.2 ; 3 : 10, 11, 12'.");
+        // The methods that registered themselves
+        // (source/contact/enforcement/), with their own descriptions.
         prm.declare_entry("Method",
                           "penalty",
                           dealii::Patterns::Selection(
-                            "penalty|lagrange multiplier|augmented lagrangian"),
-                          "Default enforcement of every pair. penalty: t_N = "
-                          "eps_N <-g_N>; augmented lagrangian: t_N = <lambda - "
-                          "eps_N g_N> with the multiplier lambda of each slave "
-                          "node updated (Uzawa) until the penetration is "
-                          "below Augmentation tolerance; lagrange multiplier: "
-                          "exact contact, the traction of every slave node is "
-                          "an unknown of the system (saddle point; direct or, "
-                          "the multipliers eliminated, iterative solves, on "
-                          "any number of MPI processes); the active set and "
-                          "stick/slip follow from lambda - eps_N g_N inside "
-                          "Newton, so eps_N then only affects the iterates.");
+                            enforcement_registry().selection_pattern()),
+                          "Default enforcement of every pair. " +
+                            enforcement_registry().documentation() + ".");
+        // The discretizations that registered themselves
+        // (source/contact/discretization/), with their own descriptions;
+        // then their own entries (Mortar basis), where they were declared
+        // before the registry (the order numbers the patterns of
+        // --print-parameters json).
         prm.declare_entry(
           "Discretization",
           "node to segment",
-          dealii::Patterns::Selection("node to segment|mortar"),
-          "Default discretization of every pair with a deformable master. "
-          "node to segment: each slave node is projected onto the master "
-          "(the paper's); mortar: the gap, slip and force of each slave "
-          "node are integrals over the overlap of its slave segments (faces "
-          "in 3D) with "
-          "the master segments, weighted by the node's multiplier function "
-          "(segment-to-segment; passes the contact patch test). Pairs with a "
-          "rigid master are always node to rigid surface. Mortar is "
-          "one-pass.");
-        prm.declare_entry(
-          "Mortar basis",
-          "dual",
-          dealii::Patterns::Selection("dual|standard"),
-          "Mortar: the functions that weight the gap and the traction of a "
-          "slave node. dual: biorthogonal to the slave's shape functions, so "
-          "each node's traction acts on that node alone (a diagonal slave "
-          "matrix D); on a slave segment only partly overlapped by the master "
-          "(at the master's end) they blend continuously into the standard "
-          "functions, whose weights stay positive. standard: the slave's shape functions "
-          "everywhere.");
+          dealii::Patterns::Selection(
+            discretization_registry().selection_pattern()),
+          "Default discretization of every pair with a deformable master. " +
+            discretization_registry().documentation() +
+            ". Pairs with a rigid master are always node to rigid surface. "
+            "Mortar is one-pass.");
+        discretization_registry().declare_parameters(prm);
         prm.declare_entry(
           "Penalty factor",
           "100*E/h",
@@ -251,6 +238,7 @@ namespace tribos
       declare_law_entries(prm);
       declare_search_entries(prm);
       declare_policy_entries(prm);
+      enforcement_registry().declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -279,7 +267,7 @@ namespace tribos
       if (search_distance == 0)
         search_distance = std::numeric_limits<double>::infinity();
 
-      const EnforcementMethod default_method =
+      const std::string default_method =
         parse_method(prm.get("Method"), "Contact/Method");
       const auto default_normal = PenaltyValue::parse(prm.get("Penalty factor"),
                                                       "Contact/Penalty factor");
@@ -295,6 +283,7 @@ namespace tribos
       penalty_formulation     = prm.get("Penalty formulation") == "mixed" ?
                                   PenaltyFormulation::mixed :
                                   PenaltyFormulation::primal;
+      enforcement_methods     = enforcement_registry().parse_all(prm);
       normal_complementarity =
         PenaltyValue::parse(prm.get("Normal complementarity parameter"),
                             "Contact/Normal complementarity parameter");
@@ -310,12 +299,10 @@ namespace tribos
                                      "complementarity parameter> must not be "
                                      "empty (default: E/h)."));
 
-      const Discretization default_discretization =
+      const std::string default_discretization =
         parse_discretization(prm.get("Discretization"),
                              "Contact/Discretization");
-      mortar_basis = prm.get("Mortar basis") == "standard" ?
-                       MortarBasis::standard :
-                       MortarBasis::dual;
+      discretization_methods = discretization_registry().parse_all(prm);
 
       rigid_surfaces = parse_rigid_surfaces(prm.get("Rigid surfaces"));
       const PairDefaults defaults{
@@ -327,8 +314,8 @@ namespace tribos
         default_discretization};
       pairs.clear();
       for (const auto &item : Text::split_top_level(prm.get("Pairs"), ';'))
-        pairs.push_back(parse_pair(item, defaults, rigid_surfaces));
-      check_interfaces(pairs);
+        pairs.push_back(parse_pair(item, defaults, *this));
+      check_interfaces(*this);
       prm.leave_subsection();
     }
 
@@ -338,15 +325,7 @@ namespace tribos
     Contact::check(const unsigned int dim) const
     {
       for (const auto &pair : pairs)
-        if (pair.discretization == Discretization::mortar)
-        {
-          AssertThrow(!two_pass,
-                      dealii::ExcMessage(
-                        "Contact pair <" + pair.text +
-                        ">: Discretization = mortar is one-pass (it passes "
-                        "the patch test with either side as slave); set "
-                        "Contact/Passes = one-pass."));
-        }
+        discretization_method(pair.discretization)->check(pair, *this, dim);
       for (const auto &surface : rigid_surfaces)
       {
         AssertThrow(surface.motion.size() == dim,
@@ -369,6 +348,32 @@ namespace tribos
                         "> needs an axis 'ax, ay, az' in "
                         "3D."));
       }
+    }
+
+
+
+    std::shared_ptr<const EnforcementMethod>
+    Contact::enforcement_method(const std::string &name) const
+    {
+      const auto parsed = enforcement_methods.find(name);
+      if (parsed != enforcement_methods.end())
+        return parsed->second;
+      return enforcement_registry().create_with_defaults(
+        parse_method(name, "Contact/Method"));
+    }
+
+
+
+    std::shared_ptr<const DiscretizationMethod>
+    Contact::discretization_method(const std::string &name) const
+    {
+      const std::string resolved =
+        name.empty() ? discretization_registry().names().at(0) : name;
+      const auto parsed = discretization_methods.find(resolved);
+      if (parsed != discretization_methods.end())
+        return parsed->second;
+      return discretization_registry().create_with_defaults(
+        parse_discretization(resolved, "Contact/Discretization"));
     }
 
 

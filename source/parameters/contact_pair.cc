@@ -1,4 +1,7 @@
 #include <tribos/base/text.h>
+#include <tribos/contact/discretization/discretization_method.h>
+#include <tribos/contact/enforcement/enforcement_method.h>
+#include <tribos/parameters/contact.h>
 #include <tribos/parameters/contact_pair.h>
 
 #include <cmath>
@@ -10,36 +13,13 @@ namespace tribos
   namespace Parameters
   {
     std::string
-    to_string(const EnforcementMethod method)
-    {
-      switch (method)
-      {
-        case EnforcementMethod::penalty:
-          return "penalty";
-        case EnforcementMethod::lagrange_multiplier:
-          return "lagrange multiplier";
-        case EnforcementMethod::augmented_lagrangian:
-          return "augmented lagrangian";
-      }
-      return "";
-    }
-
-
-
-    EnforcementMethod
     parse_method(const std::string &text, const std::string &entry)
     {
-      for (const auto method : {EnforcementMethod::penalty,
-                                EnforcementMethod::lagrange_multiplier,
-                                EnforcementMethod::augmented_lagrangian})
-        if (text == to_string(method))
-          return method;
-      AssertThrow(false,
+      AssertThrow(enforcement_registry().find(text) != nullptr,
                   dealii::ExcMessage("Parameter <" + entry + ">: method <" +
-                                     text +
-                                     "> unknown. Allowed: penalty, lagrange "
-                                     "multiplier, augmented lagrangian."));
-      return EnforcementMethod::penalty;
+                                     text + "> unknown. Allowed: " +
+                                     enforcement_registry().join(", ") + "."));
+      return text;
     }
 
 
@@ -117,17 +97,42 @@ namespace tribos
 
 
     /** The discretization @p text of @p entry. */
-    Discretization
+    std::string
     parse_discretization(const std::string &text, const std::string &entry)
     {
-      AssertThrow(text == "node to segment" || text == "mortar",
-                  dealii::ExcMessage("Parameter <" + entry +
-                                     ">: discretization <" + text +
-                                     "> is unknown. Allowed: node to "
-                                     "segment, mortar."));
-      return text == "mortar" ? Discretization::mortar :
-                                Discretization::node_to_segment;
+      AssertThrow(discretization_registry().find(text) != nullptr,
+                  dealii::ExcMessage(
+                    "Parameter <" + entry + ">: discretization <" + text +
+                    "> is unknown. Allowed: " +
+                    discretization_registry().join(", ") + "."));
+      return text;
     }
+
+
+
+    namespace
+    {
+      /**
+       * The discretization of a pair with a rigid master whose default
+       * (@p discretization) cannot meet one: the first registered that
+       * can (node to segment, which makes its rigid variant).
+       */
+      std::string
+      rigid_master_discretization(const std::string &discretization,
+                                  const Contact     &contact)
+      {
+        if (contact.discretization_method(discretization)
+              ->handles_rigid_master())
+          return discretization;
+        for (const std::string &name : discretization_registry().names())
+          if (contact.discretization_method(name)->handles_rigid_master())
+            return name;
+        AssertThrow(false,
+                    dealii::ExcMessage("No registered discretization meets "
+                                       "a rigid master surface."));
+        return discretization;
+      }
+    } // namespace
 
 
 
@@ -191,14 +196,15 @@ namespace tribos
 
 
     /** The pair of Contact/Pairs item @p item, with @p defaults, among
-     * the @p rigid_surfaces. */
+     * the rigid surfaces of @p contact. */
     ContactPair
-    parse_pair(const std::string               &item,
-               const PairDefaults              &defaults,
-               const std::vector<RigidSurface> &rigid_surfaces)
+    parse_pair(const std::string  &item,
+               const PairDefaults &defaults,
+               const Contact      &contact)
     {
-      const std::string pair_entry = "Contact/Pairs";
-      const auto        parts      = Text::split_top_level(item, ':');
+      const std::vector<RigidSurface> &rigid_surfaces = contact.rigid_surfaces;
+      const std::string                pair_entry     = "Contact/Pairs";
+      const auto                       parts = Text::split_top_level(item, ':');
       AssertThrow(parts.size() == 2 || parts.size() == 3,
                   dealii::ExcMessage("Parameter <" + pair_entry + ">: item <" +
                                      item +
@@ -246,13 +252,14 @@ namespace tribos
                         " is both slave and master; a pair needs "
                         "different slave and master boundaries."));
       }
-      pair.method                            = defaults.method;
-      pair.normal_penalty                    = defaults.normal_penalty;
-      pair.tangential_penalty                = defaults.tangential_penalty;
-      pair.friction_coefficient              = defaults.friction_coefficient;
-      pair.discretization                    = pair.rigid_surface.empty() ?
-                                                 defaults.discretization :
-                                                 Discretization::node_to_segment;
+      pair.method               = defaults.method;
+      pair.normal_penalty       = defaults.normal_penalty;
+      pair.tangential_penalty   = defaults.tangential_penalty;
+      pair.friction_coefficient = defaults.friction_coefficient;
+      pair.discretization =
+        pair.rigid_surface.empty() ?
+          defaults.discretization :
+          rigid_master_discretization(defaults.discretization, contact);
       bool                  tangential_given = false;
       std::set<std::string> keys;
       if (parts.size() == 3)
@@ -297,14 +304,14 @@ namespace tribos
           else if (key == "discretization")
           {
             pair.discretization = parse_discretization(value, pair_entry);
-            AssertThrow(pair.discretization ==
-                            Discretization::node_to_segment ||
-                          pair.rigid_surface.empty(),
+            AssertThrow(pair.rigid_surface.empty() ||
+                          contact.discretization_method(pair.discretization)
+                            ->handles_rigid_master(),
                         dealii::ExcMessage(
                           "Parameter <" + pair_entry + ">: item <" + item +
-                          ">: discretization = mortar needs a deformable "
-                          "master; a rigid surface is always met node to "
-                          "surface."));
+                          ">: discretization = " + pair.discretization +
+                          " needs a deformable master; a rigid surface is "
+                          "always met node to surface."));
           }
           else
             AssertThrow(false,
@@ -325,15 +332,16 @@ namespace tribos
 
 
     /**
-     * Refuse @p pairs that repeat an interface: an exact duplicate would
-     * apply its contact twice; the same interface written twice with
-     * slave and master swapped, with multipliers, holds the same gap
-     * twice.
+     * Refuse pairs of @p contact that repeat an interface: an exact
+     * duplicate would apply its contact twice; the same interface written
+     * twice with slave and master swapped, with a method that holds the
+     * gap exactly, holds the same gap twice.
      */
     void
-    check_interfaces(const std::vector<ContactPair> &pairs)
+    check_interfaces(const Contact &contact)
     {
-      const std::string pair_entry = "Contact/Pairs";
+      const std::vector<ContactPair> &pairs      = contact.pairs;
+      const std::string               pair_entry = "Contact/Pairs";
       // The same slave surface against the same master twice: each
       // slave node would carry its contact twice.
       for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -352,6 +360,11 @@ namespace tribos
       // The same interface written twice with slave and master swapped:
       // with multipliers both sets of node-to-segment constraints hold the
       // same gap (a singular saddle-point system). Penalty may sum both.
+      const auto exact = [&contact](const ContactPair &pair)
+      {
+        return contact.enforcement_method(pair.method)
+          ->constrains_gap_exactly();
+      };
       const auto meet =
         [](const std::set<unsigned int> &a, const std::set<unsigned int> &b)
       {
@@ -367,8 +380,7 @@ namespace tribos
               pairs[j].rigid_surface.empty() &&
               meet(pairs[i].slave_boundary, pairs[j].master_boundary) &&
               meet(pairs[i].master_boundary, pairs[j].slave_boundary) &&
-              (pairs[i].method == EnforcementMethod::lagrange_multiplier ||
-               pairs[j].method == EnforcementMethod::lagrange_multiplier)),
+              (exact(pairs[i]) || exact(pairs[j]))),
             dealii::ExcMessage(
               "Parameter <" + pair_entry + ">: pairs <" + pairs[i].text +
               "> and <" + pairs[j].text +

@@ -1,4 +1,5 @@
 #include <tribos/base/text.h>
+#include <tribos/material/material_model.h>
 #include <tribos/parameters/materials.h>
 
 namespace tribos
@@ -9,15 +10,15 @@ namespace tribos
     Materials::declare_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Materials");
+      // The models that registered themselves (source/material/), with
+      // their own descriptions.
       prm.declare_entry("Model",
                         "neo-Hookean",
                         dealii::Patterns::List(dealii::Patterns::Selection(
-                          "linear elastic|neo-Hookean|J2 plasticity")),
+                          material_registry().selection_pattern())),
                         "Constitutive model per body id (comma-separated) or "
-                        "one for all bodies. 'linear elastic': small strain; "
-                        "'neo-Hookean': compressible, finite strain; 'J2 "
-                        "plasticity': finite strain, Hencky elasticity, von "
-                        "Mises with the hardening (36).");
+                        "one for all bodies. " +
+                          material_registry().documentation("'") + ".");
       prm.declare_entry("Young's modulus",
                         "1",
                         dealii::Patterns::Anything(),
@@ -26,24 +27,10 @@ namespace tribos
                         "0.3",
                         dealii::Patterns::Anything(),
                         "Per body id or one value for all; in [0, 0.5).");
-      prm.declare_entry(
-        "Yield stress",
-        "1e100",
-        dealii::Patterns::Anything(),
-        "J2 plasticity: initial yield stress s0 of (36) (the default: no yield), per "
-        "body id or one for all; > 0.");
-      prm.declare_entry("Saturation yield stress",
-                        "1e100",
-                        dealii::Patterns::Anything(),
-                        "J2 plasticity: s_inf of (36), >= s0.");
-      prm.declare_entry("Hardening exponent",
-                        "0",
-                        dealii::Patterns::Anything(),
-                        "J2 plasticity: delta of (36), >= 0.");
-      prm.declare_entry("Linear hardening modulus",
-                        "0",
-                        dealii::Patterns::Anything(),
-                        "J2 plasticity: H of (36), >= 0.");
+      // The models' own entries (J2 plasticity's hardening), where they
+      // were declared before the registry (the order numbers the patterns
+      // of --print-parameters json).
+      material_registry().declare_parameters(prm);
       prm.declare_entry("Density",
                         "0",
                         dealii::Patterns::Anything(),
@@ -64,25 +51,10 @@ namespace tribos
                                           "Materials/Young's modulus");
       poissons_ratios = Text::parse_doubles(prm.get("Poisson's ratio"),
                                             "Materials/Poisson's ratio");
-      const auto read = [&](const std::string &entry)
-      {
-        const auto values =
-          Text::parse_doubles(prm.get(entry), "Materials/" + entry);
-        for (const double v : values)
-          AssertThrow(v >= 0,
-                      dealii::ExcMessage("Parameter <Materials/" + entry +
-                                         "> = <" + prm.get(entry) +
-                                         ">: every value must be >= 0."));
-        AssertThrow(!values.empty(),
-                    dealii::ExcMessage("Parameter <Materials/" + entry +
-                                       "> must not be empty."));
-        return values;
-      };
-      yield_stresses            = read("Yield stress");
-      saturation_yield_stresses = read("Saturation yield stress");
-      hardening_exponents       = read("Hardening exponent");
-      linear_hardening_moduli   = read("Linear hardening modulus");
-      densities                 = read("Density");
+      // Read where the hardening lists were read before the registry, so
+      // that a file with several mistakes reports the same first.
+      material_models = material_registry().parse_all(prm);
+      densities       = non_negative_list(prm, "Density");
       for (const double E : youngs_moduli)
         AssertThrow(E > 0,
                     dealii::ExcMessage(
@@ -101,6 +73,42 @@ namespace tribos
                                      "modulus and Poisson's ratio must not "
                                      "be empty."));
       prm.leave_subsection();
+    }
+
+
+
+    std::shared_ptr<const MaterialModel>
+    Materials::model(const std::string &name) const
+    {
+      const auto parsed = material_models.find(name);
+      if (parsed != material_models.end())
+        return parsed->second;
+      const auto made = material_registry().create_with_defaults(name);
+      AssertThrow(made != nullptr,
+                  dealii::ExcMessage("Parameter <Materials/Model>: unknown "
+                                     "model <" +
+                                     name + ">. Allowed: " +
+                                     material_registry().join(", ") + "."));
+      return made;
+    }
+
+
+
+    std::vector<double>
+    Materials::non_negative_list(dealii::ParameterHandler &prm,
+                                 const std::string        &entry)
+    {
+      const auto values =
+        Text::parse_doubles(prm.get(entry), "Materials/" + entry);
+      for (const double v : values)
+        AssertThrow(v >= 0,
+                    dealii::ExcMessage("Parameter <Materials/" + entry +
+                                       "> = <" + prm.get(entry) +
+                                       ">: every value must be >= 0."));
+      AssertThrow(!values.empty(),
+                  dealii::ExcMessage("Parameter <Materials/" + entry +
+                                     "> must not be empty."));
+      return values;
     }
 
 
@@ -125,29 +133,33 @@ namespace tribos
     }
 
     void
+    Materials::check_count(const std::size_t  n_values,
+                           const unsigned int max_body_id,
+                           const std::string &entry)
+    {
+      AssertThrow(n_values <= 1 || n_values <= max_body_id + 1,
+                  dealii::ExcMessage(
+                    "Parameter <Materials/" + entry + "> lists " +
+                    std::to_string(n_values) +
+                    " values, but the mesh's "
+                    "body ids run from 0 to " +
+                    std::to_string(max_body_id) +
+                    ": give one value per body id or a single value for "
+                    "all bodies."));
+    }
+
+
+
+    void
     Materials::check_body_count(const unsigned int max_body_id) const
     {
-      const auto check =
-        [max_body_id](const std::size_t n_values, const std::string &entry)
-      {
-        AssertThrow(n_values <= 1 || n_values <= max_body_id + 1,
-                    dealii::ExcMessage(
-                      "Parameter <Materials/" + entry + "> lists " +
-                      std::to_string(n_values) +
-                      " values, but the mesh's "
-                      "body ids run from 0 to " +
-                      std::to_string(max_body_id) +
-                      ": give one value per body id or a single value for "
-                      "all bodies."));
-      };
-      check(models.size(), "Model");
-      check(youngs_moduli.size(), "Young's modulus");
-      check(poissons_ratios.size(), "Poisson's ratio");
-      check(yield_stresses.size(), "Yield stress");
-      check(saturation_yield_stresses.size(), "Saturation yield stress");
-      check(hardening_exponents.size(), "Hardening exponent");
-      check(linear_hardening_moduli.size(), "Linear hardening modulus");
-      check(densities.size(), "Density");
+      check_count(models.size(), max_body_id, "Model");
+      check_count(youngs_moduli.size(), max_body_id, "Young's modulus");
+      check_count(poissons_ratios.size(), max_body_id, "Poisson's ratio");
+      // The models' own lists where the hardening lists were checked.
+      for (const std::string &name : material_registry().names())
+        model(name)->check_body_count(max_body_id);
+      check_count(densities.size(), max_body_id, "Density");
     }
 
 

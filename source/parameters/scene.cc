@@ -15,20 +15,17 @@ namespace tribos
     {
       prm.enter_subsection("Scene");
       // The scenes that registered themselves (source/scene/).
-      std::string names;
-      for (const auto &name : scene_names())
-        names += (names.empty() ? "" : "|") + name;
       prm.declare_entry(
         "Name",
         "block",
-        Patterns::Selection(names),
+        Patterns::Selection(scene_registry().selection_pattern()),
         "The geometry generator. Body (material) and boundary ids of each "
         "are listed in the README.");
       prm.declare_entry("Refinement",
                         "0",
                         Patterns::Integer(0, 10),
                         "Each level doubles every cell count of the scene.");
-      declare_scene_parameters(prm);
+      scene_registry().declare_parameters(prm);
       prm.leave_subsection();
     }
 

@@ -2,55 +2,14 @@
 
 #include <deal.II/grid/grid_tools.h>
 
-#include <map>
 
 namespace tribos
 {
-  namespace
+  Registry<SceneGeometry> &
+  scene_registry()
   {
-    struct Entry
-    {
-      SceneRegistration::Declare declare = nullptr;
-      SceneRegistration::Make    make    = nullptr;
-    };
-
-    /** The registered scenes, by name (built during static
-     * initialization, hence a function-local static). */
-    std::map<std::string, Entry> &
-    registry()
-    {
-      static std::map<std::string, Entry> scenes;
-      return scenes;
-    }
-  } // namespace
-
-
-
-  SceneRegistration::SceneRegistration(const std::string &name,
-                                       const Declare      declare,
-                                       const Make         make)
-  {
-    registry()[name] = {declare, make};
-  }
-
-
-
-  std::vector<std::string>
-  scene_names()
-  {
-    std::vector<std::string> names;
-    for (const auto &[name, entry] : registry())
-      names.push_back(name);
-    return names;
-  }
-
-
-
-  void
-  declare_scene_parameters(ParameterHandler &prm)
-  {
-    for (const auto &[name, entry] : registry())
-      entry.declare(prm);
+    static Registry<SceneGeometry> scenes("scene");
+    return scenes;
   }
 
 
@@ -58,12 +17,10 @@ namespace tribos
   std::shared_ptr<const SceneGeometry>
   parse_scene(const std::string &name, ParameterHandler &prm)
   {
-    const auto scene = registry().find(name);
-    AssertThrow(scene != registry().end(),
+    std::shared_ptr<SceneGeometry> geometry = scene_registry().create(name);
+    AssertThrow(geometry != nullptr,
                 ExcMessage("Parameter <Scene/Name>: unknown scene <" + name +
                            ">."));
-    std::shared_ptr<SceneGeometry> geometry = scene->second.make();
-    geometry->name                          = name;
     geometry->parse_parameters(prm);
     return geometry;
   }
@@ -114,6 +71,14 @@ namespace tribos
   SceneGeometry::mesh_order(const unsigned int) const
   {
     return 1;
+  }
+
+
+
+  std::vector<std::string>
+  SceneGeometry::describe() const
+  {
+    return {};
   }
 
 

@@ -1,12 +1,12 @@
 #ifndef tribos_contact_contact_pair_h
 #define tribos_contact_contact_pair_h
 
-#include <tribos/contact/contact_discretization.h>
-#include <tribos/contact/contact_search.h>
-#include <tribos/contact/contact_surface.h>
-#include <tribos/contact/enforcement.h>
-#include <tribos/contact/node_state.h>
-#include <tribos/contact/rigid_surface.h>
+#include <tribos/contact/discretization/contact_discretization.h>
+#include <tribos/contact/search/contact_search.h>
+#include <tribos/contact/surface/contact_surface.h>
+#include <tribos/contact/enforcement/enforcement.h>
+#include <tribos/contact/state/node_state.h>
+#include <tribos/contact/surface/rigid_surface.h>
 #include <tribos/parameters/contact.h>
 
 #include <deal.II/base/index_set.h>

@@ -100,10 +100,14 @@ namespace tribos
   };
 
   /**
-   * Create the material called @p model ("linear elastic", "neo-Hookean"
-   * or "J2 plasticity") with Young's modulus @p E and Poisson's ratio @p nu;
-   * @p hardening holds s0, s_inf, delta, H of the paper's (36) and is used
-   * by J2 plasticity only.
+   * Create the material called @p model (a registered MaterialModel,
+   * material_model.h) with Young's modulus @p E and Poisson's ratio @p nu;
+   * @p hardening holds s0, s_inf, delta, H of the paper's (36), the
+   * entries Yield stress, Saturation yield stress, Hardening exponent and
+   * Linear hardening modulus of J2 plasticity; the other entries of
+   * Materials keep their defaults. For tests and benchmarks that make one
+   * material without a parameter file; a run asks its parsed
+   * Parameters::Materials::model().
    */
   template <int dim>
   std::unique_ptr<Material<dim>>

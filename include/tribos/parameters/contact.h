@@ -5,12 +5,17 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
 namespace tribos
 {
+  class DiscretizationMethod;
+  class EnforcementMethod;
+
   namespace Parameters
   {
     /** Contact/Tangent. */
@@ -25,13 +30,6 @@ namespace tribos
     {
       none,
       averaged_normals
-    };
-
-    /** Contact/Mortar basis: the multiplier (weight) functions of mortar. */
-    enum class MortarBasis
-    {
-      dual,
-      standard
     };
 
     /** Contact/Penalty formulation. */
@@ -75,7 +73,37 @@ namespace tribos
        * displacements; mixed: the tractions as unknowns). */
       PenaltyFormulation penalty_formulation;
       PenaltyValue       friction_complementarity;
-      MortarBasis        mortar_basis;
+      /**
+       * Every registered enforcement method with its own parameters, by
+       * name: any of them may be a pair's (Contact/Method, method=).
+       */
+      std::map<std::string, std::shared_ptr<const EnforcementMethod>>
+        enforcement_methods;
+
+      /**
+       * The enforcement method called @p name: from enforcement_methods or,
+       * if parse_parameters() did not fill them (a Contact built by hand),
+       * with its parameters' defaults; throws if none is called so.
+       */
+      std::shared_ptr<const EnforcementMethod>
+      enforcement_method(const std::string &name) const;
+
+      /**
+       * Every registered discretization with its own parameters, by name:
+       * any of them may be a pair's (Contact/Discretization,
+       * discretization=).
+       */
+      std::map<std::string, std::shared_ptr<const DiscretizationMethod>>
+        discretization_methods;
+
+      /**
+       * The discretization called @p name (empty: the first registered):
+       * from discretization_methods or, if parse_parameters() did not fill
+       * them (a Contact built by hand), with its parameters' defaults;
+       * throws if none is called so.
+       */
+      std::shared_ptr<const DiscretizationMethod>
+      discretization_method(const std::string &name) const;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

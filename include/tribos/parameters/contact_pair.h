@@ -41,29 +41,15 @@ namespace tribos
       }
     };
 
-    /** How a pair enforces contact (Contact/Method). */
-    enum class EnforcementMethod
-    {
-      penalty,
-      lagrange_multiplier,
-      augmented_lagrangian
-    };
+    struct Contact;
 
-    /** The parameter file's name of @p method. */
+    /**
+     * @p text, the name of a registered enforcement method (as written in
+     * the parameter file: Contact/Method, a pair's method=); throws with a
+     * message naming @p entry if it is none.
+     */
     std::string
-    to_string(const EnforcementMethod method);
-
-    /** @p text as a method (as written in the parameter file); throws
-     * with a message naming @p entry if it is none. */
-    EnforcementMethod
     parse_method(const std::string &text, const std::string &entry);
-
-    /** Contact/Discretization: how a pair's contact is integrated. */
-    enum class Discretization
-    {
-      node_to_segment,
-      mortar
-    };
 
     /** A rigid analytic surface: plane, sphere or cylinder, moving in t. */
     struct RigidSurface
@@ -97,29 +83,38 @@ namespace tribos
       std::string rigid_surface;
 
       /** The item as written, for messages. */
-      std::string       text;
-      EnforcementMethod method;
-      PenaltyValue      normal_penalty;
-      PenaltyValue      tangential_penalty;
-      double            friction_coefficient;
-      Discretization    discretization = Discretization::node_to_segment;
+      std::string text;
+      /** The enforcement method's name (Contact/Method, method=). */
+      std::string  method;
+      PenaltyValue normal_penalty;
+      PenaltyValue tangential_penalty;
+      double       friction_coefficient;
+      /**
+       * The discretization's name (Contact/Discretization,
+       * discretization=; a rigid master's resolved); empty: the first
+       * registered one.
+       */
+      std::string discretization;
     };
 
     /** The defaults of a pair: the entries of the subsection Contact. */
     struct PairDefaults
     {
-      EnforcementMethod method;
-      PenaltyValue      normal_penalty, tangential_penalty;
+      std::string  method;
+      PenaltyValue normal_penalty, tangential_penalty;
       /** Whether Tangential penalty factor was given (else a pair's own
        * penalty is its tangential one too). */
-      bool           tangential_given;
-      double         friction_coefficient;
-      Discretization discretization;
+      bool        tangential_given;
+      double      friction_coefficient;
+      std::string discretization;
     };
 
-    /** @p text as a discretization; throws with a message naming
-     * @p entry if it is none. */
-    Discretization
+    /**
+     * @p text, the name of a registered discretization (as written in the
+     * parameter file); throws with a message naming @p entry if it is
+     * none.
+     */
+    std::string
     parse_discretization(const std::string &text, const std::string &entry);
 
     /** The surfaces of Contact/Rigid surfaces = @p text. */
@@ -127,19 +122,20 @@ namespace tribos
     parse_rigid_surfaces(const std::string &text);
 
     /** The pair of the Contact/Pairs item @p item with @p defaults, its
-     * master one of @p rigid_surfaces or boundary ids. */
+     * master one of the rigid surfaces of @p contact or boundary ids. */
     ContactPair
-    parse_pair(const std::string               &item,
-               const PairDefaults              &defaults,
-               const std::vector<RigidSurface> &rigid_surfaces);
+    parse_pair(const std::string  &item,
+               const PairDefaults &defaults,
+               const Contact      &contact);
 
     /**
-     * Refuse @p pairs that repeat an interface: an exact duplicate would
-     * apply its contact twice; the same interface written twice with slave
-     * and master swapped, with multipliers, holds the same gap twice.
+     * Refuse pairs of @p contact that repeat an interface: an exact
+     * duplicate would apply its contact twice; the same interface written
+     * twice with slave and master swapped, with a method that holds the
+     * gap exactly, holds the same gap twice.
      */
     void
-    check_interfaces(const std::vector<ContactPair> &pairs);
+    check_interfaces(const Contact &contact);
   } // namespace Parameters
 } // namespace tribos
 

@@ -1,6 +1,8 @@
 #ifndef tribos_scene_scene_h
 #define tribos_scene_scene_h
 
+#include <tribos/base/registry.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
@@ -93,6 +95,14 @@ namespace tribos
     virtual unsigned int
     mesh_order(const unsigned int dim) const;
 
+    /**
+     * Lines for the run's log after its header, once the scene is built:
+     * what the user may want to know of an input file read (e.g. the ids
+     * an Abaqus deck's sets got). The default: none.
+     */
+    virtual std::vector<std::string>
+    describe() const;
+
     /** The scene's Scene/Name. */
     std::string name;
   };
@@ -100,19 +110,16 @@ namespace tribos
 
 
   /**
-   * Registers a scene under its Scene/Name: every scene file defines one
-   * such object (static) with the function that declares its parameters
-   * and the one that makes the scene.
+   * The registered scenes (the files of source/scene/), by Scene/Name: every
+   * scene file defines a static SceneRegistration made by register_scene().
    */
-  struct SceneRegistration
-  {
-    using Declare = void (*)(ParameterHandler &);
-    using Make    = std::unique_ptr<SceneGeometry> (*)();
+  Registry<SceneGeometry> &
+  scene_registry();
 
-    SceneRegistration(const std::string &name,
-                      const Declare      declare,
-                      const Make         make);
-  };
+  /** The object by which a scene file registers its scene. */
+  using SceneRegistration = Registry<SceneGeometry>::Registration;
+
+
 
   /**
    * A scene whose generator is the member template
@@ -145,22 +152,10 @@ namespace tribos
   SceneRegistration
   register_scene(const std::string &name)
   {
-    return SceneRegistration(name,
-                             &Scene::declare_parameters,
-                             []() -> std::unique_ptr<SceneGeometry>
-                             { return std::make_unique<Scene>(); });
+    return register_plugin<Scene>(scene_registry(), name);
   }
 
 
-
-  /** The registered scenes' names, sorted. */
-  std::vector<std::string>
-  scene_names();
-
-  /** Declare every registered scene's parameters (@p prm inside the
-   * subsection Scene). */
-  void
-  declare_scene_parameters(ParameterHandler &prm);
 
   /** The scene called @p name with its parameters from @p prm (inside the
    * subsection Scene). */

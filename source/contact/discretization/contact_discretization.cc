@@ -1,12 +1,20 @@
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/mortar_discretization.h>
-#include <tribos/contact/node_to_segment_discretization.h>
-#include <tribos/contact/rigid_surface_discretization.h>
-#include <tribos/contact/smoothed_node_to_face_discretization.h>
-#include <tribos/contact/smoothed_node_to_segment_discretization.h>
+#include <tribos/contact/discretization/contact_discretization.h>
+#include <tribos/contact/discretization/discretization_method.h>
 
 namespace tribos
 {
+  Registry<DiscretizationMethod> &
+  discretization_registry()
+  {
+    // Constructed on first use: the discretizations' files register during
+    // static initialization, in no defined order.
+    static Registry<DiscretizationMethod> discretizations("discretization");
+    return discretizations;
+  }
+
+
+
   template <int dim>
   void
   ContactDiscretization<dim>::stencil(const ContactPair<dim> &,
@@ -108,36 +116,8 @@ namespace tribos
                         const Parameters::Contact     &parameters,
                         const bool                     axisymmetric)
   {
-    if (!description.rigid_surface.empty())
-      return std::make_unique<RigidSurfaceDiscretization<dim>>(parameters);
-    const bool smoothed =
-      parameters.smoothing != Parameters::MasterSmoothing::none;
-    // The mortar's smoothed master normals exist in 2D.
-    AssertThrow(!smoothed || dim == 2 ||
-                  description.discretization !=
-                    Parameters::Discretization::mortar,
-                ExcMessage("Contact pair <" + description.text +
-                           ">: Contact/Master smoothing = averaged normals "
-                           "with Discretization = mortar is available in "
-                           "Dimension = 2 only (3D mortar integrates over "
-                           "the faces with the slave's averaged normals); "
-                           "allowed in 3D: node to segment, or Master "
-                           "smoothing = none."));
-    if (description.discretization == Parameters::Discretization::mortar)
-      return std::make_unique<MortarDiscretization<dim>>(
-        parameters,
-        parameters.mortar_basis == Parameters::MortarBasis::dual,
-        smoothed && dim == 2,
-        axisymmetric);
-    if (smoothed)
-    {
-      if constexpr (dim == 2)
-        return std::make_unique<SmoothedNodeToSegmentDiscretization>(
-          parameters);
-      else
-        return std::make_unique<SmoothedNodeToFaceDiscretization>(parameters);
-    }
-    return std::make_unique<NodeToSegmentDiscretization<dim>>(parameters);
+    return parameters.discretization_method(description.discretization)
+      ->template create<dim>(description, parameters, axisymmetric);
   }
 
 

@@ -1,6 +1,6 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/mortar_discretization.h>
+#include <tribos/contact/discretization/mortar_discretization.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/mortar_discretization.h>
+#include <tribos/contact/discretization/mortar_discretization.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,9 @@
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/node_to_segment_discretization.h>
+#include <tribos/contact/discretization/discretization_method.h>
+#include <tribos/contact/discretization/node_to_segment_discretization.h>
+#include <tribos/contact/discretization/rigid_surface_discretization.h>
+#include <tribos/contact/discretization/smoothed_node_to_face_discretization.h>
+#include <tribos/contact/discretization/smoothed_node_to_segment_discretization.h>
 
 #include <cmath>
 #include <limits>
@@ -183,4 +187,54 @@ namespace tribos
 
   template class NodeToSegmentDiscretization<2>;
   template class NodeToSegmentDiscretization<3>;
+
+
+
+  namespace
+  {
+    /**
+     * Contact/Discretization = node to segment, with its variants: a rigid
+     * master is met node to rigid surface (every rigid pair is this
+     * family's, whatever the default), Contact/Master smoothing = averaged
+     * normals gives the smoothed master (segments in 2D, faces in 3D).
+     */
+    class NodeToSegmentMethod
+      : public DiscretizationInBothDimensions<NodeToSegmentMethod>
+    {
+    public:
+      bool
+      handles_rigid_master() const override
+      {
+        return true;
+      }
+
+      template <int dim>
+      std::unique_ptr<ContactDiscretization<dim>>
+      make(const Parameters::ContactPair &pair,
+           const Parameters::Contact     &parameters,
+           const bool /*axisymmetric*/) const
+      {
+        if (!pair.rigid_surface.empty())
+          return std::make_unique<RigidSurfaceDiscretization<dim>>(parameters);
+        if (parameters.smoothing != Parameters::MasterSmoothing::none)
+        {
+          if constexpr (dim == 2)
+            return std::make_unique<SmoothedNodeToSegmentDiscretization>(
+              parameters);
+          else
+            return std::make_unique<SmoothedNodeToFaceDiscretization>(
+              parameters);
+        }
+        return std::make_unique<NodeToSegmentDiscretization<dim>>(parameters);
+      }
+    };
+
+    // Rank 0: the first of Contact/Discretization's choices, and the
+    // default of a pair without one.
+    const DiscretizationRegistration node_to_segment_registration =
+      register_discretization<NodeToSegmentMethod>(
+        "node to segment",
+        "each slave node is projected onto the master (the paper's)",
+        0);
+  } // namespace
 } // namespace tribos

@@ -1,5 +1,5 @@
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/rigid_surface_discretization.h>
+#include <tribos/contact/discretization/rigid_surface_discretization.h>
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/smoothed_node_to_face_discretization.h>
+#include <tribos/contact/discretization/smoothed_node_to_face_discretization.h>
 
 #include <algorithm>
 #include <cmath>

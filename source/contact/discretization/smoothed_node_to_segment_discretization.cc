@@ -1,6 +1,6 @@
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/smoothed_node_to_segment_discretization.h>
-#include <tribos/contact/smoothed_segment.h>
+#include <tribos/contact/discretization/smoothed_node_to_segment_discretization.h>
+#include <tribos/contact/surface/smoothed_segment.h>
 
 #include <cmath>
 #include <limits>

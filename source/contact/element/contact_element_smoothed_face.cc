@@ -1,4 +1,4 @@
-#include <tribos/contact/contact_element.h>
+#include <tribos/contact/element/contact_element.h>
 
 namespace tribos
 {

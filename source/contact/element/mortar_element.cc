@@ -1,6 +1,6 @@
 #include <tribos/base/exceptions.h>
-#include <tribos/contact/mortar_integrals.h>
-#include <tribos/contact/smoothed_segment.h>
+#include <tribos/contact/element/mortar_integrals.h>
+#include <tribos/contact/surface/smoothed_segment.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #include <tribos/base/exceptions.h>
-#include <tribos/contact/mortar_integrals.h>
+#include <tribos/contact/element/mortar_integrals.h>
 
 #include <algorithm>
 #include <cmath>
@@ -515,7 +515,7 @@ namespace tribos
         // alpha: the biquadratic vertex functions integrate to only A/36
         // (the centre's 4A/9), and the vertices' multipliers, divided by so
         // little, scatter on distorted faces (the 3D press fit of
-        // tests/curved_meshes.py: 8.2 % RMS at the vertices, 2.6 % with
+        // tests/verification/curved_meshes.py: 8.2 % RMS at the vertices, 2.6 % with
         // this basis, whose integrals are 9A/100 at the vertices, 3A/25 at
         // the edge middles and 4A/25 at the centre of a flat face of area
         // A).

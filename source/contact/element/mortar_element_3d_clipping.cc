@@ -2,7 +2,7 @@
 // clipping, polygon areas and the overlap test in a slave face's auxiliary
 // plane, shared by the element and the mortar search.
 
-#include <tribos/contact/mortar_element_3d.h>
+#include <tribos/contact/element/mortar_element_3d.h>
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include <tribos/contact/mortar_element.h>
+#include <tribos/contact/element/mortar_element.h>
 
 #include <algorithm>
 #include <cmath>

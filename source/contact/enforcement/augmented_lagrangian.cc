@@ -1,5 +1,6 @@
-#include <tribos/contact/augmented_lagrangian.h>
 #include <tribos/contact/contact_pair.h>
+#include <tribos/contact/enforcement/augmented_lagrangian.h>
+#include <tribos/contact/enforcement/enforcement_method.h>
 
 #include <cmath>
 
@@ -42,4 +43,33 @@ namespace tribos
 
   template class AugmentedLagrangian<2>;
   template class AugmentedLagrangian<3>;
+
+
+
+  namespace
+  {
+    /** Contact/Method = augmented lagrangian. */
+    class AugmentedLagrangianMethod
+      : public EnforcementInBothDimensions<AugmentedLagrangianMethod>
+    {
+    public:
+      template <int dim>
+      std::shared_ptr<const Enforcement<dim>>
+      make(const Parameters::Contact &) const
+      {
+        return std::make_shared<AugmentedLagrangian<dim>>();
+      }
+    };
+
+    // Rank 2 keeps Contact/Method's choices in their order; documented
+    // second, next to the penalty law it augments.
+    const EnforcementRegistration augmented_lagrangian_registration =
+      register_enforcement<AugmentedLagrangianMethod>(
+        "augmented lagrangian",
+        "t_N = <lambda - eps_N g_N> with the multiplier lambda of each slave "
+        "node updated (Uzawa) until the penetration is below Augmentation "
+        "tolerance",
+        2,
+        1);
+  } // namespace
 } // namespace tribos

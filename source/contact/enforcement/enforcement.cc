@@ -1,33 +1,30 @@
-#include <tribos/contact/augmented_lagrangian.h>
-#include <tribos/contact/lagrange_multiplier.h>
-#include <tribos/contact/penalty.h>
+#include <tribos/contact/enforcement/enforcement.h>
+#include <tribos/contact/enforcement/enforcement_method.h>
 
 namespace tribos
 {
+  Registry<EnforcementMethod> &
+  enforcement_registry()
+  {
+    // Constructed on first use: the methods' files register during static
+    // initialization, in no defined order.
+    static Registry<EnforcementMethod> methods("enforcement method");
+    return methods;
+  }
+
+
+
   template <int dim>
   std::shared_ptr<const Enforcement<dim>>
-  create_enforcement(const Parameters::EnforcementMethod method,
-                     const Parameters::Contact          &parameters)
+  create_enforcement(const std::string         &method,
+                     const Parameters::Contact &parameters)
   {
-    switch (method)
-    {
-      case Parameters::EnforcementMethod::penalty:
-        if (parameters.penalty_formulation ==
-            Parameters::PenaltyFormulation::mixed)
-          return std::make_shared<LagrangeMultiplier<dim>>(parameters, true);
-        return std::make_shared<Penalty<dim>>();
-      case Parameters::EnforcementMethod::augmented_lagrangian:
-        return std::make_shared<AugmentedLagrangian<dim>>();
-      case Parameters::EnforcementMethod::lagrange_multiplier:
-        return std::make_shared<LagrangeMultiplier<dim>>(parameters);
-    }
-    return nullptr;
+    return parameters.enforcement_method(method)->template create<dim>(
+      parameters);
   }
 
   template std::shared_ptr<const Enforcement<2>>
-  create_enforcement(const Parameters::EnforcementMethod,
-                     const Parameters::Contact &);
+  create_enforcement(const std::string &, const Parameters::Contact &);
   template std::shared_ptr<const Enforcement<3>>
-  create_enforcement(const Parameters::EnforcementMethod,
-                     const Parameters::Contact &);
+  create_enforcement(const std::string &, const Parameters::Contact &);
 } // namespace tribos

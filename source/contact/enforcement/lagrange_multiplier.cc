@@ -1,5 +1,6 @@
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/lagrange_multiplier.h>
+#include <tribos/contact/enforcement/enforcement_method.h>
+#include <tribos/contact/enforcement/lagrange_multiplier.h>
 
 #include <cmath>
 #include <map>
@@ -285,4 +286,41 @@ namespace tribos
 
   template class LagrangeMultiplier<2>;
   template class LagrangeMultiplier<3>;
+
+
+
+  namespace
+  {
+    /** Contact/Method = lagrange multiplier: exact contact. */
+    class LagrangeMultiplierMethod
+      : public EnforcementInBothDimensions<LagrangeMultiplierMethod>
+    {
+    public:
+      bool
+      constrains_gap_exactly() const override
+      {
+        return true;
+      }
+
+      template <int dim>
+      std::shared_ptr<const Enforcement<dim>>
+      make(const Parameters::Contact &parameters) const
+      {
+        return std::make_shared<LagrangeMultiplier<dim>>(parameters);
+      }
+    };
+
+    // Rank 1 keeps Contact/Method's choices in their order; documented
+    // last, after the two penalty laws its complementarity refers to.
+    const EnforcementRegistration lagrange_multiplier_registration =
+      register_enforcement<LagrangeMultiplierMethod>(
+        "lagrange multiplier",
+        "exact contact, the traction of every slave node is an unknown of "
+        "the system (saddle point; direct or, the multipliers eliminated, "
+        "iterative solves, on any number of MPI processes); the active set "
+        "and stick/slip follow from lambda - eps_N g_N inside Newton, so "
+        "eps_N then only affects the iterates",
+        1,
+        2);
+  } // namespace
 } // namespace tribos

@@ -1,5 +1,7 @@
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/penalty.h>
+#include <tribos/contact/enforcement/enforcement_method.h>
+#include <tribos/contact/enforcement/lagrange_multiplier.h>
+#include <tribos/contact/enforcement/penalty.h>
 
 #include <cmath>
 
@@ -79,4 +81,33 @@ namespace tribos
 
   template class Penalty<2>;
   template class Penalty<3>;
+
+
+
+  namespace
+  {
+    /**
+     * Contact/Method = penalty. Contact/Penalty formulation chooses how the
+     * law is solved: primal, Penalty; mixed, the same law with the
+     * tractions as unknowns (LagrangeMultiplier in its regularized form),
+     * which has the same solution.
+     */
+    class PenaltyMethod : public EnforcementInBothDimensions<PenaltyMethod>
+    {
+    public:
+      template <int dim>
+      std::shared_ptr<const Enforcement<dim>>
+      make(const Parameters::Contact &parameters) const
+      {
+        if (parameters.penalty_formulation ==
+            Parameters::PenaltyFormulation::mixed)
+          return std::make_shared<LagrangeMultiplier<dim>>(parameters, true);
+        return std::make_shared<Penalty<dim>>();
+      }
+    };
+
+    // Rank 0: the first of Contact/Method's choices.
+    const EnforcementRegistration penalty_registration =
+      register_enforcement<PenaltyMethod>("penalty", "t_N = eps_N <-g_N>", 0);
+  } // namespace
 } // namespace tribos

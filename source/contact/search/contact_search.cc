@@ -1,4 +1,4 @@
-#include <tribos/contact/contact_search.h>
+#include <tribos/contact/search/contact_search.h>
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>

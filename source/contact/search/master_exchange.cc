@@ -1,4 +1,4 @@
-#include <tribos/contact/master_exchange.h>
+#include <tribos/contact/search/master_exchange.h>
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 #include <tribos/base/timing.h>
-#include <tribos/contact/master_exchange.h>
-#include <tribos/contact/pairing.h>
+#include <tribos/contact/search/master_exchange.h>
+#include <tribos/contact/search/pairing.h>
 
 #include <chrono>
 

@@ -1,5 +1,5 @@
 #include <tribos/base/exceptions.h>
-#include <tribos/contact/chattering_monitor.h>
+#include <tribos/contact/state/chattering_monitor.h>
 
 #include <algorithm>
 #include <limits>

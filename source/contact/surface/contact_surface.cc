@@ -1,4 +1,4 @@
-#include <tribos/contact/contact_surface.h>
+#include <tribos/contact/surface/contact_surface.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

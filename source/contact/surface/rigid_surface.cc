@@ -1,4 +1,4 @@
-#include <tribos/contact/rigid_surface.h>
+#include <tribos/contact/surface/rigid_surface.h>
 
 #include <deal.II/lac/vector.h>
 

@@ -1,7 +1,7 @@
 #ifndef tribos_contact_contact_discretization_h
 #define tribos_contact_contact_discretization_h
 
-#include <tribos/contact/contact_element.h>
+#include <tribos/contact/element/contact_element.h>
 #include <tribos/parameters/contact.h>
 
 #include <deal.II/base/types.h>
@@ -49,10 +49,11 @@ namespace tribos
    * nodes with master points, the couplings its elements need in the
    * sparsity pattern, and the element of a slave node (its kinematics,
    * from which the pair's Enforcement makes forces and rows). One object
-   * per pair, chosen once from the parameters by create_discretization(),
-   * the only place that reads Contact/Discretization, Master smoothing and
-   * Mortar basis. Each implementation owns the state that only it needs
-   * (the mortar element's master faces per node, the overlap cache).
+   * per pair, made once by the pair's registered DiscretizationMethod
+   * (discretization_method.h), which reads its own parameters (Mortar
+   * basis) and chooses among its variants (rigid or smoothed master).
+   * Each implementation owns the state that only it needs (the mortar
+   * element's master faces per node, the overlap cache).
    *
    * The search is independent of the enforcement (the paper, section 1),
    * and the enforcement of the discretization: Penalty, LagrangeMultiplier
@@ -65,7 +66,8 @@ namespace tribos
    * masters) and MortarDiscretization (2D Q1/Q2 segments, 3D bilinear
    * faces, dual or standard basis). To add one (triangle faces, say):
    * derive from this class, implement the search and the element, and
-   * return it from create_discretization() (contact_discretization.cc).
+   * register a DiscretizationMethod that makes it in the same source file
+   * (the end of node_to_segment_discretization.cc is the example).
    */
   template <int dim>
   class ContactDiscretization
@@ -222,7 +224,7 @@ namespace tribos
   /**
    * The discretization of the pair described by @p description with the
    * contact @p parameters (@p axisymmetric: the model is a body of
-   * revolution).
+   * revolution): its registered discretization's (discretization_method.h).
    */
   template <int dim>
   std::unique_ptr<ContactDiscretization<dim>>

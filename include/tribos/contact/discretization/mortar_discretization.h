@@ -1,9 +1,9 @@
 #ifndef tribos_contact_mortar_discretization_h
 #define tribos_contact_mortar_discretization_h
 
-#include <tribos/contact/contact_discretization.h>
-#include <tribos/contact/mortar_element.h>
-#include <tribos/contact/mortar_element_3d.h>
+#include <tribos/contact/discretization/contact_discretization.h>
+#include <tribos/contact/element/mortar_element.h>
+#include <tribos/contact/element/mortar_element_3d.h>
 #include <tribos/parameters/contact.h>
 
 #include <string>

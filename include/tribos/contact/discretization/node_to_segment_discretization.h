@@ -1,7 +1,7 @@
 #ifndef tribos_contact_node_to_segment_discretization_h
 #define tribos_contact_node_to_segment_discretization_h
 
-#include <tribos/contact/contact_discretization.h>
+#include <tribos/contact/discretization/contact_discretization.h>
 #include <tribos/parameters/contact.h>
 
 #include <string>

@@ -1,7 +1,7 @@
 #ifndef tribos_contact_smoothed_node_to_segment_discretization_h
 #define tribos_contact_smoothed_node_to_segment_discretization_h
 
-#include <tribos/contact/node_to_segment_discretization.h>
+#include <tribos/contact/discretization/node_to_segment_discretization.h>
 
 namespace tribos
 {

@@ -1,7 +1,7 @@
 #ifndef tribos_contact_contact_ad_h
 #define tribos_contact_contact_ad_h
 
-#include <tribos/contact/vec3.h>
+#include <tribos/contact/surface/vec3.h>
 
 #include <Sacado.hpp>
 

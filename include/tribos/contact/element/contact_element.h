@@ -1,12 +1,12 @@
 #ifndef tribos_contact_contact_element_h
 #define tribos_contact_contact_element_h
 
-#include <tribos/contact/enforcement.h>
-#include <tribos/contact/master_face.h>
-#include <tribos/contact/node_state.h>
-#include <tribos/contact/rigid_surface.h>
-#include <tribos/contact/smoothed_face.h>
-#include <tribos/contact/smoothed_segment.h>
+#include <tribos/contact/enforcement/enforcement.h>
+#include <tribos/contact/surface/master_face.h>
+#include <tribos/contact/state/node_state.h>
+#include <tribos/contact/surface/rigid_surface.h>
+#include <tribos/contact/surface/smoothed_face.h>
+#include <tribos/contact/surface/smoothed_segment.h>
 
 namespace tribos
 {

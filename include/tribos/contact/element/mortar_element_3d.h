@@ -1,7 +1,7 @@
 #ifndef tribos_contact_mortar_element_3d_h
 #define tribos_contact_mortar_element_3d_h
 
-#include <tribos/contact/contact_element.h>
+#include <tribos/contact/element/contact_element.h>
 
 #include <deal.II/base/types.h>
 

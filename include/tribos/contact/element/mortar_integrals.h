@@ -1,8 +1,8 @@
 #ifndef tribos_contact_mortar_integrals_h
 #define tribos_contact_mortar_integrals_h
 
-#include <tribos/contact/mortar_element.h>
-#include <tribos/contact/mortar_element_3d.h>
+#include <tribos/contact/element/mortar_element.h>
+#include <tribos/contact/element/mortar_element_3d.h>
 
 #include <type_traits>
 

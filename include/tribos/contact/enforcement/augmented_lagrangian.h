@@ -1,7 +1,7 @@
 #ifndef tribos_contact_augmented_lagrangian_h
 #define tribos_contact_augmented_lagrangian_h
 
-#include <tribos/contact/penalty.h>
+#include <tribos/contact/enforcement/penalty.h>
 
 namespace tribos
 {
@@ -16,12 +16,6 @@ namespace tribos
   class AugmentedLagrangian : public Penalty<dim>
   {
   public:
-    Parameters::EnforcementMethod
-    method() const override
-    {
-      return Parameters::EnforcementMethod::augmented_lagrangian;
-    }
-
     ContactLaw
     law(const ContactPair<dim>          &pair,
         const unsigned int               k,

@@ -1,8 +1,8 @@
 #ifndef tribos_contact_enforcement_h
 #define tribos_contact_enforcement_h
 
-#include <tribos/contact/contact_ad.h>
-#include <tribos/contact/node_state.h>
+#include <tribos/contact/element/contact_ad.h>
+#include <tribos/contact/state/node_state.h>
 #include <tribos/parameters/contact.h>
 
 #include <deal.II/base/types.h>
@@ -29,8 +29,11 @@ namespace tribos
    * tangent, the unknowns it adds and its outer update.
    *
    * To add a method: derive from this class (penalty.h is the smallest
-   * example), implement law() and local_law(), and register it in
-   * create_enforcement() (enforcement.cc) and in Contact/Method.
+   * example), implement law(), local_law() and uses_normal_penalty(), and
+   * register it in the same source file: an EnforcementMethod that makes
+   * it and an EnforcementRegistration (enforcement_method.h; the end of
+   * penalty.cc is the example). Contact/Method, the pairs' method= and
+   * their messages list it by themselves.
    */
   template <int dim>
   class Enforcement
@@ -38,9 +41,13 @@ namespace tribos
   public:
     virtual ~Enforcement() = default;
 
-    /** The method, as in the parameter file. */
-    virtual Parameters::EnforcementMethod
-    method() const = 0;
+    /**
+     * Whether the normal penalty eps_N of the pair enters the law (the log
+     * then reports its range over the slave nodes; exact multipliers have
+     * none).
+     */
+    virtual bool
+    uses_normal_penalty() const = 0;
 
     /** Unknowns of the system the method adds per slave node: dim (a
      * traction vector) or none. */
@@ -131,11 +138,15 @@ namespace tribos
 
 
 
-  /** The enforcement of @p method with the pair-independent @p parameters. */
+  /**
+   * The enforcement of the method called @p method (Contact/Method, a
+   * pair's method=) with the pair-independent @p parameters: the
+   * registered method's own (enforcement_method.h).
+   */
   template <int dim>
   std::shared_ptr<const Enforcement<dim>>
-  create_enforcement(const Parameters::EnforcementMethod method,
-                     const Parameters::Contact          &parameters);
+  create_enforcement(const std::string         &method,
+                     const Parameters::Contact &parameters);
 } // namespace tribos
 
 #endif

@@ -1,7 +1,7 @@
 #ifndef tribos_contact_lagrange_multiplier_h
 #define tribos_contact_lagrange_multiplier_h
 
-#include <tribos/contact/enforcement.h>
+#include <tribos/contact/enforcement/enforcement.h>
 
 namespace tribos
 {
@@ -27,11 +27,11 @@ namespace tribos
     explicit LagrangeMultiplier(const Parameters::Contact &parameters,
                                 const bool                 regularized = false);
 
-    Parameters::EnforcementMethod
-    method() const override
+    /** Only in the penalty law's mixed form. */
+    bool
+    uses_normal_penalty() const override
     {
-      return regularized ? Parameters::EnforcementMethod::penalty :
-                           Parameters::EnforcementMethod::lagrange_multiplier;
+      return regularized;
     }
 
     unsigned int

@@ -1,7 +1,7 @@
 #ifndef tribos_contact_penalty_h
 #define tribos_contact_penalty_h
 
-#include <tribos/contact/enforcement.h>
+#include <tribos/contact/enforcement/enforcement.h>
 
 namespace tribos
 {
@@ -15,10 +15,10 @@ namespace tribos
   class Penalty : public Enforcement<dim>
   {
   public:
-    Parameters::EnforcementMethod
-    method() const override
+    bool
+    uses_normal_penalty() const override
     {
-      return Parameters::EnforcementMethod::penalty;
+      return true;
     }
 
     ContactLaw

@@ -1,7 +1,7 @@
 #ifndef tribos_contact_contact_search_h
 #define tribos_contact_contact_search_h
 
-#include <tribos/contact/contact_surface.h>
+#include <tribos/contact/surface/contact_surface.h>
 
 #include <memory>
 #include <vector>

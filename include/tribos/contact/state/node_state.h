@@ -1,8 +1,8 @@
 #ifndef tribos_contact_node_state_h
 #define tribos_contact_node_state_h
 
-#include <tribos/contact/master_face.h>
-#include <tribos/contact/vec3.h>
+#include <tribos/contact/surface/master_face.h>
+#include <tribos/contact/surface/vec3.h>
 
 #include <limits>
 

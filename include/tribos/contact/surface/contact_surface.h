@@ -1,8 +1,8 @@
 #ifndef tribos_contact_contact_surface_h
 #define tribos_contact_contact_surface_h
 
-#include <tribos/contact/master_face.h>
-#include <tribos/contact/vec3.h>
+#include <tribos/contact/surface/master_face.h>
+#include <tribos/contact/surface/vec3.h>
 
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>

@@ -1,7 +1,7 @@
 #ifndef tribos_contact_master_face_h
 #define tribos_contact_master_face_h
 
-#include <tribos/contact/vec3.h>
+#include <tribos/contact/surface/vec3.h>
 
 #include <algorithm>
 #include <cmath>

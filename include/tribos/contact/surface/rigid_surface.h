@@ -1,7 +1,7 @@
 #ifndef tribos_contact_rigid_surface_h
 #define tribos_contact_rigid_surface_h
 
-#include <tribos/contact/vec3.h>
+#include <tribos/contact/surface/vec3.h>
 #include <tribos/parameters/contact.h>
 
 #include <deal.II/base/function_parser.h>

@@ -1,8 +1,8 @@
 #ifndef tribos_contact_smoothed_face_h
 #define tribos_contact_smoothed_face_h
 
-#include <tribos/contact/master_face.h>
-#include <tribos/contact/vec3.h>
+#include <tribos/contact/surface/master_face.h>
+#include <tribos/contact/surface/vec3.h>
 
 #include <algorithm>
 #include <cmath>
