@@ -9,10 +9,10 @@ medians of the wall time and of summary.txt's sections.
         [--out doc/data/curved_cost.csv]
 
 Cases: the load-controlled Hertz 3D of parameters/hertz_3d_load.prm on
-tests/hertz_3d_tet.msh and tests/hertz_3d_tet10.msh (P2, Lagrange
+tests/data/hertz_3d_tet.msh and tests/data/hertz_3d_tet10.msh (P2, Lagrange
 multipliers, VTU written), and the Hertz 2D of
-benchmarks/peers/hertz_2d_load.prm on tests/hertz_2d_tri.msh and
-tests/hertz_2d_tri6.msh. Columns: case, geometry, runs, wall, assembly,
+benchmarks/peers/hertz_2d_load.prm on tests/data/hertz_2d_tri.msh and
+tests/data/hertz_2d_tri6.msh. Columns: case, geometry, runs, wall, assembly,
 setup, output, linear_solve (medians, s)."""
 
 import argparse
@@ -23,7 +23,7 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TESTS = os.path.join(ROOT, "tests")
+TESTS = os.path.join(ROOT, "tests", "data")
 SETS = ["Finite element/Polynomial degree=2",
         "Contact/Method=lagrange multiplier", "Output/Write VTU=true"]
 CASES = {

@@ -30,7 +30,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-import analytic  # noqa: E402
+from tribos_testing import analytic  # noqa: E402
 
 TRIBOS = os.path.join(ROOT, "build", "tribos")
 DATA = os.path.join(ROOT, "doc", "data")

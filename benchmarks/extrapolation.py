@@ -23,7 +23,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from tribos_test import sphere_on_block  # noqa: E402
+from tribos_testing import sphere_on_block  # noqa: E402
 
 # name: (parameter file, overrides)
 CASES = {
@@ -41,11 +41,11 @@ CASES = {
     "stick_slip_cycles": ("parameters/stick_slip_cycles.prm", []),
     "slide_off_edge": ("parameters/slide_off_edge.prm", []),
     "force_control_apart": ("parameters/force_control_apart.prm", []),
-    "ironing_2d": ("tests/ironing_2d.prm", []),
-    "ironing_2d_frictionless": ("tests/ironing_2d.prm",
+    "ironing_2d": ("tests/data/ironing_2d.prm", []),
+    "ironing_2d_frictionless": ("tests/data/ironing_2d.prm",
                                 ["Contact/Friction coefficient=0"]),
-    "sliding_blocks_3d": ("tests/sliding_blocks_3d.prm", []),
-    "cattaneo_mindlin": ("tests/cattaneo_mindlin.prm", []),
+    "sliding_blocks_3d": ("tests/data/sliding_blocks_3d.prm", []),
+    "cattaneo_mindlin": ("tests/data/cattaneo_mindlin.prm", []),
     # The 3D mortar sphere on a block, level 3 (mortar_3d_hertz's largest).
     "sphere_on_block_mortar": ("parameters/hertz_3d.prm",
                                sphere_on_block(3, "mortar")),

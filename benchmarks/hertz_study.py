@@ -17,7 +17,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "tests"))
-from tribos_test import run, read_csv, hertz_compare  # noqa: E402
+from tribos_testing import run, read_csv, hertz_compare  # noqa: E402
 
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 tribos = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build",

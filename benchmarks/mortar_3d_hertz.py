@@ -3,7 +3,7 @@
 A quarter sphere (R = 1, parameters/hertz_3d.prm with With block = true)
 pressed 0.02 into a block of the same material (E* = E / (2 (1 - nu^2))),
 penalty 1000 E/h, Contact refinements 2 and 3 (--levels). The nodal
-pressures are fitted at their reference positions (tests/tribos_test.py,
+pressures are fitted at their reference positions (tests/tribos_testing/__init__.py,
 hertz_compare) and compared with Hertz for the run's own force. Writes
 doc/data/mortar_3d_hertz.csv (one run per row: level, discretization, dofs,
 Newton iterations, wall time, contact assembly time, errors of a, p0 and
@@ -23,7 +23,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from tribos_test import hertz_compare, sphere_on_block  # noqa: E402
+from tribos_testing import hertz_compare, sphere_on_block  # noqa: E402
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--tribos", default=os.path.join(ROOT, "build/tribos"))

@@ -4,7 +4,7 @@ and AMG at three mesh sizes (issue 18: "condensed system solved by
 AMG-preconditioned CG/GMRES on a 3D case of >= 1e5 dofs, with the
 iteration count reported at 3 mesh sizes").
 
-The 3D contact patch test (tests/patch_test_3d.prm: two stacked blocks,
+The 3D contact patch test (tests/data/patch_test_3d.prm: two stacked blocks,
 uniform pressure 0.01 E on the top, non-matching meshes 3 : 2, the upper
 block's bottom the slave) with mortar and dual Lagrange multipliers,
 Linear solver/Type = iterative (GMRES on the saddle-point system,
@@ -32,7 +32,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from tribos_test import read_csv  # noqa: E402
+from tribos_testing import read_csv  # noqa: E402
 
 # (lower, upper) subdivisions in x and y; z is half of them (blocks of
 # height 0.5).
@@ -59,7 +59,7 @@ def main():
             for ranks in (1, 2):
                 folder = os.path.join(scratch, "L%d_np%d" % (lower, ranks))
                 command = [args.tribos,
-                           os.path.join(ROOT, "tests", "patch_test_3d.prm")]
+                           os.path.join(ROOT, "tests", "data", "patch_test_3d.prm")]
                 for s in ("Output/Directory=" + folder,
                           "Scene/Two blocks/Lower subdivisions=%d, %d, %d"
                           % (lower, lower, lower // 2),

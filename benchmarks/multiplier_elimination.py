@@ -44,9 +44,9 @@ CASES = [
     ("upsetting_5_steps", ("parameters/upsetting.prm",
                            ["Time stepping/End time=5",
                             "Time stepping/Number of steps=5"])),
-    ("sliding_block_mu03", ("tests/sliding_block.prm", [])),
-    ("cattaneo_mindlin_mu03", ("tests/cattaneo_mindlin.prm", [])),
-    ("sliding_blocks_3d_mortar", ("tests/sliding_blocks_3d.prm",
+    ("sliding_block_mu03", ("tests/data/sliding_block.prm", [])),
+    ("cattaneo_mindlin_mu03", ("tests/data/cattaneo_mindlin.prm", [])),
+    ("sliding_blocks_3d_mortar", ("tests/data/sliding_blocks_3d.prm",
                                   ["Contact/Discretization=mortar"])),
 ]
 VARIANTS = [

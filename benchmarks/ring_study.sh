@@ -17,7 +17,7 @@ echo "variant,dofs,newton_iterations,cutbacks,wall_time,max_penetration,final_re
 # Q1 node to segment: three methods, the paper's mesh and refined once;
 # multipliers refined twice. Q2 mortar (quadratic dual basis): multipliers
 # and penalty on the paper's mesh and refined once (the multipliers refined
-# once are the reference of tests/ring_q2_mortar.py).
+# once are the reference of tests/verification/ring_q2_mortar.py).
 variants=()
 for refinement in 0 1 2; do
   for method in penalty "augmented lagrangian" "lagrange multiplier"; do

@@ -7,7 +7,7 @@ summary.txt and the wall clock, written to doc/data/scaling.csv.
 
 Cases (Parallel/Mesh = distributed unless the variant says shared):
 
-* speedup: frictional sliding of two blocks (tests/sliding_blocks_3d.prm,
+* speedup: frictional sliding of two blocks (tests/data/sliding_blocks_3d.prm,
   mu = 0.3, penalty, refined to 245k dofs, GMRES + ML; pressed in 8 steps,
   then slid by two elements in one), one process (which
   assembles with both cores' threads) and one process with one thread
@@ -54,9 +54,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "benchmarks"))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 from solver_speed import run_once, summary, with_earlier_rows  # noqa: E402
-from tribos_test import sphere_on_block  # noqa: E402
+from tribos_testing import sphere_on_block  # noqa: E402
 
-BLOCKS = "tests/sliding_blocks_3d.prm"
+BLOCKS = "tests/data/sliding_blocks_3d.prm"
 CYLINDER = "parameters/cylinder_compression.prm"
 
 

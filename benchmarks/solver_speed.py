@@ -23,11 +23,11 @@ Cases (all Release, one process, VTU off):
   upsetting   parameters/upsetting.prm, the first 5 of 25 steps (the whole
               stroke takes minutes; the per-iteration cost is the target)
   start       tribos --help, and parameters/patch_test-like small 2D scene
-              end to end (tests/sliding_block.prm); start_floor is
+              end to end (tests/data/sliding_block.prm); start_floor is
               benchmarks/startup_floor, a program linked as tribos is that
               returns at once (the loading of the shared libraries)
 The pressure error e_L2 is the relative L2 distance of the nodal CPRESS to
-Hertz's profile for the run's own contact force (tests/tribos_test.py,
+Hertz's profile for the run's own contact force (tests/tribos_testing/__init__.py,
 hertz_compare), with the nodes at their reference positions (Hertz's
 theory is geometrically linear); e_L2_deformed measures them where they
 are after the deformation."""
@@ -44,7 +44,7 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from tribos_test import hertz_compare  # noqa: E402
+from tribos_testing import hertz_compare  # noqa: E402
 
 E, NU, R = 1.0, 0.3, 1.0
 LAGRANGE = "Contact/Method=lagrange multiplier"
@@ -95,7 +95,7 @@ CASES = [
     ("upsetting_5_steps", ("parameters/upsetting.prm",
                            ["Time stepping/End time=5",
                             "Time stepping/Number of steps=5"]), None),
-    ("small_2d_scene", ("tests/sliding_block.prm", []), None),
+    ("small_2d_scene", ("tests/data/sliding_block.prm", []), None),
 ]
 
 SECTIONS = ["assembly", "contact assembly", "contact search",

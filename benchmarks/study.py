@@ -44,8 +44,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
-from analytic import cylinder_force, hertz, polygon_section  # noqa: E402
-from tribos_test import hertz_fit  # noqa: E402
+from tribos_testing.analytic import cylinder_force, hertz, polygon_section  # noqa: E402
+from tribos_testing import hertz_fit  # noqa: E402
 
 COLUMNS = ["scene", "variant", "method", "penalty_factor", "tangent", "level",
            "dofs", "contact_dofs", "multipliers", "load_steps", "increments",
@@ -324,7 +324,7 @@ def main():
 def mortar_study(go, work):
     """Node to segment against mortar (2D, deformable master): Hertz on an
     elastic block over three contact refinements (penalty 1000 E/h and
-    multipliers; against Hertz and against a reference two levels finer), the frictional ironing of tests/ironing_2d.prm (Newton
+    multipliers; against Hertz and against a reference two levels finer), the frictional ironing of tests/data/ironing_2d.prm (Newton
     iterations) and the contact patch test (pressure spread in error)."""
     E, nu = 1.0, 0.3
     hertz2 = "parameters/hertz_2d.prm"
@@ -378,7 +378,7 @@ def mortar_study(go, work):
                    factor=METHODS[m][1])
     for d in discretizations:
         for m in ("10E/h", "lagrange"):
-            go("mortar_ironing_2d", "%s %s" % (d, m), "tests/ironing_2d.prm",
+            go("mortar_ironing_2d", "%s %s" % (d, m), "tests/data/ironing_2d.prm",
                os.path.join(work, "mortar_ironing_%s_%s" % (d.split()[0], m)),
                method_sets(m) + ["Contact/Discretization=" + d],
                lambda f, h: {}, method=METHODS[m][0], factor=METHODS[m][1])
@@ -390,7 +390,7 @@ def mortar_study(go, work):
     for d in discretizations:
         for pair in ("12 : 3", "3 : 12"):
             go("mortar_patch", "%s slave %s" % (d, pair.split()[0]),
-               "tests/patch_test.prm",
+               "tests/data/patch_test.prm",
                os.path.join(work, "mortar_patch_%s_%s" % (d.split()[0],
                                                           pair[0])),
                method_sets("lagrange") + ["Contact/Discretization=" + d,

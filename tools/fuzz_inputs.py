@@ -42,9 +42,9 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SCENES = ["tests/neo_hookean_stretch.prm", "tests/sliding_block.prm",
-          "tests/sliding_blocks_3d.prm", "parameters/bar_impact.prm",
-          "tests/ring_2d.prm"]
+SCENES = ["tests/data/neo_hookean_stretch.prm", "tests/data/sliding_block.prm",
+          "tests/data/sliding_blocks_3d.prm", "parameters/bar_impact.prm",
+          "tests/data/ring_2d.prm"]
 # Keep every run short: few steps, no VTU.
 SHORT = ["Output/Write VTU=false"]
 VALUES = ["nan", "inf", "-inf", "0", "-1", "1e308", "-1e308", "1e-308", "",
@@ -93,7 +93,7 @@ def without_line(path, entry, target, repeat=None):
 def short_run(scene):
     """Overrides that keep a scene's run to a few seconds."""
     sets = list(SHORT)
-    steps = {"parameters/bar_impact.prm": 40, "tests/ring_2d.prm": 5}
+    steps = {"parameters/bar_impact.prm": 40, "tests/data/ring_2d.prm": 5}
     if scene in steps:
         sets.append("Time stepping/Number of steps=%d" % steps[scene])
     return sets
@@ -122,14 +122,14 @@ def classify(result, entry, folder, timed_out):
 
 # Mesh files to mutate (Dimension, file): first and second order, MSH 2.2
 # and (converted by gmsh where it is installed) 4.1.
-MESHES = [(2, "tests/two_squares.msh"), (2, "tests/square_tagged_sides.msh"),
-          (2, "tests/triangles.msh"), (2, "tests/inclined_square.msh"),
-          (2, "tests/quarter_disc_tri6.msh"),
-          (2, "tests/quarter_disc_quad8.msh"),
-          (2, "tests/quarter_disc_quad9.msh"),
-          (3, "tests/ball_octant_tet10.msh"),
-          (3, "tests/ball_octant_hex20.msh"),
-          (3, "tests/ball_octant_hex27.msh")]
+MESHES = [(2, "tests/data/two_squares.msh"), (2, "tests/data/square_tagged_sides.msh"),
+          (2, "tests/data/triangles.msh"), (2, "tests/data/inclined_square.msh"),
+          (2, "tests/data/quarter_disc_tri6.msh"),
+          (2, "tests/data/quarter_disc_quad8.msh"),
+          (2, "tests/data/quarter_disc_quad9.msh"),
+          (3, "tests/data/ball_octant_tet10.msh"),
+          (3, "tests/data/ball_octant_hex20.msh"),
+          (3, "tests/data/ball_octant_hex27.msh")]
 TOKENS = ["0", "-1", "1e18", "4294967296", "9223372036854775808", "nan",
           "inf", "1e999", "abc", "", "2.5", "99", "1 2", "$Nodes",
           "$EndElements", "3.0", "2147483648"]
@@ -189,7 +189,7 @@ def mesh_sources(work):
 
 def fuzz_meshes(tribos, n_cases, generator, timeout, counts, rows, work):
     """n_cases runs of the gmsh scene on mutated mesh files."""
-    prm = os.path.join(ROOT, "tests", "gmsh_import.prm")
+    prm = os.path.join(ROOT, "tests", "data", "gmsh_import.prm")
     sources = mesh_sources(work)
     for case in range(n_cases):
         dim, source = generator.choice(sources)

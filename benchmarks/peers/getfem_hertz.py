@@ -43,7 +43,7 @@ default line search and MUMPS, from u = 0 and zero multipliers, the whole
 load in one step, converged when GetFEM's residual (relative to its
 estimate of the external load) is below --rtol.
 
-Error: hertz_error.py, tribos's definition (tests/tribos_test.py): Hertz
+Error: hertz_error.py, tribos's definition (tests/tribos_testing/__init__.py): Hertz
 a and p0 from the contact force carried (sum of the multipliers, times
 the symmetry factor), nodal relative L2 error over the contact nodes at
 their current positions X + u. Also printed with the applied load.

@@ -6,9 +6,9 @@
 //   gmsh -2 -setnumber hf 0.00775 hertz_2d.geo -o hertz_2d_13k.msh  (13790 dofs)
 //   gmsh -2 -setnumber hf 0.00338 hertz_2d.geo -o hertz_2d_49k.msh  (49242 dofs)
 //   gmsh -2 -setnumber hf 0.0078 -setnumber quads 0 hertz_2d.geo \
-//        -o ../../tests/hertz_2d_tri.msh  (triangles, 3578 dofs)
+//        -o ../../tests/data/hertz_2d_tri.msh  (triangles, 3578 dofs)
 //   gmsh -2 -setnumber hf 0.0078 -setnumber quads 0 -setnumber order 2 \
-//        hertz_2d.geo -o ../../tests/hertz_2d_tri6.msh  (curved six-node
+//        hertz_2d.geo -o ../../tests/data/hertz_2d_tri6.msh  (curved six-node
 //        triangles, P2)
 //
 // (hf is the size before the final subdivision: the quadrilaterals along

@@ -4,7 +4,7 @@ produced it: it takes (r, pressure) samples, r the distance from the first
 contact point along the contact line (2D, r = |x|) or in the contact plane
 (3D, r = sqrt(x^2 + y^2)).
 
-Definition (the one tribos uses in tests/tribos_test.py, hertz_compare):
+Definition (the one tribos uses in tests/tribos_testing/__init__.py, hertz_compare):
 the Hertz a and p0 follow from the load P that the run's contact force
 carries (full model, i.e. times the symmetry factor), and
 

@@ -12,10 +12,10 @@ Cases: hertz_2d_13k and hertz_2d_49k (the same gmsh mesh for both codes),
 hertz_3d (tribos on parameters/hertz_3d_load.prm, its own hexahedral
 mesh; GetFEM on hertz_3d_20k.msh, first-order hexahedra, whose pressure
 error is the larger), hertz_3d_tet_p1 and hertz_3d_tet_p2 (issue 45:
-tests/hertz_3d_tet.msh for both codes, P1 and P2 tetrahedra; tribos with
+tests/data/hertz_3d_tet.msh for both codes, P1 and P2 tetrahedra; tribos with
 Lagrange multipliers), hertz_3d_tet10_p2 and hertz_2d_tri6_p2 (the same
-meshes of second order, curved: tests/hertz_3d_tet10.msh and
-tests/hertz_2d_tri6.msh; P2, tribos with multipliers, GetFEM's integral
+meshes of second order, curved: tests/data/hertz_3d_tet10.msh and
+tests/data/hertz_2d_tri6.msh; P2, tribos with multipliers, GetFEM's integral
 contact). Both: small strain, frictionless rigid plane,
 touching start, the whole load in one step, default Newton settings;
 GetFEM's augmented Lagrangian (getfem_hertz.py), tribos's default method
@@ -48,15 +48,15 @@ sys.path.insert(0, HERE)
 import hertz_error  # noqa: E402
 from peer_runs import mesh, summary_value  # noqa: E402
 
-# The tetrahedral mesh of tests/tet_contact.py (hertz_3d.geo with
+# The tetrahedral mesh of tests/verification/tet_contact.py (hertz_3d.geo with
 # -setnumber hex 0 -setnumber hf 0.15: fine zone a / 8), for both codes.
-TET_MESH = os.path.join(ROOT, "tests", "hertz_3d_tet.msh")
+TET_MESH = os.path.join(ROOT, "tests", "data", "hertz_3d_tet.msh")
 TET_SETS = ["Scene/Name=gmsh", "Scene/Mesh file=" + TET_MESH,
             "Contact/Method=lagrange multiplier"]
 # The same meshes of second order (-setnumber order 2): curved tet10 and
 # tri6, both codes on their curved geometry.
-TET10_MESH = os.path.join(ROOT, "tests", "hertz_3d_tet10.msh")
-TRI6_MESH = os.path.join(ROOT, "tests", "hertz_2d_tri6.msh")
+TET10_MESH = os.path.join(ROOT, "tests", "data", "hertz_3d_tet10.msh")
+TRI6_MESH = os.path.join(ROOT, "tests", "data", "hertz_2d_tri6.msh")
 P2_SETS = ["Finite element/Polynomial degree=2",
            "Contact/Method=lagrange multiplier"]
 

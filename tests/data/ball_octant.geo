@@ -1,4 +1,4 @@
-// The octant x, y, z >= 0 of the unit ball, for tests/curved_meshes.py:
+// The octant x, y, z >= 0 of the unit ball, for tests/verification/curved_meshes.py:
 // second-order (curved) cells of each kind gmsh makes in 3D.
 //
 //   gmsh -3 ball_octant.geo -setnumber hex 0 -o ball_octant_tet10.msh

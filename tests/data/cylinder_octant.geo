@@ -1,7 +1,7 @@
 // The paper's cylinder (radius 6.35 mm, height 2 r) as its 1/8 model x, y,
 // z >= 0 (axis z), meshed with second-order (curved) tetrahedra or
 // hexahedra (each tetrahedron split into four), for
-// tests/curved_meshes.py:
+// tests/verification/curved_meshes.py:
 //
 //   gmsh -3 cylinder_octant.geo -o cylinder_octant_tet10.msh
 //   gmsh -3 cylinder_octant.geo -setnumber hex 1 -setnumber h 6.35 \

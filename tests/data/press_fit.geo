@@ -1,4 +1,4 @@
-// A press fit for tests/curved_meshes.py: two rings in contact on the
+// A press fit for tests/verification/curved_meshes.py: two rings in contact on the
 // circle r = b, the inner one (a to b) loaded by a pressure on r = a, the
 // outer one (b to c) free outside; the quarter x, y >= 0, each ring meshed
 // on its own (non-matching on r = b: 14 and 9 segments before gmsh's

@@ -1,4 +1,4 @@
-// A 3D press fit for tests/curved_meshes.py: two spherical shells in contact on
+// A 3D press fit for tests/verification/curved_meshes.py: two spherical shells in contact on
 // the sphere r = b, the inner one (a to b) loaded by a pressure on r = a,
 // the outer one (b to c) free outside; the octant x, y, z >= 0, each shell
 // meshed on its own (non-matching on r = b), tetrahedra split into

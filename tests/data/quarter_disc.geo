@@ -1,4 +1,4 @@
-// The quarter x, y >= 0 of the unit disc, for tests/curved_meshes.py:
+// The quarter x, y >= 0 of the unit disc, for tests/verification/curved_meshes.py:
 // second-order (curved) cells of each kind gmsh makes in 2D.
 //
 //   gmsh -2 quarter_disc.geo -setnumber quads 0 -o quarter_disc_tri6.msh

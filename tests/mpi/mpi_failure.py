@@ -13,12 +13,13 @@ cut increments under MPI still started from another state than the serial
 ones: the interrupted assembly had left entries for other processes in the
 Trilinos vectors, and the next assembly and the next Newton update took
 them in (np 2 cut back 3 times where the serial run cut twice)."""
+# ctest: mpirun
 
 import os
 import re
 import sys
 
-from tribos_test import (setup, run, run_or_hang, check, finish,
+from tribos_testing import (require_mpi, setup, run, run_or_hang, check, finish,
                          mpi_available, strip_columns, numdiff)
 
 tribos, tests, out = setup(sys.argv)
@@ -42,9 +43,7 @@ def status(folder):
     return re.sub(r"det F = \S+", "det F = ...", line)
 
 
-if not mpi_available():
-    print("mpirun not found: skipped")
-    sys.exit(0)
+require_mpi()
 
 serial = run_failing(out + "/serial", 0)
 check(serial.returncode == 2 and "det F" in status(out + "/serial"),

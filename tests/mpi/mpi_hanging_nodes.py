@@ -2,7 +2,7 @@
 the contact surface: `mpirun -np 2, 3, 4` give the serial nodal pressures,
 positions and history to 1e-9 relative.
 
-The 3D patch test (tests/patch_test_3d.prm: symmetry on x = 0, y = 0,
+The 3D patch test (tests/data/patch_test_3d.prm: symmetry on x = 0, y = 0,
 z = 0, a uniform pressure on the top) with the upper block's first column
 of cells refined once (Scene/Two blocks/Refinement box): its refinement
 border has hanging nodes on the slave surface, on the loaded top and on
@@ -17,10 +17,11 @@ with penalty and mortar with dual multipliers (the hanging node's
 multiplier function carried by its parents, whose values it reports:
 with -np 3 some of them belong to another process). Every slave node is
 closed."""
+# ctest: mpirun
 
 import sys
 
-from tribos_test import (setup, run, read_csv, check, finish, mpi_available,
+from tribos_testing import (require_mpi, setup, run, read_csv, check, finish, mpi_available,
                          strip_columns, numdiff)
 
 tribos, tests, out = setup(sys.argv)
@@ -38,9 +39,7 @@ def nodes(folder):
             r for r in read_csv(folder + "/contact-00001.csv")}
 
 
-if not mpi_available():
-    print("mpirun not found: nothing to compare")
-    finish()
+require_mpi()
 
 for method, discretization, all_ranks in (
         ("penalty", "node to segment", (2, 3, 4)),

@@ -13,14 +13,16 @@ with no search limit (the nodes beyond 0.1 are open either way); and the
 most values a process receives per search in the ironing is below the
 whole master surface's on a block three times as wide (which it receives
 with no limit)."""
+# ctest: mpirun
 
 import os
 import re
 import sys
 
-from tribos_test import setup, run, strip_columns, numdiff, check, finish
+from tribos_testing import require_mpi, setup, run, strip_columns, numdiff, check, finish
 
 tribos, tests, out = setup(sys.argv)
+require_mpi()
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all", "chattering_nodes")
 

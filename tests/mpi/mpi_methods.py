@@ -13,15 +13,25 @@ segment) must see a slave node's master face pass to another process while
 sliding (summary.txt counts both). The 3D blocks, node to segment and
 mortar, also run each method with Linear solver/Type = iterative at np 2
 (GMRES + ML; with multipliers preconditioned by their elimination across
-processes)."""
+processes).
 
+The np 2 runs of the 2D block and the 3D blocks (node to segment) with
+penalty and multipliers also write their VTU files and carry the checks of
+tests/mpi/mpi_two_ranks.py, whose runs they are: the history to 1e-8 with
+every column but the iteration path's (chattering_nodes too), the last
+contact-NNNNN.csv to 1e-8, summary.txt's load balance lines, and the .pvtu
+record with one piece per rank."""
+# ctest: mpirun
+# ctest: labels slow
+
+import os
+import re
 import sys
 
-import re
-
-from tribos_test import setup, run, strip_columns, numdiff, check, finish
+from tribos_testing import require_mpi, setup, run, strip_columns, numdiff, check, finish
 
 tribos, tests, out = setup(sys.argv)
+require_mpi()
 # Diagnostics of the iteration path, which the order of the parallel sums
 # changes at round-off: not part of the solution (chattering_nodes counts
 # nodes whose status flipped more than twice within an increment's
@@ -29,6 +39,37 @@ tribos, tests, out = setup(sys.argv)
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all", "chattering_nodes")
 methods = ("penalty", "augmented lagrangian", "lagrange multiplier")
+# The np 2 runs that are mpi_two_ranks.py's (see the docstring).
+two_ranks = {("sliding_block", "penalty"),
+             ("sliding_block", "lagrange multiplier"),
+             ("sliding_blocks_3d", "penalty"),
+             ("sliding_blocks_3d", "lagrange multiplier")}
+
+
+def two_ranks_checks(serial, parallel, name):
+    """mpi_two_ranks.py's checks of an np 2 run against its serial one."""
+    for folder in (serial, parallel):
+        strip_columns(folder + "/history.csv", folder + "/h2.csv",
+                      drop=("wall_time", "residual", "newton_iterations",
+                            "newton_iterations_all"))
+    numdiff(parallel + "/h2.csv", serial + "/h2.csv", relative=1e-8,
+            absolute=1e-8)
+    print("ok      %s: np 2 history equals the serial one" % name)
+    contact = [f for f in sorted(os.listdir(serial))
+               if f.startswith("contact-")]
+    for f in contact[-1:]:
+        numdiff(parallel + "/" + f, serial + "/" + f, relative=1e-8,
+                absolute=1e-10)
+        print("ok      %s: %s equals the serial one" % (name, f))
+    summary = open(parallel + "/summary.txt").read()
+    check("balance assembly  min" in summary and
+          "balance contact   min" in summary,
+          "%s: summary.txt reports the load balance over the processes"
+          % name)
+    pieces = [f for f in os.listdir(parallel) if f.endswith(".vtu")]
+    check(os.path.exists(parallel + "/solution-00001.pvtu") and
+          "solution-00001.0001.vtu" in pieces,
+          "%s: .pvtu record and per-rank pieces written" % name)
 
 
 def case(scene, method):
@@ -50,7 +91,12 @@ for scene in ("sliding_block", "sliding_blocks_3d", "ironing_2d",
         strip_columns(serial + "/history.csv", serial + "/h.csv", drop=noisy)
         for ranks in (2, 3, 4):
             parallel = out + "/%s_np%d" % (name, ranks)
-            run(tribos, prm, parallel, sets, mpi_ranks=ranks)
+            vtu = ranks == 2 and (scene, method) in two_ranks
+            run(tribos, prm, parallel,
+                sets + ["Output/Write VTU=true"] if vtu else sets,
+                mpi_ranks=ranks)
+            if vtu:
+                two_ranks_checks(serial, parallel, name)
             strip_columns(parallel + "/history.csv", parallel + "/h.csv",
                           drop=noisy)
             # The augmented Lagrangian in the 3D slide: see below; with

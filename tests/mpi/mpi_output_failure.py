@@ -20,11 +20,12 @@ processes and, for reference, on one:
   the others a few seconds, then prints its message and aborts the run
   (exit status 1), and the files written so far are kept.
 """
+# ctest: mpirun
 
 import os
 import sys
 
-from tribos_test import setup, run_or_hang, check, finish, mpi_available
+from tribos_testing import require_mpi, setup, run_or_hang, check, finish, mpi_available
 
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/patch_test.prm"
@@ -35,9 +36,7 @@ def run_failing(folder, ranks, sets=()):
     return result.returncode, result.stdout
 
 
-if not mpi_available():
-    print("mpirun not found: skipped")
-    sys.exit(0)
+require_mpi()
 
 for ranks in (0, 2):
     label = "%d process(es)" % max(ranks, 1)

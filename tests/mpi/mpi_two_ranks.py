@@ -8,15 +8,28 @@ node, MUMPS) on four of them; the same contact-NNNNN.csv, reports the load
 balance (min and max over the processes of their own assembly and contact
 time) in summary.txt, and writes the parallel VTU set (.pvtu plus one piece
 per rank). The same with Parallel/Mesh = shared (every process holds the
-whole mesh)."""
+whole mesh). On the distributed mesh, the 2D block and the 3D blocks with
+penalty and with multipliers are tests/mpi/mpi_methods.py's np 2 runs,
+which carry these checks.
+
+Cases (argv[4]; without one, both run):
+  core  the 3D frictional sliding of two blocks with multipliers on the
+        shared mesh (the quick set's MPI test)
+  rest  every other scene
+"""
+# ctest: mpirun
+# ctest: cases core rest
+# ctest: quick-cases core
 
 import os
 import sys
 
-from tribos_test import (setup, run, strip_columns, numdiff, read_csv, check,
-                         finish)
+from tribos_testing import (require_mpi, setup, run, strip_columns, numdiff,
+                            check, finish, parts)
 
 tribos, tests, out = setup(sys.argv)
+selected = parts(sys.argv, ("core", "rest"))
+require_mpi()
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all")
 lagrange = ["Contact/Method=lagrange multiplier"]
@@ -28,7 +41,14 @@ cases += [(name + "_lagrange", name, lagrange)
                        "sliding_blocks_3d")]
 cases += [(label + "_shared", name, sets + ["Parallel/Mesh=shared"])
           for label, name, sets in cases]
+# Run by mpi_methods.py, with these checks.
+cases = [c for c in cases if c[0] not in (
+    "sliding_block", "sliding_block_lagrange", "sliding_blocks_3d",
+    "sliding_blocks_3d_lagrange")]
 for label, name, sets in cases:
+    if ("core" if label == "sliding_blocks_3d_lagrange_shared" else "rest") \
+            not in selected:
+        continue
     prm = "%s/%s.prm" % (tests, name)
     name = label
     serial, parallel = out + "/" + name + "_serial", out + "/" + name + "_np2"

@@ -2,8 +2,8 @@
 enforcement method (penalty, Lagrange multipliers, augmented Lagrangian),
 with and without friction, 2D and 3D, one- and two-pass, rigid, faceted and
 smoothed deformable masters, mortar, axisymmetric. Each case's history.csv
-and its last contact-NNNNN.csv are compared with tests/golden/<case>.history.csv
-and tests/golden/<case>.contact.csv.
+and its last contact-NNNNN.csv are compared with tests/regression/golden/<case>.history.csv
+and tests/regression/golden/<case>.contact.csv.
 
 Tolerances: every number through numdiff at 1e-6 relative and 1e-10
 absolute (the runs converge the residual to 1e-8 of the forces, so a
@@ -16,12 +16,13 @@ TRIBOS_UPDATE_REFERENCES=1 to rewrite the references after a change that
 is understood and intended.
 
     golden.py TRIBOS TESTS OUT CASE"""
+# ctest: labels quick
 
 import os
 import shutil
 import sys
 
-from tribos_test import (setup, run, strip_columns, numdiff, read_csv, check,
+from tribos_testing import (updating_references, reference_updated, PARAMETERS, setup, run, strip_columns, numdiff, read_csv, check,
                          finish)
 
 LM = ["Contact/Method=lagrange multiplier"]
@@ -59,14 +60,14 @@ CASES = {
         "sliding_blocks_3d.prm", ["Contact/Discretization=mortar"]),
     "lagrange_friction_mortar_3d": (
         "sliding_blocks_3d.prm", LM + ["Contact/Discretization=mortar"]),
-    "augmented_frictionless_rigid_3d": ("../parameters/hertz_3d.prm",
+    "augmented_frictionless_rigid_3d": (os.path.join(PARAMETERS, "hertz_3d.prm"),
                                          HERTZ_3D + AL),
-    "lagrange_frictionless_rigid_3d": ("../parameters/hertz_3d.prm",
+    "lagrange_frictionless_rigid_3d": (os.path.join(PARAMETERS, "hertz_3d.prm"),
                                         HERTZ_3D + LM),
     "penalty_friction_axisymmetric": (
-        "../parameters/cylinder_compression_axisymmetric.prm", AXISYMMETRIC),
+        os.path.join(PARAMETERS, "cylinder_compression_axisymmetric.prm"), AXISYMMETRIC),
     "lagrange_friction_axisymmetric": (
-        "../parameters/cylinder_compression_axisymmetric.prm",
+        os.path.join(PARAMETERS, "cylinder_compression_axisymmetric.prm"),
         AXISYMMETRIC + LM),
 }
 
@@ -76,13 +77,14 @@ if __name__ == "__main__":
     prm, sets = CASES[case]
     run(tribos, os.path.join(tests, prm), out, sets)
     contact = sorted(f for f in os.listdir(out) if f.startswith("contact-"))[-1]
-    reference = os.path.join(tests, "golden", case)
-    if os.environ.get("TRIBOS_UPDATE_REFERENCES") == "1":
+    reference = os.path.join(os.path.dirname(os.path.abspath(__file__)), "golden", case)
+    if updating_references():
         os.makedirs(os.path.dirname(reference), exist_ok=True)
         strip_columns(out + "/history.csv", reference + ".history.csv",
                       drop=("wall_time",))
         shutil.copy(os.path.join(out, contact), reference + ".contact.csv")
-        print("updated " + reference + ".*")
+        reference_updated(reference + ".*")
+        finish()
 
     noisy = ("wall_time", "residual", "newton_iterations",
              "newton_iterations_all")

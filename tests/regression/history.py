@@ -4,20 +4,23 @@ columns that depend on round-off or the clock (final residual, wall
 time); Newton iteration counts as a range (+-1 per step).
 Set TRIBOS_UPDATE_REFERENCES=1 to rewrite the reference after a change
 that is understood and intended."""
+# ctest: labels quick
 
 import os
 import shutil
 import sys
 
-from tribos_test import setup, run, strip_columns, numdiff, read_csv, check, finish
+from tribos_testing import updating_references, reference_updated, setup, run, strip_columns, numdiff, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 name = sys.argv[4]
 run(tribos, "%s/%s.prm" % (tests, name), out)
-reference = "%s/%s.reference.csv" % (tests, name)
-if os.environ.get("TRIBOS_UPDATE_REFERENCES") == "1":
+reference = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                         name + ".reference.csv")
+if updating_references():
     strip_columns(out + "/history.csv", reference, drop=("wall_time",))
-    print("updated " + reference)
+    reference_updated(reference)
+    finish()
 
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all")

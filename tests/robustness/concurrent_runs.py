@@ -7,6 +7,7 @@ creating it ("A call to mkdir was unable to create the desired directory
 writes its summary, and that no session directory is left behind.
 
     concurrent_runs.py TRIBOS TESTS OUT"""
+# ctest: mpirun
 
 import glob
 import os
@@ -15,7 +16,7 @@ import subprocess
 import sys
 import tempfile
 
-from tribos_test import setup, mpi_available, check, finish
+from tribos_testing import skip, setup, mpi_available, check, finish
 
 N_SINGLETONS = 8
 N_ROUNDS = 5
@@ -24,6 +25,8 @@ if __name__ == "__main__":
     tribos, tests, out = setup(sys.argv)
     prm = os.path.join(tests, "patch_test.prm")
     with_mpi = mpi_available()
+    if not with_mpi:
+        skip("the concurrent mpirun -np 2 run: mpirun not found")
     # A temporary directory of the test's own: what the runs leave there
     # is theirs.
     tmp = tempfile.mkdtemp(prefix="tribos-concurrent-")

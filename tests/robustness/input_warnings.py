@@ -8,7 +8,7 @@ Sensible input warns about nothing."""
 
 import sys
 
-from tribos_test import setup, run, check, finish
+from tribos_testing import setup, run, check, finish
 
 tribos, tests, out = setup(sys.argv)
 block = tests + "/sliding_block.prm"

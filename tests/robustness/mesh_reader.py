@@ -6,14 +6,14 @@ of these). Legal files the earlier readers failed on run: MSH 4.1 node
 tags of 2^31 and more give the same result as small tags. A second-order
 mesh runs with Q2 by default (Polynomial degree = as meshed).
 
-Each case is the two squares of tests/two_squares.msh (two bodies side by
+Each case is the two squares of tests/data/two_squares.msh (two bodies side by
 side, uniaxial tension: the exact reaction is 0.015) written with one
 defect."""
 
 import os
 import sys
 
-from tribos_test import setup, run_or_hang, read_csv, check, finish
+from tribos_testing import setup, run_or_hang, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/gmsh_import.prm"

@@ -10,12 +10,13 @@
 (3) A VTU file that cannot be written (its temporary file on /dev/full, a
     full disk): a clear message naming the file, exit 1, no partial
     file left (deal.II's "output stream error" and the .part file were)."""
+# ctest: labels quick
 
 import os
 import subprocess
 import sys
 
-from tribos_test import setup, run, check, finish
+from tribos_testing import skip, setup, run, check, finish
 
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/neo_hookean_stretch.prm"
@@ -70,5 +71,5 @@ if os.path.exists("/dev/full"):
           "VTU on a full disk: exit %d, the file named, no partial file"
           % result.returncode)
 else:
-    print("skipped VTU on a full disk: no /dev/full")
+    skip("VTU on a full disk: no /dev/full")
 finish()

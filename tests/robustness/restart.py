@@ -11,7 +11,20 @@ np 2 and restarted with np 1, 2 and 3 from its step-2 checkpoint, and
 with np 2 from the serial run's; with Lagrange multipliers from np 2 to 3. Bad restarts (no checkpoint,
 another mesh; the same cells on a moved mesh, other materials, an end time
 before the checkpoint, a checkpoint with one byte changed) exit 1 with a
-message and leave the output alone."""
+message and leave the output alone.
+
+Cases (argv[4]; without one, all run):
+  core    the frictional penalty slide restarted, the bad restarts from its
+          checkpoint, and the history.csv restarts (Output/Probes added, a
+          malformed row)
+  serial  the other serial restarts (multipliers, augmented Lagrangian, J2,
+          dynamics), the discretization change and the swapped mesh tags
+  mpi     the restarts under mpirun (two cores, one MPI test at a time);
+          skipped if mpirun is not found
+"""
+# ctest: cases core serial mpi
+# ctest: quick-cases core
+# ctest: mpirun-cases mpi
 
 import math
 import os
@@ -19,14 +32,14 @@ import shutil
 import subprocess
 import sys
 
-from tribos_test import (setup, run, strip_columns, numdiff, check, finish,
-                         mpi_available, read_csv)
+from tribos_testing import (PARAMETERS, setup, run, strip_columns, numdiff,
+                            check, finish, read_csv, parts, mpi_part)
 
 tribos, tests, out = setup(sys.argv)
-parameters = os.path.join(tests, "..", "parameters")
+parameters = PARAMETERS
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all", "energy_error")
-has_mpi = mpi_available()
+selected = parts(sys.argv, ("core", "serial", "mpi"))
 
 
 def compare(reference, restarted, name):
@@ -72,6 +85,8 @@ cases = [
     ("dynamics_friction", parameters + "/block_slide_stop.prm", 60, []),
 ]
 for name, prm, step, sets in cases:
+    if ("core" if name == "sliding_penalty" else "serial") not in selected:
+        continue
     reference = out + "/" + name
     run(tribos, prm, reference,
         sets + ["Output/Checkpoint every=%d" % step])
@@ -80,7 +95,7 @@ for name, prm, step, sets in cases:
     compare(reference, restarted(tribos, prm, reference, step, sets, "1"),
             name)
 
-if has_mpi:
+if "mpi" in selected and mpi_part(selected, "the restarts under mpirun"):
     prm = tests + "/sliding_blocks_3d.prm"
     sets = ["Output/Write VTU=false"]
     serial, parallel = out + "/blocks_np1", out + "/blocks_np2"
@@ -102,117 +117,119 @@ if has_mpi:
                                 ranks=3),
             "3D sliding blocks, Lagrange multipliers, np 2 -> np 3")
 
-# Bad restarts: a clear message, exit 1, the earlier output untouched.
-reference = out + "/sliding_penalty"
-before = open(reference + "/history.csv").read()
-# A copy of the step-4 checkpoint with one byte of its state changed (past
-# the header: before issue 47 it was read without complaint).
-corrupt = out + "/corrupt_checkpoint"
-shutil.rmtree(corrupt, ignore_errors=True)
-shutil.copytree(reference + "/checkpoint-00004", corrupt)
-with open(corrupt + "/state.bin", "r+b") as f:
-    data = bytearray(f.read())
-    data[len(data) // 2] ^= 0x01
-    f.seek(0)
-    f.write(data)
-for name, sets, directory, message in [
-        ("missing", [], out + "/no_such_checkpoint", "no checkpoint there"),
-        ("other mesh", ["Scene/Refinement=1"],
-         reference + "/checkpoint-00004", "cells"),
-        # The same cells and dofs on a moved mesh, other materials, other
-        # pairs, an end time before the checkpoint's t = 1 (all accepted
-        # before issue 47; the last "completed" doing nothing).
-        ("moved mesh", ["Scene/Block/Lower corner=0, 0.1",
-                        "Scene/Block/Upper corner=1, 0.6"],
-         reference + "/checkpoint-00004", "the mesh differs"),
-        ("other material", ["Materials/Young's modulus=50"],
-         reference + "/checkpoint-00004", "Materials/Young's modulus"),
-        ("end time before the checkpoint", ["Time stepping/End time=0.5"],
-         reference + "/checkpoint-00004", "nothing is left to do"),
-        ("changed byte", [], corrupt, "checksum"),
-        # Issue 56: another method or discretization on the same mesh (the
-        # contact state belongs to the other one; accepted before).
-        ("other method", ["Contact/Method=augmented lagrangian"],
-         reference + "/checkpoint-00004", "method and discretization")]:
-    result = run(tribos, tests + "/sliding_block.prm", reference, sets,
-                 expect_success=False, extra=["--restart", directory])
-    check(result.returncode == 1 and message in result.stderr and
-          open(reference + "/history.csv").read() == before,
-          "bad restart (%s): exit 1, message <%s>, output kept"
-          % (name, message))
+if "core" in selected:
+    # Bad restarts: a clear message, exit 1, the earlier output untouched.
+    reference = out + "/sliding_penalty"
+    before = open(reference + "/history.csv").read()
+    # A copy of the step-4 checkpoint with one byte of its state changed (past
+    # the header: before issue 47 it was read without complaint).
+    corrupt = out + "/corrupt_checkpoint"
+    shutil.rmtree(corrupt, ignore_errors=True)
+    shutil.copytree(reference + "/checkpoint-00004", corrupt)
+    with open(corrupt + "/state.bin", "r+b") as f:
+        data = bytearray(f.read())
+        data[len(data) // 2] ^= 0x01
+        f.seek(0)
+        f.write(data)
+    for name, sets, directory, message in [
+            ("missing", [], out + "/no_such_checkpoint", "no checkpoint there"),
+            ("other mesh", ["Scene/Refinement=1"],
+             reference + "/checkpoint-00004", "cells"),
+            # The same cells and dofs on a moved mesh, other materials, other
+            # pairs, an end time before the checkpoint's t = 1 (all accepted
+            # before issue 47; the last "completed" doing nothing).
+            ("moved mesh", ["Scene/Block/Lower corner=0, 0.1",
+                            "Scene/Block/Upper corner=1, 0.6"],
+             reference + "/checkpoint-00004", "the mesh differs"),
+            ("other material", ["Materials/Young's modulus=50"],
+             reference + "/checkpoint-00004", "Materials/Young's modulus"),
+            ("end time before the checkpoint", ["Time stepping/End time=0.5"],
+             reference + "/checkpoint-00004", "nothing is left to do"),
+            ("changed byte", [], corrupt, "checksum"),
+            # Issue 56: another method or discretization on the same mesh (the
+            # contact state belongs to the other one; accepted before).
+            ("other method", ["Contact/Method=augmented lagrangian"],
+             reference + "/checkpoint-00004", "method and discretization")]:
+        result = run(tribos, tests + "/sliding_block.prm", reference, sets,
+                     expect_success=False, extra=["--restart", directory])
+        check(result.returncode == 1 and message in result.stderr and
+              open(reference + "/history.csv").read() == before,
+              "bad restart (%s): exit 1, message <%s>, output kept"
+              % (name, message))
 
-# Issue 56: another discretization of a pair between two deformable
-# bodies (a rigid surface is always met node to surface).
-patch = out + "/patch"
-run(tribos, tests + "/patch_test.prm", patch,
-    ["Time stepping/Number of steps=2", "Output/Checkpoint every=1"])
-before = open(patch + "/history.csv").read()
-result = run(tribos, tests + "/patch_test.prm", patch,
-             ["Time stepping/Number of steps=2",
-              "Contact/Discretization=mortar"], expect_success=False,
-             extra=["--restart", patch + "/checkpoint-00001"])
-check(result.returncode == 1 and "method and discretization" in
-      result.stderr and open(patch + "/history.csv").read() == before,
-      "bad restart (node to segment -> mortar): exit 1, output kept")
-
-# Issue 56: the same mesh file with two boundaries' or two bodies' tags
-# swapped (a restart took it; its contact force was 0 afterwards).
-squares = out + "/two_squares"
-run(tribos, tests + "/gmsh_import.prm", squares,
-    ["Scene/Mesh file=%s/two_squares.msh" % tests,
-     "Time stepping/Number of steps=4", "Output/Checkpoint every=2"])
-text = open(tests + "/two_squares.msh").read()
-swaps = {"boundary ids": ("1 1 2 1 1 1 4", "1 1 2 2 1 1 4",
-                          "2 1 2 2 2 3 6", "2 1 2 1 2 3 6"),
-         "body ids": ("3 3 2 1 1 1 2 5 4", "3 3 2 2 1 1 2 5 4",
-                      "4 3 2 2 2 2 3 6 5", "4 3 2 1 2 2 3 6 5")}
-before = open(squares + "/history.csv").read()
-for name, (a, a_swapped, b, b_swapped) in swaps.items():
-    mesh = "%s/swapped_%s.msh" % (out, name.split()[0])
-    with open(mesh, "w") as f:
-        f.write(text.replace(a, a_swapped).replace(b, b_swapped))
-    result = run(tribos, tests + "/gmsh_import.prm", squares,
-                 ["Scene/Mesh file=" + mesh,
-                  "Time stepping/Number of steps=4"],
+    # Issue 56: history.csv on restart. A restart that adds Output/Probes keeps
+    # the earlier rows (it dropped rows 1-30: the header differed), the new
+    # columns empty there; a malformed earlier row is refused before any file
+    # of the earlier run is removed (it said "ERROR: stol" after checkpoints
+    # and contact files beyond the restart's step were deleted).
+    probes = out + "/probes"
+    shutil.rmtree(probes, ignore_errors=True)
+    shutil.copytree(reference, probes)
+    run(tribos, tests + "/sliding_block.prm", probes,
+        ["Output/Probes=0, 0"], extra=["--restart",
+                                       reference + "/checkpoint-00004"])
+    rows = read_csv(probes + "/history.csv")
+    ref = read_csv(reference + "/history.csv")
+    n_kept = len([r for r in ref if r["step"] <= 4])
+    check("probe0_ux" in open(probes + "/history.csv").readline() and
+          len(rows) == len(ref) and
+          all(r["time"] == q["time"] for r, q in zip(rows, ref)) and
+          all(math.isnan(r["probe0_ux"]) for r in rows[:n_kept]) and
+          not math.isnan(rows[-1]["probe0_ux"]),
+          "restart adding Output/Probes: %d rows as before, the %d earlier ones "
+          "kept (probe columns empty there)" % (len(rows), n_kept))
+    malformed = out + "/malformed_history"
+    shutil.rmtree(malformed, ignore_errors=True)
+    shutil.copytree(reference, malformed)
+    lines = open(malformed + "/history.csv").read().splitlines(True)
+    lines[2] = "1,x" + lines[2][3:]
+    open(malformed + "/history.csv", "w").write("".join(lines))
+    files = sorted(os.listdir(malformed))
+    result = run(tribos, tests + "/sliding_block.prm", malformed, [],
                  expect_success=False,
-                 extra=["--restart", squares + "/checkpoint-00002"])
-    check(result.returncode == 1 and "ids changed" in result.stderr and
-          open(squares + "/history.csv").read() == before,
-          "bad restart (%s swapped in the mesh): exit 1, output kept" % name)
+                 extra=["--restart", malformed + "/checkpoint-00004"])
+    check(result.returncode == 1 and "its line 3" in result.stderr and
+          sorted(os.listdir(malformed)) == files,
+          "restart with a malformed history.csv row: exit 1, the line named, "
+          "no file removed")
+if "serial" in selected:
+    # Issue 56: another discretization of a pair between two deformable
+    # bodies (a rigid surface is always met node to surface).
+    patch = out + "/patch"
+    run(tribos, tests + "/patch_test.prm", patch,
+        ["Time stepping/Number of steps=2", "Output/Checkpoint every=1"])
+    before = open(patch + "/history.csv").read()
+    result = run(tribos, tests + "/patch_test.prm", patch,
+                 ["Time stepping/Number of steps=2",
+                  "Contact/Discretization=mortar"], expect_success=False,
+                 extra=["--restart", patch + "/checkpoint-00001"])
+    check(result.returncode == 1 and "method and discretization" in
+          result.stderr and open(patch + "/history.csv").read() == before,
+          "bad restart (node to segment -> mortar): exit 1, output kept")
 
-# Issue 56: history.csv on restart. A restart that adds Output/Probes keeps
-# the earlier rows (it dropped rows 1-30: the header differed), the new
-# columns empty there; a malformed earlier row is refused before any file
-# of the earlier run is removed (it said "ERROR: stol" after checkpoints
-# and contact files beyond the restart's step were deleted).
-probes = out + "/probes"
-shutil.rmtree(probes, ignore_errors=True)
-shutil.copytree(reference, probes)
-run(tribos, tests + "/sliding_block.prm", probes,
-    ["Output/Probes=0, 0"], extra=["--restart",
-                                   reference + "/checkpoint-00004"])
-rows = read_csv(probes + "/history.csv")
-ref = read_csv(reference + "/history.csv")
-n_kept = len([r for r in ref if r["step"] <= 4])
-check("probe0_ux" in open(probes + "/history.csv").readline() and
-      len(rows) == len(ref) and
-      all(r["time"] == q["time"] for r, q in zip(rows, ref)) and
-      all(math.isnan(r["probe0_ux"]) for r in rows[:n_kept]) and
-      not math.isnan(rows[-1]["probe0_ux"]),
-      "restart adding Output/Probes: %d rows as before, the %d earlier ones "
-      "kept (probe columns empty there)" % (len(rows), n_kept))
-malformed = out + "/malformed_history"
-shutil.rmtree(malformed, ignore_errors=True)
-shutil.copytree(reference, malformed)
-lines = open(malformed + "/history.csv").read().splitlines(True)
-lines[2] = "1,x" + lines[2][3:]
-open(malformed + "/history.csv", "w").write("".join(lines))
-files = sorted(os.listdir(malformed))
-result = run(tribos, tests + "/sliding_block.prm", malformed, [],
-             expect_success=False,
-             extra=["--restart", malformed + "/checkpoint-00004"])
-check(result.returncode == 1 and "its line 3" in result.stderr and
-      sorted(os.listdir(malformed)) == files,
-      "restart with a malformed history.csv row: exit 1, the line named, "
-      "no file removed")
+    # Issue 56: the same mesh file with two boundaries' or two bodies' tags
+    # swapped (a restart took it; its contact force was 0 afterwards).
+    squares = out + "/two_squares"
+    run(tribos, tests + "/gmsh_import.prm", squares,
+        ["Scene/Mesh file=%s/two_squares.msh" % tests,
+         "Time stepping/Number of steps=4", "Output/Checkpoint every=2"])
+    text = open(tests + "/two_squares.msh").read()
+    swaps = {"boundary ids": ("1 1 2 1 1 1 4", "1 1 2 2 1 1 4",
+                              "2 1 2 2 2 3 6", "2 1 2 1 2 3 6"),
+             "body ids": ("3 3 2 1 1 1 2 5 4", "3 3 2 2 1 1 2 5 4",
+                          "4 3 2 2 2 2 3 6 5", "4 3 2 1 2 2 3 6 5")}
+    before = open(squares + "/history.csv").read()
+    for name, (a, a_swapped, b, b_swapped) in swaps.items():
+        mesh = "%s/swapped_%s.msh" % (out, name.split()[0])
+        with open(mesh, "w") as f:
+            f.write(text.replace(a, a_swapped).replace(b, b_swapped))
+        result = run(tribos, tests + "/gmsh_import.prm", squares,
+                     ["Scene/Mesh file=" + mesh,
+                      "Time stepping/Number of steps=4"],
+                     expect_success=False,
+                     extra=["--restart", squares + "/checkpoint-00002"])
+        check(result.returncode == 1 and "ids changed" in result.stderr and
+              open(squares + "/history.csv").read() == before,
+              "bad restart (%s swapped in the mesh): exit 1, output kept" % name)
+
 finish()

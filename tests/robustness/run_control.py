@@ -18,10 +18,10 @@ import subprocess
 import sys
 import time
 
-from tribos_test import setup, run, check, finish
+from tribos_testing import PARAMETERS, setup, run, check, finish
 
 tribos, tests, out = setup(sys.argv)
-prm = tests + "/../parameters/bar_impact.prm"
+prm = PARAMETERS + "/bar_impact.prm"
 # Long enough to be interrupted: 20000 implicit steps (about a minute).
 long_run = ["Time stepping/Number of steps=20000"]
 

@@ -9,10 +9,10 @@ import os
 import subprocess
 import sys
 
-from tribos_test import setup, check, finish
+from tribos_testing import REPOSITORY, setup, check, finish
 
 tribos, tests, out = setup(sys.argv)
-study = os.path.join(tests, "..", "benchmarks", "study.py")
+study = os.path.join(REPOSITORY, "benchmarks", "study.py")
 result = subprocess.run([sys.executable, study, "--smoke", "--tribos", tribos,
                          "--out", out], capture_output=True, text=True)
 print(result.stdout[-2000:], result.stderr[-2000:])

@@ -15,17 +15,17 @@ Newton stalls, held nodes in tension are released once, and a stalled
 Newton step is solved tightly by the Krylov solver. Asserts, with the
 direct and the iterative linear solver: one increment, no cutback, the
 contact force equal to the applied load (the meshed top's area) and
-Hertz's a and p0 within 5 % (as tests/hertz.py does for the displacement-
+Hertz's a and p0 within 5 % (as tests/verification/hertz.py does for the displacement-
 controlled run)."""
 
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish, hertz_compare
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish, hertz_compare
 
 tribos, tests, out = setup(sys.argv)
 E, nu, R, traction = 1.0, 0.3, 1.0, 0.005
-prm = tests + "/../parameters/hertz_3d.prm"
+prm = PARAMETERS + "/hertz_3d.prm"
 forces = {}
 for solver in ("direct", "iterative"):
     folder = out + "/" + solver

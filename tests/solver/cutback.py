@@ -4,13 +4,14 @@ analytic state; the Newton iterations of the failed attempts are reported
 beside the accepted ones; (2) a run that cannot converge (the block is compressed to
 zero volume) stops with exit status 2 and a clear message, keeping the
 converged steps' history, VTU files and a FAILED summary."""
+# ctest: labels quick
 
 import os
 import re
 import sys
 
-from analytic import neo_hookean_stress
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing.analytic import neo_hookean_stress
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/neo_hookean_stretch.prm"

@@ -25,10 +25,10 @@ segment's."""
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
-prm = tests + "/../parameters/ironing.prm"
+prm = PARAMETERS + "/ironing.prm"
 mu = 0.3
 # The case that cycled: the primal penalty with full Newton steps (what
 # parameters/ironing.prm used then; it now solves the penalty in mixed

@@ -17,7 +17,7 @@ mesh).
 
 (2) A slave node on an inclined symmetry plane (45 degrees; deal.II
 writes u_x = -u_y) pressed on a rigid plane parallel to it
-(tests/inclined_square.msh): the node moves only along the plane, its gap
+(tests/data/inclined_square.msh): the node moves only along the plane, its gap
 cannot change, and its normal row vanishes once condensed through the
 constraint, although no entry does (c/sqrt 2 on u_x and u_y). The row is
 replaced by Lambda = 0 (the reaction goes to the symmetry plane); before,
@@ -27,10 +27,10 @@ failed at every cutback."""
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
-prm = tests + "/../parameters/hertz_3d.prm"
+prm = PARAMETERS + "/hertz_3d.prm"
 common = ["Linear solver/Type=direct",
           "Scene/Cylinder over block/Contact refinements=2",
           "Scene/Cylinder over block/Refinement radius=0.1",

@@ -8,15 +8,24 @@ give the reference's history within 1e-6 (Newton iterations may differ:
 the iterative solve is inexact Newton) and report the solve it used; on
 a frictional case the elimination must hand the unsymmetric system to LU.
 The iterative solve also under MPI (-np 2 and 3): the serial LU's
-history within 1e-6."""
+history within 1e-6.
+
+Cases (argv[4]; without one, both run):
+  serial  the three solves on one process
+  mpi     the iterative solve at -np 2 and 3 against the serial LU runs,
+          which it makes itself (two cores, one MPI test at a time)
+"""
+# ctest: cases serial mpi
+# ctest: mpirun-cases mpi
 
 import os
 import sys
 
-from tribos_test import (setup, run, strip_columns, numdiff, check, finish,
-                         mpi_available, solver_line)
+from tribos_testing import (PARAMETERS, setup, run, strip_columns, numdiff,
+                            check, finish, solver_line, parts, mpi_part)
 
 tribos, tests, out = setup(sys.argv)
+selected = parts(sys.argv, ("serial", "mpi"))
 LM = ["Contact/Method=lagrange multiplier"]
 HERTZ_3D = ["Linear solver/Type=direct",
             "Scene/Cylinder over block/Indenter refinements=1",
@@ -31,7 +40,7 @@ SOLVES = {
 }
 CASES = {
     # frictionless: the eliminated matrix is symmetric positive definite
-    "hertz_3d": (os.path.join(os.path.dirname(tests), "parameters",
+    "hertz_3d": (os.path.join(PARAMETERS,
                               "hertz_3d.prm"), HERTZ_3D,
                  "CHOLMOD, multipliers eliminated"),
     # friction: unsymmetric, the direct solve stays LU of the whole system
@@ -44,6 +53,8 @@ noisy = ("wall_time", "residual", "newton_iterations",
 
 for case, (prm, sets, direct) in CASES.items():
     for solve, extra in SOLVES.items():
+        if "serial" not in selected and solve != "lu":
+            continue  # case mpi: the LU reference only
         folder = "%s/%s_%s" % (out, case, solve)
         run(tribos, prm, folder, sets + LM + extra)
         strip_columns(folder + "/history.csv", folder + "/h.csv", drop=noisy)
@@ -63,7 +74,7 @@ for case, (prm, sets, direct) in CASES.items():
 # Under MPI the multipliers are eliminated across processes (each node's
 # block on its owner, its columns gathered from the owners of the slave
 # and master rows): the same history as the serial LU to 1e-6.
-if mpi_available():
+if "mpi" in selected and mpi_part(selected):
     for case, ranks in (("sliding_blocks_3d", 2), ("sliding_blocks_3d", 3),
                         ("hertz_3d", 2)):
         prm, sets, _ = CASES[case]

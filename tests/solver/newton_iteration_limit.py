@@ -8,14 +8,15 @@ cut back.) The scene runs once with the defaults; then with Maximum
 iterations one less than the largest count of any increment, where that
 increment's second-last iteration met the residual tolerance: the run must
 take no cutback and give the same history."""
+# ctest: labels quick
 
 import sys
 
-from tribos_test import (setup, run, read_csv, strip_columns, numdiff,
+from tribos_testing import (PARAMETERS, setup, run, read_csv, strip_columns, numdiff,
                          check, finish)
 
 tribos, tests, out = setup(sys.argv)
-prm = tests + "/../parameters/hertz_2d.prm"
+prm = PARAMETERS + "/hertz_2d.prm"
 sets = ["Scene/Cylinder over block/Contact refinements=3",
         "Output/Write VTU=false"]
 run(tribos, prm, out + "/default", sets)

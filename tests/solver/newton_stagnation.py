@@ -4,7 +4,7 @@ the residual from falling (a Newton correction below 1e-12 of the
 displacement), only below the stated round-off bound 1e-10 E_max A (A the
 area scale V^((d-1)/d) of the model).
 
-The frictional ironing of tests/ironing_2d.prm with the paper's tangent
+The frictional ironing of tests/data/ironing_2d.prm with the paper's tangent
 (linear convergence) and both bodies translated rigidly by 3e4 (100000
 element sizes): the displacements are huge, so a correction of 1e-12 of
 them (about 1e-6) is reached while the residual is still well above the
@@ -15,7 +15,7 @@ now Newton goes on until one of the two tests holds."""
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 shift = 3e4

@@ -17,10 +17,10 @@ iterations, no cutback, and the contact force equal to the load.
 
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
-prm = tests + "/../parameters/hertz_2d.prm"
+prm = PARAMETERS + "/hertz_2d.prm"
 traction, width = 0.005, 2.0
 for level in (3, 4):
     first = {}

@@ -1,22 +1,36 @@
 """Linear solvers: GMRES with AMG and the MUMPS direct solver give the
-same history as the default (KLU) reference of regression/cylinder_3d.
+same history as the default (KLU) reference of regression/cylinder_3d
+(tests/regression/cylinder_3d.reference.csv).
 Type = auto chooses by the size and the number of processes: iterative
 above Iterative above (one process) or Iterative above under MPI
-(several), direct below, and summary.txt says which ran."""
+(several), direct below, and summary.txt says which ran.
 
+Cases (argv[4]; without one, both run):
+  serial  GMRES + AMG and MUMPS against the reference, Type = auto on one
+          process
+  mpi     Type = auto at -np 2, above and below the MPI threshold (two
+          cores, one MPI test at a time)
+"""
+# ctest: cases serial mpi
+# ctest: mpirun-cases mpi
+
+import os
 import sys
 
-from tribos_test import (setup, run, strip_columns, numdiff, check, finish,
-                         mpi_available, solver_line)
+from tribos_testing import (REPOSITORY, setup, run, strip_columns, numdiff, check, finish,
+                            solver_line, parts, mpi_part)
 
 tribos, tests, out = setup(sys.argv)
+selected = parts(sys.argv, ("serial", "mpi"))
 noisy = ("wall_time", "residual", "newton_iterations",
          "newton_iterations_all")
-strip_columns(tests + "/cylinder_3d.reference.csv", out + "/reference.csv",
-              drop=noisy)
-for name, sets in (("gmres_amg", ["Linear solver/Type=iterative",
-                                  "Linear solver/Tolerance=1e-12"]),
-                   ("mumps", ["Linear solver/Direct solver=Amesos_Mumps"])):
+strip_columns(os.path.join(REPOSITORY, "tests", "regression",
+                           "cylinder_3d.reference.csv"),
+              out + "/reference.csv", drop=noisy)
+variants = (("gmres_amg", ["Linear solver/Type=iterative",
+                           "Linear solver/Tolerance=1e-12"]),
+            ("mumps", ["Linear solver/Direct solver=Amesos_Mumps"]))
+for name, sets in variants if "serial" in selected else ():
     folder = out + "/" + name
     run(tribos, tests + "/cylinder_3d.prm", folder, sets)
     strip_columns(folder + "/history.csv", folder + "/h.csv", drop=noisy)
@@ -35,7 +49,9 @@ cases = [("auto_serial_above", ["Linear solver/Iterative above=0"], 0,
           ["Linear solver/Iterative above=1000000000",
            "Linear solver/Iterative above under MPI=0"], 0,
           "(SuiteSparse)")]
-if mpi_available():
+if "serial" not in selected:
+    cases = []
+if "mpi" in selected and mpi_part(selected):
     cases += [("auto_np2_above", ["Linear solver/Iterative above=1000000000",
                                   "Linear solver/Iterative above under MPI=0"],
                2, "GMRES + ML"),

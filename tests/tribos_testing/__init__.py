@@ -1,7 +1,14 @@
 """Helpers shared by the test drivers: run tribos, read its CSV output,
-compare with references through numdiff. Standard library only."""
+compare with references through numdiff, report a check, a skip or a
+rewritten reference. Standard library only.
 
-import analytic
+ctest puts tests/ (this package), tools/ and benchmarks/peers/ on
+PYTHONPATH; to run a driver by hand:
+
+    PYTHONPATH=tests:tools:benchmarks/peers python3 \
+        tests/verification/hertz.py build/tribos tests/data /tmp/hertz"""
+
+from . import analytic
 import csv
 import math
 import os
@@ -9,6 +16,14 @@ import shutil
 import signal
 import subprocess
 import sys
+
+#: The repository's folders the drivers read beside tests/data.
+REPOSITORY = os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__))))
+PARAMETERS = os.path.join(REPOSITORY, "parameters")
+
+#: The exit code ctest reports as "skipped" (SKIP_RETURN_CODE).
+SKIPPED = 77
 
 
 def setup(argv):
@@ -180,5 +195,72 @@ def check(condition, message):
 check.failed = False
 
 
+def skip(message):
+    """Print that a part of the test did not run (e.g. no mpirun): the
+    test then ends as skipped, never as passed, unless a check failed."""
+    print("SKIPPED " + message)
+    skip.parts.append(message)
+
+
+skip.parts = []
+
+
+def require_mpi():
+    """End the test as skipped if mpirun is not installed."""
+    if not mpi_available():
+        skip("mpirun (or $MPIEXEC) not found")
+        finish()
+
+
+def parts(argv, names):
+    """The parts of a driver split into ctest cases (its "# ctest: cases"
+    line): the one argv[4] names, or all of them when it names none (a run
+    by hand)."""
+    if len(argv) > 4:
+        if argv[4] not in names:
+            raise SystemExit("unknown case <%s>; the cases are %s"
+                             % (argv[4], ", ".join(names)))
+        return {argv[4]}
+    return set(names)
+
+
+def mpi_part(selected, what="the MPI runs"):
+    """Whether the MPI part of a split driver runs: if mpirun is missing,
+    the part is reported as skipped, and a test that is that part alone
+    (selected == {"mpi"}) ends there as skipped."""
+    if mpi_available():
+        return True
+    skip("%s: mpirun (or $MPIEXEC) not found" % what)
+    if selected == {"mpi"}:
+        finish()
+    return False
+
+
+def updating_references():
+    """Whether TRIBOS_UPDATE_REFERENCES=1 asks to rewrite the references
+    (after a change that is understood and intended)."""
+    return os.environ.get("TRIBOS_UPDATE_REFERENCES") == "1"
+
+
+def reference_updated(path):
+    """Report that the reference path was rewritten from this run: the
+    test then fails, since a comparison with what was just written cannot
+    check anything; run it again without TRIBOS_UPDATE_REFERENCES."""
+    print("UPDATED " + path)
+    reference_updated.paths.append(path)
+
+
+reference_updated.paths = []
+
+
 def finish():
-    sys.exit(1 if check.failed else 0)
+    """Exit 1 if a check failed or a reference was rewritten, 77 (skipped)
+    if a part of the test did not run, 0 if every check ran and held."""
+    if reference_updated.paths:
+        print("FAILED  %d reference(s) rewritten, nothing compared: review "
+              "the difference (git diff) and run the test again"
+              % len(reference_updated.paths))
+        sys.exit(1)
+    if check.failed:
+        sys.exit(1)
+    sys.exit(SKIPPED if skip.parts else 0)

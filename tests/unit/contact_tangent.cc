@@ -1,3 +1,4 @@
+// ctest: labels quick
 /**
  * Unit test: the contact element's tangent (Sacado AD, Tangent =
  * consistent) against central finite differences of its residual, where
@@ -17,9 +18,9 @@
  * whose residual and tangent must be finite.
  */
 
-#include <tribos/contact/contact_element.h>
-#include <tribos/contact/lagrange_multiplier.h>
-#include <tribos/contact/penalty.h>
+#include <tribos/contact/element/contact_element.h>
+#include <tribos/contact/enforcement/lagrange_multiplier.h>
+#include <tribos/contact/enforcement/penalty.h>
 
 #include <cmath>
 #include <iostream>

@@ -1,3 +1,4 @@
+// ctest: labels quick
 /**
  * Unit test: the tangent A = dP/dF of every material against central finite
  * differences of P, in 2D and 3D, near the identity and at large strain.

@@ -8,7 +8,7 @@
 #ifndef tribos_tests_mortar_check_h
 #define tribos_tests_mortar_check_h
 
-#include <tribos/contact/contact_element.h>
+#include <tribos/contact/element/contact_element.h>
 
 #include <algorithm>
 #include <cmath>

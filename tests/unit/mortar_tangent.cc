@@ -20,9 +20,9 @@
  * of the forces vanishes).
  */
 
-#include <tribos/contact/lagrange_multiplier.h>
-#include <tribos/contact/mortar_element.h>
-#include <tribos/contact/penalty.h>
+#include <tribos/contact/enforcement/lagrange_multiplier.h>
+#include <tribos/contact/element/mortar_element.h>
+#include <tribos/contact/enforcement/penalty.h>
 
 #include <cmath>
 #include <iostream>

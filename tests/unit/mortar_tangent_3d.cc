@@ -1,3 +1,4 @@
+// ctest: labels slow
 /**
  * Unit test: the 3D mortar element's tangent (Sacado AD through the
  * auxiliary planes, the polygon clipping, the inverse bilinear maps, D, M,
@@ -19,9 +20,9 @@
  * M_jl).
  */
 
-#include <tribos/contact/lagrange_multiplier.h>
-#include <tribos/contact/mortar_element_3d.h>
-#include <tribos/contact/penalty.h>
+#include <tribos/contact/enforcement/lagrange_multiplier.h>
+#include <tribos/contact/element/mortar_element_3d.h>
+#include <tribos/contact/enforcement/penalty.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
+// ctest: labels quick
 /**
  * Unit test of the gmsh file reader read_msh_file() (std only, no deal.II:
- * g++ -std=c++17 -Iinclude tests/msh_file.cc source/scene/msh_file.cc).
+ * g++ -std=c++17 -Iinclude tests/unit/msh_file.cc source/scene/msh_file.cc).
  * A 2D mesh of two quadrilaterals with boundary lines and a point, written
  * as MSH 2.2 and as MSH 4.1, must read the same; then one malformed file
  * per rule of the reader (the cases a fuzz campaign found in the readers

@@ -1,3 +1,4 @@
+// ctest: labels quick
 /**
  * Unit test of the 3D smoothed master (SmoothedFace, NodeToSmoothedFace;
  * Contact/Master smoothing = averaged normals in 3D), on a warped 3 x 3
@@ -20,9 +21,9 @@
  *    the normal and spins with the face).
  */
 
-#include <tribos/contact/contact_element.h>
-#include <tribos/contact/lagrange_multiplier.h>
-#include <tribos/contact/penalty.h>
+#include <tribos/contact/element/contact_element.h>
+#include <tribos/contact/enforcement/lagrange_multiplier.h>
+#include <tribos/contact/enforcement/penalty.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// ctest: labels quick
 /**
  * Unit test: SparseDirect's solve of saddle-point systems with the
  * multipliers eliminated (a regularized elimination preconditioning

@@ -4,15 +4,18 @@ half-distance between the midpoints of the stick/slip transitions on both
 sides, must match c = a sqrt(1 - Q/(mu P)) within 10 %; a is the Hertz
 half-width for the measured P (elastically similar bodies: E* = E/(2(1 -
 nu^2)), no normal-tangential coupling)."""
+# ctest: cases penalty lagrange
+# ctest: quick-cases penalty
 
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
-# Optional 4th argument: the enforcement (default penalty).
-method = sys.argv[4] if len(sys.argv) > 4 else "penalty"
+# The case (argv[4]): the enforcement, penalty or lagrange (multipliers).
+method = {"penalty": "penalty", "lagrange": "lagrange multiplier"}[
+    sys.argv[4] if len(sys.argv) > 4 else "penalty"]
 E, nu, R, mu = 1.0, 0.3, 1.0, 0.3
 e_star = E / (2 * (1 - nu * nu))
 steps = 6

@@ -1,6 +1,6 @@
 """The nodal contact fields of the VTU are one physical value per node.
 
-A block (tests/sliding_block.prm: nu = 0, pressed onto a rigid plane with
+A block (tests/data/sliding_block.prm: nu = 0, pressed onto a rigid plane with
 mu = 0.3) whose bottom (id 2) and left side (id 0) are two slave surfaces
 against the same plane: the corner node (0, 0) is a slave of both pairs and
 touches the plane in both with the same gap. Its CPRESS must be the
@@ -10,14 +10,13 @@ CSTATUS stick (1), not stick + stick (2, which reads as slip). Penalty and
 multipliers must agree: with multipliers the second pair leaves the node
 to the first, which takes over its tributary area. Frictionless, a closed
 node reports CSTATUS 3 (closed, no tangential state), not stick."""
+# ctest: labels quick
 
 import os
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "tools"))
 from vtu import nodal_values  # noqa: E402
 
 tribos, tests, out = setup(sys.argv)

@@ -4,12 +4,12 @@ tet10, hex20 and hex27 read with their mid-side, face and centre nodes
 positions) with Polynomial degree = 2.
 
 - The geometry: a body force's reaction is the volume. The quarter disc
-  (tests/quarter_disc_*.msh) on curved P2/Q2 has the area pi / 4 within
+  (tests/data/quarter_disc_*.msh) on curved P2/Q2 has the area pi / 4 within
   2e-5 (measured 9.8e-6 on tri6, 6.1e-7 on quad8 and quad9); with
   Polynomial degree = 1 the cells are straight (a warning says so) and
   the area is 2.9e-3 short. Scene/Refinement = 2 keeps the coarse cells'
   curved geometry (the same area to 1e-12), and so does `mpirun -np 2`
-  on a distributed mesh. The ball octant (tests/ball_octant_*.msh):
+  on a distributed mesh. The ball octant (tests/data/ball_octant_*.msh):
   the volume of gmsh's own element maps to 1e-9 (gmsh 4.8.4's
   getJacobians integrated with its Gauss8 rule: tet10 0.523454964704,
   hex20 0.524305263735, hex27 0.523553253599; the hex20 serendipity map
@@ -18,31 +18,34 @@ positions) with Polynomial degree = 2.
 - VTU of a curved mesh: the edge middles sit on the sphere (curved
   quadratic output), not on its chords.
 - Symmetry planes on tetrahedra: the paper's cylinder as a gmsh 1/8
-  model (tests/cylinder_octant_tet10.msh) compressed 1 % by a Dirichlet
+  model (tests/data/cylinder_octant_tet10.msh) compressed 1 % by a Dirichlet
   top: Symmetry = 1, 2, 3 gives the force of the same planes held by
   Dirichlet conditions to 1e-10 (deal.II 9.4's no-normal-flux constraints
   left the edges where two planes meet free to slide: 1 % off on P2, 2 %
   on P1). On curved P2 the force is E eps pi r^2 / 4 within 1e-4
   (measured 2.1e-5; straight P1: 1.7 % off). Between frictionless rigid
   plates with multipliers: the Dirichlet force to 1e-10. The same on
-  curved hex27 (tests/cylinder_octant_hex27.msh: gmsh's hexahedra split
+  curved hex27 (tests/data/cylinder_octant_hex27.msh: gmsh's hexahedra split
   from tetrahedra, where deal.II's constraints were 0.15 % off too):
   Symmetry = Dirichlet, the force within 1e-3 of E eps pi r^2 / 4
   (measured 9.9e-6), and the rigid plate on the nine-node faces with
   multipliers = Dirichlet to 1e-10.
-- A press fit in 3D (tests/press_fit_3d.prm): two spherical shells
+- A press fit in 3D (tests/data/press_fit_3d.prm): two spherical shells
   meshed separately with curved hex27 (non-matching on r = b, 129 and 39
   nine-node faces), the inner one pressed by a pressure on its inside,
   frictionless mortar with multipliers: all 547 slave nodes closed,
   Lame's thick-sphere pressure to 2.5e-2 RMS (bound 0.04; with the
   standard quadratic functions' dual basis it was 5.2e-2, 8.2e-2 at the
   vertices), the resultant within 1e-2 (measured 2.4e-3); Q1 on the same
-  mesh does not fit (49 of 145 closed).
-- Q2 hexahedra (the upper block of tests/patch_test_3d.prm) on a rigid
+  mesh does not fit (49 of 145 closed). The curved run solves with MUMPS
+  (Linear solver/Direct solver = Amesos_Mumps): the default direct solve
+  of its 29 574 dofs and 1641 multipliers took about 70 s, MUMPS about
+  25 s, with the same RMS and resultant to 7 digits.
+- Q2 hexahedra (the upper block of tests/data/patch_test_3d.prm) on a rigid
   plane: every vertex, edge middle and face centre of the nine-node faces
   carries the applied pressure, to 1e-12 with multipliers and 1e-8 with
   penalty.
-- A press fit (tests/press_fit.prm): two rings meshed separately with
+- A press fit (tests/data/press_fit.prm): two rings meshed separately with
   curved cells, the inner one pressed into the outer one by a pressure on
   its inside, frictionless mortar contact with multipliers on the circle
   between them (non-matching): every slave node closed, the pressure
@@ -51,15 +54,27 @@ positions) with Polynomial degree = 2.
   (Polynomial degree = 1) the two polygons do not fit and the pressure is
   off by more than 20 % (measured: 14 of its 29 nodes closed, up to 219 %).
 - Contact on curved faces, load-controlled Hertz on a rigid plane with
-  multipliers: 2D on tests/hertz_2d_tri6.msh (curved tri6 of
+  multipliers: 2D on tests/data/hertz_2d_tri6.msh (curved tri6 of
   benchmarks/peers/hertz_2d.geo) below 3.5 % (measured 2.8 %; the same
-  nodes straight: 5.2 %); 3D on tests/hertz_3d_tet10.msh (curved tet10
+  nodes straight: 5.2 %); 3D on tests/data/hertz_3d_tet10.msh (curved tet10
   of hertz_3d.geo, 16236 dofs) below 4.5 % (measured 3.9 %; straight:
   5.7 %) in at most 8 Newton iterations, the contact carrying the
   applied load to 1e-4 (the straight top's facets lose 0.64 % of it).
 - The 2D Hertz on the curved mesh with `mpirun -np 2` (distributed mesh)
   gives the serial history, and restarted from a checkpoint every force
-  bit for bit."""
+  bit for bit.
+
+Cases (argv[4]; without one, both run):
+  serial  every run without mpirun.
+  mpi     the two MPI comparisons (two cores, one MPI test at a time): the
+          quarter disc of curved tri6 at Refinement = 1 with -np 2 on a
+          distributed mesh against its serial area to 1e-12; the 2D Hertz on
+          curved tri6 (two load steps) with -np 2 against the serial forces
+          to 1e-9, each with its serial run.
+"""
+# ctest: cases serial mpi
+# ctest: mpirun-cases mpi
+# ctest: slow-cases serial
 
 import base64
 import glob
@@ -70,16 +85,15 @@ import struct
 import sys
 import zlib
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "benchmarks", "peers"))
 
 import hertz_error  # noqa: E402
-from tribos_test import (setup, run, read_csv, check, finish,  # noqa: E402
-                         mpi_available)
+from tribos_testing import (PARAMETERS, REPOSITORY, setup, run, read_csv,  # noqa: E402
+                            check, finish, parts, mpi_part)
 
 tribos, tests, out = setup(sys.argv)
-parameters = os.path.join(tests, "..", "parameters")
-peers = os.path.join(tests, "..", "benchmarks", "peers")
+selected = parts(sys.argv, ("serial", "mpi"))
+parameters = PARAMETERS
+peers = os.path.join(REPOSITORY, "benchmarks", "peers")
 p2 = "Finite element/Polynomial degree=2"
 
 
@@ -100,7 +114,53 @@ def disc(folder, mesh, sets=(), mpi_ranks=0):
     return reaction(folder, "RF2_y") / 1e-3, result
 
 
+# Hertz on a rigid plane, load control.
+def hertz(folder, dim, mesh, sets=(), mpi_ranks=0):
+    prm = (peers + "/hertz_2d_load.prm" if dim == 2
+           else parameters + "/hertz_3d_load.prm")
+    run(tribos, prm, folder,
+        ["Scene/Name=gmsh", "Scene/Mesh file=%s/%s" % (tests, mesh), p2,
+         "Contact/Method=lagrange multiplier", "Output/Write VTU=false"]
+        + list(sets), mpi_ranks=mpi_ranks)
+    points = hertz_error.read_tribos_contact(
+        sorted(glob.glob(folder + "/contact-*.csv"))[-1], dim)
+    force = hertz_error.read_tribos_force(folder + "/history.csv")
+    factor, radius, young = (2, 1.0, 1.0) if dim == 2 else (4, 10.0, 2e5)
+    error = hertz_error.profile_error(points, factor * force, radius,
+                                      young / (1 - 0.3 ** 2), dim)
+    row = read_csv(folder + "/history.csv")[-1]
+    return error, factor * force, row["newton_iterations_all"]
+
+
+# The MPI part: case mpi.
 exact = math.pi / 4
+if "mpi" in selected and mpi_part(selected):
+    area, _ = disc(out + "/disc_np2", "tri6",
+                   [p2, "Parallel/Mesh=distributed", "Scene/Refinement=1"],
+                   mpi_ranks=2)
+    serial, _ = disc(out + "/disc_tri6_r1", "tri6",
+                     [p2, "Scene/Refinement=1"])
+    check(abs(area / serial - 1) < 1e-12,
+          "quarter disc, curved tri6, -np 2 on a distributed mesh: the "
+          "serial area %.10f (to %.1e)" % (area, abs(area / serial - 1)))
+    serial = out + "/hertz_2d_np1"
+    hertz(serial, 2, "hertz_2d_tri6.msh", ["Time stepping/Number of steps=2"])
+    history = read_csv(serial + "/history.csv")
+    forces = [k for k in history[0] if k.startswith(("RF", "pair0"))]
+    parallel = out + "/hertz_2d_np2"
+    hertz(parallel, 2, "hertz_2d_tri6.msh",
+          ["Parallel/Mesh=distributed", "Time stepping/Number of steps=2"],
+          mpi_ranks=2)
+    worst = max(abs(a[k] - b[k]) / max(abs(a[k]), 1e-12)
+                for a, b in zip(history, read_csv(parallel + "/history.csv"))
+                for k in forces)
+    check(worst < 1e-9, "Hertz 2D on curved tri6: -np 2 on a distributed "
+          "mesh gives the serial forces (worst relative difference %.1e)"
+          % worst)
+if "serial" not in selected:
+    finish()
+
+# The quarter disc (its -np 2 run: case mpi).
 for mesh, bound in (("tri6", 2e-5), ("quad8", 2e-5), ("quad9", 2e-5)):
     area, _ = disc(out + "/disc_" + mesh, mesh, [p2])
     check(abs(area / exact - 1) < bound,
@@ -125,15 +185,6 @@ check(area / exact - 1 < -1e-3
       and "Polynomial degree = 1 takes their vertices only" in result.stderr,
       "quarter disc, quad9 with Polynomial degree = 1: straight cells, area "
       "%.1e short, with the warning" % (1 - area / exact))
-if mpi_available():
-    area, _ = disc(out + "/disc_np2", "tri6",
-                   [p2, "Parallel/Mesh=distributed", "Scene/Refinement=1"],
-                   mpi_ranks=2)
-    serial, _ = disc(out + "/disc_tri6_r1", "tri6",
-                     [p2, "Scene/Refinement=1"])
-    check(abs(area / serial - 1) < 1e-12,
-          "quarter disc, curved tri6, -np 2 on a distributed mesh: the "
-          "serial area %.10f (to %.1e)" % (area, abs(area / serial - 1)))
 
 # The ball octant: body force -1e-3 in z, u_z = 0 on z = 0.
 gmsh_volume = {"tet10": 0.523454964704, "hex20": 0.524305263735,
@@ -253,7 +304,7 @@ check(abs(force["symmetry"] / force["dirichlet"] - 1) < 1e-10 and
       % (abs(force["symmetry"] / force["dirichlet"] - 1), error,
          abs(contact / force["symmetry"] - 1)))
 
-# Q2 hexahedra on a rigid plane (the upper block of tests/patch_test_3d.prm,
+# Q2 hexahedra on a rigid plane (the upper block of tests/data/patch_test_3d.prm,
 # straight): each node of the nine-node faces carries the applied pressure
 # (their functions integrate to A/36, A/9 and 4A/9, all positive: the
 # node-wise law with those areas is the dual mortar against a plane).
@@ -319,7 +370,8 @@ def press_fit_3d(folder, sets=()):
     return errors, len(rows), rms, force_error
 
 
-errors, n, rms, force_error = press_fit_3d(out + "/press_fit_3d_hex27")
+errors, n, rms, force_error = press_fit_3d(
+    out + "/press_fit_3d_hex27", ["Linear solver/Direct solver=Amesos_Mumps"])
 check(len(errors) == n and rms < 0.04 and abs(force_error) < 0.01,
       "press fit of curved hex27 spherical shells, mortar on nine-node "
       "faces, multipliers: all %d slave nodes closed, Lame's pressure to "
@@ -333,24 +385,6 @@ check(len(errors) < n or rms > 0.5,
       "press fit in 3D on the straight cells of the same mesh (Q1): the "
       "faceted spheres do not fit, %d of %d slave nodes closed, pressure "
       "%.1f RMS off" % (len(errors), n, rms))
-
-# Hertz on a rigid plane, load control.
-def hertz(folder, dim, mesh, sets=(), mpi_ranks=0):
-    prm = (peers + "/hertz_2d_load.prm" if dim == 2
-           else parameters + "/hertz_3d_load.prm")
-    run(tribos, prm, folder,
-        ["Scene/Name=gmsh", "Scene/Mesh file=%s/%s" % (tests, mesh), p2,
-         "Contact/Method=lagrange multiplier", "Output/Write VTU=false"]
-        + list(sets), mpi_ranks=mpi_ranks)
-    points = hertz_error.read_tribos_contact(
-        sorted(glob.glob(folder + "/contact-*.csv"))[-1], dim)
-    force = hertz_error.read_tribos_force(folder + "/history.csv")
-    factor, radius, young = (2, 1.0, 1.0) if dim == 2 else (4, 10.0, 2e5)
-    error = hertz_error.profile_error(points, factor * force, radius,
-                                      young / (1 - 0.3 ** 2), dim)
-    row = read_csv(folder + "/history.csv")[-1]
-    return error, factor * force, row["newton_iterations_all"]
-
 
 for dim, mesh, bound, load in ((2, "hertz_2d_tri6.msh", 0.035, 0.01),
                                (3, "hertz_3d_tet10.msh", 0.045, 50e3)):
@@ -368,17 +402,6 @@ for dim, mesh, bound, load in ((2, "hertz_2d_tri6.msh", 0.035, 0.01),
 serial = out + "/hertz_2d"
 history = read_csv(serial + "/history.csv")
 forces = [k for k in history[0] if k.startswith(("RF", "pair0"))]
-if mpi_available():
-    parallel = out + "/hertz_2d_np2"
-    hertz(parallel, 2, "hertz_2d_tri6.msh",
-          ["Parallel/Mesh=distributed", "Time stepping/Number of steps=2"],
-          mpi_ranks=2)
-    worst = max(abs(a[k] - b[k]) / max(abs(a[k]), 1e-12)
-                for a, b in zip(history, read_csv(parallel + "/history.csv"))
-                for k in forces)
-    check(worst < 1e-9, "Hertz 2D on curved tri6: -np 2 on a distributed "
-          "mesh gives the serial forces (worst relative difference %.1e)"
-          % worst)
 restarted = out + "/hertz_2d_restart"
 shutil.copytree(serial, restarted)
 run(tribos, peers + "/hertz_2d_load.prm", restarted,

@@ -13,8 +13,8 @@ import math
 import sys
 import time
 
-from analytic import cylinder_force
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing.analytic import cylinder_force
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 r = 6.35
@@ -25,14 +25,14 @@ def analytic(k):
     return cylinder_force(k, math.pi * r * r)
 
 
-prm2 = tests + "/../parameters/cylinder_compression_axisymmetric.prm"
+prm2 = PARAMETERS + "/cylinder_compression_axisymmetric.prm"
 times = {}
 results = {}
 for name, prm, sets in (
         ("axisymmetric", prm2, []),
         ("axisymmetric lagrange", prm2,
          ["Contact/Method=lagrange multiplier"]),
-        ("3D", tests + "/../parameters/cylinder_compression.prm", [])):
+        ("3D", PARAMETERS + "/cylinder_compression.prm", [])):
     start = time.time()
     run(tribos, prm, out + "/" + name.replace(" ", "_"),
         sets + ["Output/Write VTU=false"])

@@ -12,8 +12,8 @@ with eps_N; writes the force-vs-displacement table doc-style to stdout."""
 import math
 import sys
 
-from analytic import j2_forces, polygon_section
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing.analytic import j2_forces, polygon_section
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 r = 6.35
@@ -25,7 +25,7 @@ def forces(stretches):
     return j2_forces(stretches, area)
 
 
-prm = tests + "/../parameters/cylinder_compression.prm"
+prm = PARAMETERS + "/cylinder_compression.prm"
 final_errors = {}
 # The paper's penalties 10 E, 100 E, 1000 E: absolute values in its units
 # (E = 206.9, lengths in mm).

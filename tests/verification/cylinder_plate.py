@@ -11,8 +11,8 @@ nominal plate stretch the penalty error is reported and bounded by 0.5 %."""
 
 import sys
 
-from analytic import neo_hookean_stress, polygon_section
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing.analytic import neo_hookean_stress, polygon_section
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 E, nu, r, half = 206.9, 0.29, 6.35, 6.35
@@ -23,7 +23,7 @@ def force(stretch):
     return neo_hookean_stress(stretch, E, nu, 2) * area
 
 
-run(tribos, tests + "/../parameters/cylinder_compression.prm", out,
+run(tribos, PARAMETERS + "/cylinder_compression.prm", out,
     ["Output/Write VTU=false", "Materials/Model=neo-Hookean"])
 rows = read_csv(out + "/history.csv")
 check(len(rows) == 25 and rows[-1]["time"] == 25, "all 25 steps")

@@ -2,10 +2,11 @@
 bodies (E = 3 each, listed per body id) carry the exact uniaxial force. A
 single square whose physical tag is 100 is one body (the log and
 summary.txt count distinct body ids, not the largest id + 1)."""
+# ctest: labels quick
 
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 run(tribos, tests + "/gmsh_import.prm", out,

@@ -10,7 +10,7 @@ error of the pressure profile."""
 import math
 import sys
 
-from tribos_test import setup, run, check, finish, hertz_compare
+from tribos_testing import PARAMETERS, setup, run, check, finish, hertz_compare
 
 tribos, tests, out = setup(sys.argv)
 E, nu, R = 1.0, 0.3, 1.0
@@ -29,7 +29,7 @@ def verify(name, dim, folder, e_star, bound, force_scale):
     check(n >= 10, "%s: at least 10 nodes in contact" % name)
 
 
-prm = tests + "/../parameters/hertz_2d.prm"
+prm = PARAMETERS + "/hertz_2d.prm"
 run(tribos, prm, out + "/rigid")
 verify("2D on rigid plane", 2, out + "/rigid", E / (1 - nu * nu), 0.03, 1)
 
@@ -47,7 +47,7 @@ run(tribos, prm, out + "/block_smoothed", [
 verify("2D on elastic block, smoothed master", 2, out + "/block_smoothed",
        E / (2 * (1 - nu * nu)), 0.03, 1)
 
-prm3 = tests + "/../parameters/hertz_3d.prm"
+prm3 = PARAMETERS + "/hertz_3d.prm"
 run(tribos, prm3, out + "/sphere")
 # quarter model: the full load is four times the modelled one
 verify("3D sphere on rigid plane", 3, out + "/sphere", E / (1 - nu * nu),

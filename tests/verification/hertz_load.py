@@ -16,10 +16,10 @@ Penalty (the default) and Lagrange multipliers, both starts."""
 
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish, hertz_compare
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish, hertz_compare
 
 tribos, tests, out = setup(sys.argv)
-prm = tests + "/../parameters/hertz_3d_load.prm"
+prm = PARAMETERS + "/hertz_3d_load.prm"
 E, nu, R, P = 2e5, 0.3, 10.0, 50e3
 forces = []
 

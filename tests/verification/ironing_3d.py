@@ -12,7 +12,12 @@ Asserts:
   plane-strain model): vertical and horizontal within 2 % at t = 1, 1.2
   and 1.3 (the 2D run at its own step, 0.01);
 * with Lagrange multipliers the same, within 2 % of the penalty run's 3D
-  forces.
+  forces;
+* the 2D run (smoothed master, penalty) completes the full 1 mm press and
+  the first 0.6 mm of sliding (past the 0.44 mm where the faceted master
+  stops), with an apparent friction ratio Fx/Fy of the punch near mu
+  (0.2 to 0.5; the check of tests/robustness/robustness.py's ironing, whose
+  penalty run this is).
 Before the smoothed 3D master (Master smoothing was 2D only) the faceted
 run stopped at t = 1.22 after 6 cutbacks with the residual stalled at a
 face edge.
@@ -20,10 +25,10 @@ face edge.
 
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
-parameters = tests + "/../parameters/"
+parameters = PARAMETERS + "/"
 END = 1.3
 TIMES = (1.0, 1.2, 1.3)
 
@@ -42,7 +47,11 @@ run(tribos, parameters + "ironing.prm", folder_2d,
     ["Time stepping/End time=%g" % END,
      "Time stepping/Number of steps=%d" % round(END / 0.01),
      "Output/Write VTU=false"])
-_, reference = forces(folder_2d, "RF13_y", "RF13_x")
+rows_2d, reference = forces(folder_2d, "RF13_y", "RF13_x")
+ratio = abs(rows_2d[-1]["RF13_x"] / rows_2d[-1]["RF13_y"])
+check(rows_2d[-1]["time"] > 1.299 and 0.2 < ratio < 0.5,
+      "ironing, penalty: press and 0.6 mm sliding complete, apparent "
+      "friction ratio Fx/Fy = %.3f (mu = 0.3)" % ratio)
 
 n_steps = round(END / 0.02)
 results = {}

@@ -1,5 +1,5 @@
 """Locking: plane-strain compression of a J2-plastic block between rough
-platens (tests/j2_barrelling.prm, 20 %, Refinement = 1). Plain Q1 locks
+platens (tests/data/j2_barrelling.prm, 20 %, Refinement = 1). Plain Q1 locks
 under the isochoric plastic flow; the F-bar element and Q2 do not. Asserts
 the F-bar tangent (global finite-difference check in every iteration of a
 short run) to 1e-6, F-bar within 6 % of Q2 and plain Q1 more than 30 % above
@@ -16,7 +16,7 @@ is checked by finite differences as well."""
 import re
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 prm = tests + "/j2_barrelling.prm"
@@ -49,7 +49,7 @@ for name, sets in (("Q1", [q1_degree]),
                    ("Q1 F-bar", [q1_degree, "Finite element/F-bar=true"]),
                    ("Q2", ["Finite element/Polynomial degree=2"])):
     folder = out + "/strip_" + name.replace(" ", "_")
-    run(tribos, tests + "/../parameters/necking_bar.prm", folder, sets + [
+    run(tribos, PARAMETERS + "/necking_bar.prm", folder, sets + [
         "Finite element/Axisymmetric=false", "Time stepping/End time=%r"
         % (40 / 70), "Time stepping/Number of steps=40",
         "Output/Write VTU=false"])
@@ -62,7 +62,7 @@ check(fbar < 0.01, "necking strip: F-bar vs Q2 %.2f %% < 1 %%" % (100 * fbar))
 check(q1 > 0.02, "necking strip: plain Q1 vs Q2 %.2f %% (locking)"
       % (100 * q1))
 # Axisymmetric: the hoop stretch enters the centre's volume change.
-bar = tests + "/../parameters/necking_bar.prm"
+bar = PARAMETERS + "/necking_bar.prm"
 q1_fbar = [q1_degree, "Finite element/F-bar=true"]
 result = run(tribos, bar, out + "/bar_check", q1_fbar + [
     "Nonlinear solver/Check tangent=true", "Time stepping/End time=0.1",

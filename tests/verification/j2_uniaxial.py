@@ -1,15 +1,16 @@
 """Verification: J2 plasticity in homogeneous uniaxial compression and
-unloading (tests/j2_uniaxial.prm) against the 1D integration of the same
+unloading (tests/data/j2_uniaxial.prm) against the 1D integration of the same
 law: in logarithmic strain, uniaxial Kirchhoff stress tau = E (ln(lambda)
 - eps_p), von Mises |tau| <= sigma_y(alpha) with the hardening (36),
 backward-Euler return; the nominal force is tau / lambda on the unit
 section. Loading, elastic unloading and reverse yielding must agree within
 0.1 % (measured to ~1e-9)."""
+# ctest: labels quick
 
 import sys
 
-from analytic import J2Uniaxial
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing.analytic import J2Uniaxial
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 run(tribos, tests + "/j2_uniaxial.prm", out)

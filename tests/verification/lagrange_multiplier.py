@@ -17,7 +17,7 @@ The differences and ratios are printed (they are quoted in doc/contact.md).
 
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish, hertz_compare
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish, hertz_compare
 
 tribos, tests, out = setup(sys.argv)
 E, nu, R = 1.0, 0.3, 1.0
@@ -39,7 +39,7 @@ def spacing(folder, step):
 
 
 # Hertz, rigid plane and elastic block.
-hertz = tests + "/../parameters/hertz_2d.prm"
+hertz = PARAMETERS + "/hertz_2d.prm"
 block = ["Scene/Cylinder over block/With block=true", "Contact/Pairs=10 : 3",
          "Boundary conditions/Dirichlet=11 : xy : 0, -0.01*t ; 2 : xy : 0, 0"]
 for name, sets, e_star in (("rigid", [], E / (1 - nu * nu)),
@@ -59,7 +59,7 @@ for name, sets, e_star in (("rigid", [], E / (1 - nu * nu)),
 # Hertz 3D (quarter sphere, one level coarser than parameters/hertz_3d.prm;
 # the saddle point needs the direct solver).
 folder = out + "/hertz_3d"
-run(tribos, tests + "/../parameters/hertz_3d.prm", folder, [
+run(tribos, PARAMETERS + "/hertz_3d.prm", folder, [
     LM, "Linear solver/Type=direct",
     "Scene/Cylinder over block/Contact refinements=3"])
 a, p0, a_h, p0_h, profile, n, P = hertz_compare(folder, 3, E / (1 - nu * nu),

@@ -2,12 +2,14 @@
 phi = prod sin(pi x_i), for small-strain linear elasticity on a shifted
 box (non-zero Dirichlet data on every face). Asserts the optimal rates
 p + 1 in L2 and p in the H1 seminorm for Q1 and Q2 in 2D and 3D, and for
-P1 and P2 on the same boxes split into triangles and tetrahedra."""
+P1 and P2 on the same boxes split into triangles and tetrahedra. A rate
+is taken from the two finest levels of a case, which are the levels run
+(and printed)."""
 
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 E, nu, a = 1.0, 0.3, 0.01
@@ -36,9 +38,9 @@ def expressions(dim):
 
 # (dimension, degree, cells): levels of Scene/Refinement. "simplices":
 # every cell split into 8 triangles or 24 tetrahedra (P1, P2).
-cases = {(2, 1, "as meshed"): range(0, 4), (2, 2, "as meshed"): range(0, 3),
-         (3, 1, "as meshed"): range(0, 3), (3, 2, "as meshed"): range(0, 3),
-         (2, 1, "simplices"): range(0, 3), (2, 2, "simplices"): range(0, 3),
+cases = {(2, 1, "as meshed"): range(2, 4), (2, 2, "as meshed"): range(1, 3),
+         (3, 1, "as meshed"): range(1, 3), (3, 2, "as meshed"): range(1, 3),
+         (2, 1, "simplices"): range(1, 3), (2, 2, "simplices"): range(1, 3),
          (3, 1, "simplices"): range(0, 2), (3, 2, "simplices"): range(0, 2)}
 for (dim, degree, cells), levels in cases.items():
     name = ("Q%d" if cells == "as meshed" else "P%d") % degree

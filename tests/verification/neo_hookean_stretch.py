@@ -1,12 +1,13 @@
 """Verification: uniaxial stretch of a neo-Hookean block against the
 analytic homogeneous solution (2D plane strain and 3D), and quadratic
 convergence of Newton (observed order >= 1.8 near convergence)."""
+# ctest: labels quick
 
 import math
 import sys
 
-from analytic import neo_hookean_stress
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing.analytic import neo_hookean_stress
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 E, nu = 1.0, 0.3

@@ -1,4 +1,4 @@
-"""Newton convergence under large frictional sliding (tests/ironing_2d.prm:
+"""Newton convergence under large frictional sliding (tests/data/ironing_2d.prm:
 a neo-Hookean half cylinder slid across a deformable block, mu = 0.3).
 With Tangent = consistent (verified exact to 1e-10 by Nonlinear
 solver/Check tangent) the observed order near convergence must be >= 1.8
@@ -12,7 +12,7 @@ Newton) must show the same median order >= 1.8."""
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 results = {}

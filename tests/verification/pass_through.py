@@ -1,14 +1,14 @@
 """Bodies that pass through each other within one increment (issue 56).
 
 (1) Mortar, a punch pushed into a block by more than an element in one
-    increment (tests/pass_through.prm): the search skipped master faces
+    increment (tests/data/pass_through.prm): the search skipped master faces
     more than a segment behind an open slave node, and the run completed
     with normal force 0 and the penetrated nodes reported open (COPEN =
     +0.29 for nodes 0.29 inside). Now one increment gives the force of ten
     (to the Newton tolerance), penalty and multipliers, quadrilaterals and
     hexahedra, and no slave node reports an open gap.
 (2) A rigid circle moved through a thin strip by four radii in one
-    increment (tests/tunnelling.prm): every node is outside the circle at
+    increment (tests/data/tunnelling.prm): every node is outside the circle at
     the increment's start and end, so the end gaps closed the increment
     with zero force. Now the swept path is checked: the increment is cut
     back until the circle cannot jump over a node, and the result equals
@@ -16,7 +16,7 @@
 
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 

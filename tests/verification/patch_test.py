@@ -1,4 +1,4 @@
-"""Contact patch test (tests/patch_test.prm): two stacked blocks with
+"""Contact patch test (tests/data/patch_test.prm): two stacked blocks with
 non-matching meshes (upper 3 cells across, lower 5), the lower one on
 rollers, the upper one loaded by a uniform pressure p on its top. Exact
 solution: uniform compression, a flat loaded surface and, at every node of
@@ -21,16 +21,15 @@ penalty grows (force error and flatness below 2e-5 at k = 1e6 and at least
 O(1/k)); one-pass node-to-segment fails it by a finite amount, whatever the
 penalty (above 1 % with either side as slave, with penalty and with
 multipliers alike). The measured values are a regression (numdiff against
-tests/patch_test.reference.csv) and are reported in doc/contact.md."""
+tests/data/patch_test.reference.csv) and are reported in doc/contact.md."""
+# ctest: labels quick
 
 import os
 import shutil
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish, numdiff
+from tribos_testing import updating_references, reference_updated, setup, run, read_csv, check, finish, numdiff
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "tools"))
 from vtu import nodal_values  # noqa: E402
 
 tribos, tests, out = setup(sys.argv)
@@ -112,8 +111,10 @@ result = out + "/patch_test.csv"
 with open(result, "w") as f:
     f.write("\n".join(lines) + "\n")
 reference = tests + "/patch_test.reference.csv"
-if os.environ.get("TRIBOS_UPDATE_REFERENCES") == "1":
+if updating_references():
     shutil.copy(result, reference)
+    reference_updated(reference)
+    finish()
 numdiff(result, reference, relative=1e-4, absolute=1e-8)
-print("ok      the measured errors match tests/patch_test.reference.csv")
+print("ok      the measured errors match tests/data/patch_test.reference.csv")
 finish()

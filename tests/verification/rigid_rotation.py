@@ -17,7 +17,7 @@ the penetration g_N n turn with the bodies."""
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 press_end = 0.1

@@ -11,10 +11,10 @@ reaction within 0.1 %, the augmented Lagrangian closer than the penalty."""
 import math
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
-prm = tests + "/../parameters/ring_on_foundation.prm"
+prm = PARAMETERS + "/ring_on_foundation.prm"
 final = {}
 for method in ("penalty", "augmented lagrangian", "lagrange multiplier"):
     folder = out + "/" + method.replace(" ", "_")

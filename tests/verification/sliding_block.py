@@ -5,19 +5,20 @@ stays below mu N; once all slip, it equals mu N to 1e-6 (node by node the
 return mapping puts |T| = mu t_N); the transition happens at the drag
 predicted by the stick stiffness; the accumulated slip equals the drag
 beyond that point, independent of the number of steps (CSV and VTU)."""
+# ctest: cases penalty lagrange
+# ctest: quick-cases penalty lagrange
 
 import os
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "tools"))
 from vtu import nodal_values  # noqa: E402
 
 tribos, tests, out = setup(sys.argv)
-# Optional 4th argument: the enforcement (default penalty).
-method = sys.argv[4] if len(sys.argv) > 4 else "penalty"
+# The case (argv[4]): the enforcement, penalty or lagrange (multipliers).
+method = {"penalty": "penalty", "lagrange": "lagrange multiplier"}[
+    sys.argv[4] if len(sys.argv) > 4 else "penalty"]
 mu = 0.3
 run(tribos, tests + "/sliding_block.prm", out,
     ["Time stepping/Number of steps=24", "Output/Frequency=4",

@@ -1,7 +1,7 @@
 """Contact on the triangle faces of linear tetrahedra (issue 45).
 
 - Mortar patch test on non-matching tetrahedral meshes (the two blocks of
-  tests/patch_test_3d.prm split by Finite element/Cells = simplices, 5 x 5
+  tests/data/patch_test_3d.prm split by Finite element/Cells = simplices, 5 x 5
   and 3 x 3 hexahedra per layer before the split), either block the
   slave, penalty and Lagrange multipliers: every active node carries the
   pressure of the hexahedral run to 1e-9. Node-to-segment on matching
@@ -11,7 +11,8 @@
   friction mu = 0.3, mortar with multipliers; up to t = 1.5): at full
   slip the
   tangential contact force is mu times the normal one to 1e-6;
-  `mpirun -np 2` gives the serial history (1e-9); restarted from its
+  `mpirun -np 2` gives the serial history (1e-9; through t = 1.25, at the
+  same step size: the press and the first slide step); restarted from its
   step-5 checkpoint it gives the uninterrupted history, every force bit
   for bit.
 - The same scene with node-to-segment contact and penalty: mu at full
@@ -26,28 +27,56 @@
   rigid plates (multipliers, 5 % in one step) gives the force of the
   prescribed homogeneous compression to 1e-10.
 - Hertz 3D under load control on a gmsh tetrahedral mesh
-  (tests/hertz_3d_tet.msh: benchmarks/peers/hertz_3d.geo with
+  (tests/data/hertz_3d_tet.msh: benchmarks/peers/hertz_3d.geo with
   -setnumber hex 0 -setnumber hf 0.15, 2433 dofs), rigid plane, penalty
   and multipliers: pressure L2 error against Hertz below 10 % (measured
   8.9 % and 9.1 %), at most 8 Newton iterations (5 and 6); with P2
   (16236 dofs) and multipliers below 7 % (measured 5.7 %, 7
-  iterations)."""
+  iterations).
+
+Cases (argv[4]; without one, both run):
+  serial  every run without mpirun.
+  mpi     the punch to t = 1.25 serially and with -np 2 (two cores, one MPI
+          test at a time): an MPI = serial comparison, which needs neither
+          the second slide step nor the checkpoints.
+"""
+# ctest: cases serial mpi
+# ctest: mpirun-cases mpi
+# ctest: slow-cases serial
 
 import glob
 import os
 import shutil
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "benchmarks", "peers"))
 
 import hertz_error  # noqa: E402
-from tribos_test import (setup, run, read_csv, check, finish,  # noqa: E402
-                         mpi_available)
+from tribos_testing import (PARAMETERS, REPOSITORY, setup, run, read_csv,  # noqa: E402
+                            check, finish, parts, mpi_part)
 
 tribos, tests, out = setup(sys.argv)
-parameters = os.path.join(tests, "..", "parameters")
+selected = parts(sys.argv, ("serial", "mpi"))
+parameters = PARAMETERS
 split = "Finite element/Cells=simplices"
+punch = parameters + "/punch_on_block_tet.prm"
+
+# The MPI part (case mpi): the punch pressed in 4 steps and slid in one.
+if "mpi" in selected and mpi_part(selected):
+    to_125 = ["Time stepping/End time=1.25", "Time stepping/Number of steps=5",
+              "Output/Write VTU=false"]
+    serial, parallel = out + "/punch_125", out + "/punch_125_np2"
+    run(tribos, punch, serial, to_125)
+    run(tribos, punch, parallel, to_125, mpi_ranks=2)
+    history = read_csv(serial + "/history.csv")
+    forces = [k for k in history[0] if k.startswith(("RF", "pair0"))]
+    worst = 0
+    for a, b in zip(history, read_csv(parallel + "/history.csv")):
+        for k in forces:
+            worst = max(worst, abs(a[k] - b[k]) / max(abs(a[k]), 1e-3))
+    check(worst < 1e-9, "punch on a block to t = 1.25: -np 2 forces equal "
+          "the serial ones (worst relative difference %.1e)" % worst)
+if "serial" not in selected:
+    finish()
 
 
 def pressures(folder):
@@ -82,7 +111,7 @@ for method in ("penalty", "lagrange multiplier"):
 
 
 # Every enforcement and both passes on P1 tetrahedra: the 3D sliding
-# blocks split (tests/sliding_blocks_3d.prm), mu at full slip.
+# blocks split (tests/data/sliding_blocks_3d.prm), mu at full slip.
 for name, sets in (("penalty", []),
                    ("two-pass", ["Contact/Passes=two-pass"]),
                    ("augmented", ["Contact/Method=augmented lagrangian"]),
@@ -139,7 +168,7 @@ check(row["n_slip"] == row["n_active"] > 20 and abs(ratio - 0.3) < 1e-6,
       "/ normal force %.9f (mu = 0.3)" % (row["n_slip"], ratio))
 
 # The cylinder compressed between frictionless rigid plates on P2
-# tetrahedra (tests/cylinder_3d.prm split): with multipliers the plate
+# tetrahedra (tests/data/cylinder_3d.prm split): with multipliers the plate
 # gives the homogeneous compression of the prescribed top displacement,
 # the same force at every step to round-off.
 one_step = [split, "Time stepping/Number of steps=1"]
@@ -167,7 +196,6 @@ def slip_ratio(folder):
     return row["pair0_tangential_force"] / row["pair0_normal_force"]
 
 
-punch = parameters + "/punch_on_block_tet.prm"
 # Up to t = 1.5: pressed in 4 steps, slid in 2 (every node slips from the
 # first slide step on).
 short = ["Time stepping/End time=1.5", "Time stepping/Number of steps=6",
@@ -186,16 +214,6 @@ check(abs(ratio - 0.3) < 1e-6, "punch on a block, node-to-segment, "
 
 history = read_csv(serial + "/history.csv")
 forces = [k for k in history[0] if k.startswith(("RF", "pair0"))]
-if mpi_available():
-    parallel = out + "/punch_np2"
-    run(tribos, punch, parallel, short, mpi_ranks=2)
-    worst = 0
-    for a, b in zip(history, read_csv(parallel + "/history.csv")):
-        for k in forces:
-            worst = max(worst, abs(a[k] - b[k]) / max(abs(a[k]), 1e-3))
-    check(worst < 1e-9, "punch on a block: -np 2 forces equal the serial "
-          "ones (worst relative difference %.1e)" % worst)
-
 restarted = out + "/punch_restart"
 shutil.rmtree(restarted, ignore_errors=True)
 shutil.copytree(serial, restarted)
@@ -208,7 +226,7 @@ check(same, "punch on a block: restarted from step 5, every force of "
       "history.csv equals the uninterrupted run's bit for bit")
 
 # Hertz 3D on tetrahedra, load control.
-peers = os.path.join(tests, "..", "benchmarks", "peers")
+peers = os.path.join(REPOSITORY, "benchmarks", "peers")
 bounds = {1: 0.10, 2: 0.07}
 for degree, method in ((1, "penalty"), (1, "lagrange multiplier"),
                        (2, "lagrange multiplier")):

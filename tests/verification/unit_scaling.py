@@ -1,5 +1,5 @@
 """Penalties and contact tolerances are free of the units: the frictional
-ironing of tests/ironing_2d.prm (neo-Hookean cylinder slid over a block,
+ironing of tests/data/ironing_2d.prm (neo-Hookean cylinder slid over a block,
 mu = 0.3, penalty 10 E/h) in its own units and scaled to metres and pascal
 from millimetres and megapascal (lengths x 1e-3, moduli x 1e6) gives, at
 every converged increment, the same Newton iterations and the same
@@ -9,7 +9,7 @@ and with Lagrange multipliers (whose semismooth parameters are E/h too)."""
 
 import sys
 
-from tribos_test import setup, run, read_csv, check, finish
+from tribos_testing import setup, run, read_csv, check, finish
 
 tribos, tests, out = setup(sys.argv)
 L, S = 1e-3, 1e6   # length and stress scales
