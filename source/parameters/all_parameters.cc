@@ -236,19 +236,22 @@ namespace tribos
         prm.parse_input(filename);
       }
       apply_overrides(prm, overrides);
-      // A relative Scene/Mesh file that is not beside the working
-      // directory is looked for beside the parameter file (the scenes of
-      // parameters/ name their meshes so, and run from anywhere).
+      // A relative Scene/Mesh file (or Input deck) that is not beside the
+      // working directory is looked for beside the parameter file (the
+      // scenes of parameters/ name their meshes so, and run from anywhere).
       if (!filename.empty())
       {
         prm.enter_subsection("Scene");
-        const std::filesystem::path mesh = prm.get("Mesh file");
-        const std::filesystem::path beside =
-          std::filesystem::path(filename).parent_path() / mesh;
-        if (!mesh.empty() && mesh.is_relative() &&
-            !std::filesystem::exists(mesh) &&
-            std::filesystem::is_regular_file(beside))
-          prm.set("Mesh file", beside.string());
+        for (const char *entry : {"Mesh file", "Input deck"})
+        {
+          const std::filesystem::path mesh = prm.get(entry);
+          const std::filesystem::path beside =
+            std::filesystem::path(filename).parent_path() / mesh;
+          if (!mesh.empty() && mesh.is_relative() &&
+              !std::filesystem::exists(mesh) &&
+              std::filesystem::is_regular_file(beside))
+            prm.set(entry, beside.string());
+        }
         prm.leave_subsection();
       }
     }

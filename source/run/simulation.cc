@@ -1,6 +1,7 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/base/interruption.h>
 #include <tribos/run/simulation.h>
+#include <tribos/scene/scene.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -53,6 +54,11 @@ namespace tribos
            << Utilities::MPI::n_mpi_processes(mpi_communicator)
            << " MPI process(es)";
     output->print(header.str());
+    // (The scene was built on the first process: in a distributed mesh
+    // only there.)
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      for (const auto &line : parameters.scene.geometry->describe())
+        output->print("  " + line);
     if (problem.contact() != nullptr)
       for (const auto &line : problem.contact()->describe())
         output->print("  " + line);

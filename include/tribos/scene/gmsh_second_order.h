@@ -11,6 +11,8 @@ namespace tribos
 {
   using namespace dealii;
 
+  struct MshFile;
+
   /**
    * gmsh meshes, first- or second-order, read by tribos's own reader
    * (read_msh_file(): every count, tag and reference checked, the line
@@ -32,6 +34,11 @@ namespace tribos
    * values: the quad8 centre is -1/4 of the corners' sum plus 1/2 of the
    * edge middles' sum, the hex20 centre -1/4 of the corners plus 1/4 of the
    * edge middles.
+   *
+   * The reader takes any MshFile, so that a mesh of another format
+   * converted to one (an Abaqus deck, read_inp_file()) is built the same
+   * way: the overloads of an MshFile start their messages with a given
+   * name; the element lines they name are those of MshFile::file.
    */
   namespace GmshSecondOrder
   {
@@ -46,6 +53,18 @@ namespace tribos
     template <int dim>
     bool
     read(const std::string                    &file,
+         Triangulation<dim>                   &triangulation,
+         std::vector<std::vector<Point<dim>>> &support_points);
+
+    /**
+     * As read(file, ...), of the already read @p mesh (what read() reads
+     * the file into), its messages starting with @p name (read() gives
+     * "Parameter <Scene/Mesh file> = <file>").
+     */
+    template <int dim>
+    bool
+    read(const MshFile                        &mesh,
+         const std::string                    &name,
          Triangulation<dim>                   &triangulation,
          std::vector<std::vector<Point<dim>>> &support_points);
 
@@ -71,6 +90,12 @@ namespace tribos
     template <int dim>
     unsigned int
     order(const std::string &file);
+
+    /** The order of the already read @p mesh, as order(file); messages
+     * start with @p name. */
+    template <int dim>
+    unsigned int
+    order(const MshFile &mesh, const std::string &name);
   } // namespace GmshSecondOrder
 } // namespace tribos
 
