@@ -20,8 +20,8 @@
  * of the forces vanishes).
  */
 
-#include <tribos/contact/enforcement/lagrange_multiplier.h>
 #include <tribos/contact/element/mortar_element.h>
+#include <tribos/contact/enforcement/lagrange_multiplier.h>
 #include <tribos/contact/enforcement/penalty.h>
 
 #include <cmath>

@@ -20,8 +20,8 @@
  * M_jl).
  */
 
-#include <tribos/contact/enforcement/lagrange_multiplier.h>
 #include <tribos/contact/element/mortar_element_3d.h>
+#include <tribos/contact/enforcement/lagrange_multiplier.h>
 #include <tribos/contact/enforcement/penalty.h>
 
 #include <algorithm>

@@ -1,9 +1,9 @@
 #ifndef tribos_contact_contact_handler_h
 #define tribos_contact_contact_handler_h
 
-#include <tribos/contact/state/chattering_monitor.h>
 #include <tribos/contact/contact_pair.h>
 #include <tribos/contact/search/pairing.h>
+#include <tribos/contact/state/chattering_monitor.h>
 #include <tribos/parameters/contact.h>
 
 #include <deal.II/base/index_set.h>

@@ -2,10 +2,10 @@
 #define tribos_contact_contact_pair_h
 
 #include <tribos/contact/discretization/contact_discretization.h>
-#include <tribos/contact/search/contact_search.h>
-#include <tribos/contact/surface/contact_surface.h>
 #include <tribos/contact/enforcement/enforcement.h>
+#include <tribos/contact/search/contact_search.h>
 #include <tribos/contact/state/node_state.h>
+#include <tribos/contact/surface/contact_surface.h>
 #include <tribos/contact/surface/rigid_surface.h>
 #include <tribos/parameters/contact.h>
 

@@ -515,8 +515,8 @@ namespace tribos
         // alpha: the biquadratic vertex functions integrate to only A/36
         // (the centre's 4A/9), and the vertices' multipliers, divided by so
         // little, scatter on distorted faces (the 3D press fit of
-        // tests/verification/curved_meshes.py: 8.2 % RMS at the vertices, 2.6 % with
-        // this basis, whose integrals are 9A/100 at the vertices, 3A/25 at
+        // tests/verification/curved_meshes.py: 8.2 % RMS at the vertices, 2.6 %
+        // with this basis, whose integrals are 9A/100 at the vertices, 3A/25 at
         // the edge middles and 4A/25 at the centre of a flat face of area
         // A).
         const double           alpha     = TriangleFace::modified_basis_alpha;

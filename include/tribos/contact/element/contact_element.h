@@ -2,8 +2,8 @@
 #define tribos_contact_contact_element_h
 
 #include <tribos/contact/enforcement/enforcement.h>
-#include <tribos/contact/surface/master_face.h>
 #include <tribos/contact/state/node_state.h>
+#include <tribos/contact/surface/master_face.h>
 #include <tribos/contact/surface/rigid_surface.h>
 #include <tribos/contact/surface/smoothed_face.h>
 #include <tribos/contact/surface/smoothed_segment.h>
