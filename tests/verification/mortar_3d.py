@@ -160,7 +160,7 @@ if "mpi" in selected and mpi_part(selected):
             hanging(pair, box, "lagrange multiplier", basis, ranks, mesh)
     # The sliding with hanging slave nodes at -np 2 against its serial run
     # (whose checks are the serial part's).
-    serial = out + "/hanging_sliding3d_np1"
+    serial = out + "/hanging_sliding3d_np1_reference"
     parallel = out + "/hanging_sliding3d_np2"
     run(tribos, sliding, serial, hanging_sliding)
     run(tribos, sliding, parallel, hanging_sliding, mpi_ranks=2)

@@ -70,8 +70,8 @@ def patch_sets(degree):
 # The MPI part: case mpi.
 if "mpi" in selected and mpi_part(selected):
     for degree in (1, 2):
-        folder = "%s/patch_p%d" % (out, degree)
-        parallel = folder + "_np2"
+        folder = "%s/patch_p%d_np1" % (out, degree)
+        parallel = "%s/patch_p%d_np2" % (out, degree)
         run(tribos, tests + "/patch_test.prm", folder, patch_sets(degree))
         run(tribos, tests + "/patch_test.prm", parallel, patch_sets(degree),
             mpi_ranks=2)
