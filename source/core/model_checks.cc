@@ -5,7 +5,7 @@
  */
 
 #include <tribos/base/text.h>
-#include <tribos/core/problem.h>
+#include <tribos/core/model_checks.h>
 #include <tribos/material/material_model.h>
 #include <tribos/scene/scene.h>
 
@@ -45,8 +45,11 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::support_warnings()
+  support_warnings(const Parameters::AllParameters &parameters,
+                   const Triangulation<dim>        &triangulation,
+                   Warnings                        &warnings)
   {
+    const MPI_Comm mpi_communicator = triangulation.get_communicator();
     // Nothing loads the model: the answer is the initial state.
     const auto &bc     = parameters.boundary_conditions;
     bool        loaded = !bc.neumann.empty() || !bc.body_force.empty() ||
@@ -56,10 +59,11 @@ namespace tribos
     for (const auto &surface : parameters.contact.rigid_surfaces)
       loaded = loaded || !all_zero(surface.motion);
     if (!loaded)
-      warn("nothing loads the model: no Neumann load, no body force, no "
-           "Dirichlet value other than 0, no moving rigid surface and no "
-           "dynamics, so the solution stays the initial state. Check "
-           "Boundary conditions and Contact/Rigid surfaces.");
+      warnings.warn(
+        "nothing loads the model: no Neumann load, no body force, no "
+        "Dirichlet value other than 0, no moving rigid surface and no "
+        "dynamics, so the solution stays the initial state. Check "
+        "Boundary conditions and Contact/Rigid surfaces.");
 
     // A body that neither a Dirichlet condition nor a contact pair touches
     // has rigid-body modes nothing holds (a singular static system).
@@ -88,18 +92,18 @@ namespace tribos
     touched = Utilities::MPI::compute_set_union(touched, mpi_communicator);
     for (const auto body : bodies)
       if (touched.count(body) == 0)
-        warn("body " + std::to_string(body) +
-             " has no Dirichlet or symmetry condition and no contact "
-             "surface: nothing holds its rigid-body motion (a singular "
-             "static system). Add a support or a contact pair, or "
-             "Nonlinear solver/Stabilization factor.");
+        warnings.warn(
+          "body " + std::to_string(body) +
+          " has no Dirichlet or symmetry condition and no contact "
+          "surface: nothing holds its rigid-body motion (a singular "
+          "static system). Add a support or a contact pair, or "
+          "Nonlinear solver/Stabilization factor.");
   }
 
 
 
-  template <int dim>
   double
-  Problem<dim>::machines_memory() const
+  machines_memory(const MPI_Comm mpi_communicator)
   {
     char name[MPI_MAX_PROCESSOR_NAME];
     int  length = 0;
@@ -124,8 +128,9 @@ namespace tribos
    */
   template <int dim>
   void
-  Problem<dim>::check_mesh_size(const unsigned int n_scene_cells,
-                                const double       memory) const
+  check_mesh_size(const Parameters::AllParameters &parameters,
+                  const unsigned int               n_scene_cells,
+                  const double                     memory)
   {
     const unsigned int refinement = parameters.scene.refinement;
     const unsigned int degree     = parameters.finite_element.degree;
@@ -159,7 +164,9 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::check_simplex_model()
+  check_simplex_model(const Parameters::AllParameters &parameters,
+                      const Triangulation<dim>        &triangulation,
+                      Warnings                        &warnings)
   {
     AssertThrow(triangulation.all_reference_cells_are_simplex(),
                 ExcMessage("Parameter <Scene/Mesh file>: the mesh mixes "
@@ -185,17 +192,39 @@ namespace tribos
       for (const std::string &model : parameters.materials.models)
         if (parameters.materials.model(model)->locks_on_linear_simplices())
         {
-          warn("Materials/Model = " + model +
-               " on linear triangles or tetrahedra (Finite "
-               "element/Polynomial degree = 1): P1 locks in isochoric "
-               "plastic flow (too stiff, wrong pressures) except in "
-               "homogeneous deformation. Use Polynomial degree = 2.");
+          warnings.warn("Materials/Model = " + model +
+                        " on linear triangles or tetrahedra (Finite "
+                        "element/Polynomial degree = 1): P1 locks in isochoric "
+                        "plastic flow (too stiff, wrong pressures) except in "
+                        "homogeneous deformation. Use Polynomial degree = 2.");
           break;
         }
   }
 
 
 
-  template class Problem<2>;
-  template class Problem<3>;
+  template void
+  check_mesh_size<2>(const Parameters::AllParameters &,
+                     const unsigned int,
+                     const double);
+  template void
+  check_mesh_size<3>(const Parameters::AllParameters &,
+                     const unsigned int,
+                     const double);
+  template void
+  check_simplex_model<2>(const Parameters::AllParameters &,
+                         const Triangulation<2> &,
+                         Warnings &);
+  template void
+  check_simplex_model<3>(const Parameters::AllParameters &,
+                         const Triangulation<3> &,
+                         Warnings &);
+  template void
+  support_warnings<2>(const Parameters::AllParameters &,
+                      const Triangulation<2> &,
+                      Warnings &);
+  template void
+  support_warnings<3>(const Parameters::AllParameters &,
+                      const Triangulation<3> &,
+                      Warnings &);
 } // namespace tribos

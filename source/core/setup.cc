@@ -1,6 +1,7 @@
 #include <tribos/base/cells_from_first_process.h>
 #include <tribos/base/import_constraints.h>
 #include <tribos/base/text.h>
+#include <tribos/core/model_checks.h>
 #include <tribos/core/problem.h>
 #include <tribos/core/vector_function.h>
 #include <tribos/scene/scene.h>
@@ -34,11 +35,13 @@ namespace tribos
   Problem<dim>::Problem(const Parameters::AllParameters &parameters,
                         const MPI_Comm                   mpi_communicator,
                         TimerOutput                     &timer,
-                        const std::function<void(const std::string &)> &log)
+                        const std::function<void(const std::string &)> &log,
+                        Warnings &warnings)
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
     , timer(timer)
     , log(log)
+    , warnings(warnings)
     , triangulation_storage(
         parameters.parallel.mesh == Parameters::Parallel::Mesh::shared ?
           std::unique_ptr<parallel::TriangulationBase<dim>>(
@@ -60,22 +63,11 @@ namespace tribos
     const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights)
   {
     for (const auto &w : parameters.input_warnings)
-      warn(w);
+      warnings.warn(w);
     make_grid(weights);
     setup_system();
-    support_warnings();
+    support_warnings<dim>(parameters, triangulation, warnings);
     setup_dynamics();
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::warn(const std::string &message)
-  {
-    warning_list.push_back(message);
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-      std::cerr << "tribos: WARNING: " << message << std::endl;
   }
 
 
@@ -155,16 +147,17 @@ namespace tribos
     curved_cells = {};
     if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
     {
-      const double memory = machines_memory();
+      const double memory = machines_memory(mpi_communicator);
       create_scene(parameters,
                    triangulation,
                    curved_cells,
-                   [&](const unsigned int n) { check_mesh_size(n, memory); });
+                   [&](const unsigned int n)
+                   { check_mesh_size<dim>(parameters, n, memory); });
     }
     else
       create_distributed_scene(weights);
     if (!triangulation.all_reference_cells_are_hyper_cube())
-      check_simplex_model();
+      check_simplex_model<dim>(parameters, triangulation, warnings);
 
     // Every boundary id named in a condition must exist in the mesh (the
     // faces of own cells: on a distributed mesh the outer faces of the
@@ -212,7 +205,7 @@ namespace tribos
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
     // Collective, so before the first process builds the scene.
-    const double       memory = machines_memory();
+    const double       memory = machines_memory(mpi_communicator);
     Triangulation<dim> serial;
     CurvedCells<dim>   serial_curved;
     std::string        error;
@@ -223,7 +216,8 @@ namespace tribos
         create_scene(parameters,
                      serial,
                      serial_curved,
-                     [&](const unsigned int n) { check_mesh_size(n, memory); });
+                     [&](const unsigned int n)
+                     { check_mesh_size<dim>(parameters, n, memory); });
       }
       catch (const ExceptionBase &e)
       {
@@ -416,7 +410,7 @@ namespace tribos
         locally_relevant_dofs.add_indices(contact_handler->contact_dofs());
       n_contact_ghosts = locally_relevant_dofs.n_elements() - n_cell_relevant;
       for (const auto &w : contact_handler->setup_warnings())
-        warn(w);
+        warnings.warn(w);
     }
 
     setup_unknowns();
@@ -543,11 +537,12 @@ namespace tribos
     if (!parameters.time_stepping.dynamic())
       return;
     if (contact_handler && !parameters.time_stepping.contact_mass_removal)
-      warn("dynamics with contact and mass on the contact nodes: each impact "
-           "makes the contact force oscillate and creates or destroys "
-           "energy (the Signorini bar gains a factor 6-11, doc/dynamics.md); "
-           "Time stepping/Mass matrix = lumped with Contact mass removal = "
-           "true removes both.");
+      warnings.warn(
+        "dynamics with contact and mass on the contact nodes: each impact "
+        "makes the contact force oscillate and creates or destroys "
+        "energy (the Signorini bar gains a factor 6-11, doc/dynamics.md); "
+        "Time stepping/Mass matrix = lumped with Contact mass removal = "
+        "true removes both.");
     typename DynamicsState<dim>::Layout layout;
     layout.dof_handler   = &dof_handler;
     layout.mapping       = &mapping();

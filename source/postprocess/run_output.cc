@@ -80,8 +80,11 @@ namespace tribos
 
 
   template <int dim>
-  RunOutput<dim>::RunOutput(const Problem<dim> &problem, TimerOutput &timer)
+  RunOutput<dim>::RunOutput(const Problem<dim> &problem,
+                            const Warnings     &warnings,
+                            TimerOutput        &timer)
     : problem(problem)
+    , warnings(warnings)
     , parameters(problem.get_parameters())
     , mpi_communicator(problem.communicator())
     , timer(timer)

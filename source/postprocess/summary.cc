@@ -157,7 +157,7 @@ namespace tribos
               << " time(s), the last after step " << run.rebalance_step
               << " (contact time max/min " << run.imbalance
               << "); balance and sections since then\n";
-        for (const auto &w : problem.warnings())
+        for (const auto &w : warnings.list())
           out << "warning           " << w << '\n';
         out << "\nsection               calls    wall [s]  share\n";
         for (const auto &[section, seconds] : wall)

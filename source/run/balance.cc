@@ -51,7 +51,7 @@ namespace tribos
       // The step right after a rebalance: its weights did not even out the
       // work (one node's element outweighs a process's share, say).
       may_rebalance = false;
-      problem.warn("the contact work stayed out of balance after rebalancing "
+      warnings.warn("the contact work stayed out of balance after rebalancing "
                    "(max/min " +
                    std::to_string(imbalance) + " in step " +
                    std::to_string(step) + "): no further rebalancing");

@@ -20,10 +20,13 @@ namespace tribos
     , mpi_communicator(mpi_communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , problem(parameters,
-              mpi_communicator,
-              timer,
-              [this](const std::string &line) { pcout << line << std::endl; })
+    , warnings(mpi_communicator)
+    , problem(
+        parameters,
+        mpi_communicator,
+        timer,
+        [this](const std::string &line) { pcout << line << std::endl; },
+        warnings)
     , last_rebalance(previous)
   {
   }
@@ -42,7 +45,7 @@ namespace tribos
       restart->load(parameters.restart_directory);
       problem.check_checkpoint(*restart);
     }
-    output = std::make_unique<RunOutput<dim>>(problem, timer);
+    output = std::make_unique<RunOutput<dim>>(problem, warnings, timer);
     output->open(restart.get());
 
     std::ostringstream header;
@@ -106,7 +109,7 @@ namespace tribos
 
     if (problem.contact() != nullptr)
       for (const auto &w : problem.contact()->run_warnings())
-        problem.warn(w);
+        warnings.warn(w);
     output->write_summary("completed", totals());
     const auto        &sums = stepper->totals();
     std::ostringstream line;
@@ -230,7 +233,7 @@ namespace tribos
   {
     if (problem.contact() != nullptr)
       for (const auto &w : problem.contact()->run_warnings())
-        problem.warn(w);
+        warnings.warn(w);
     output->write_summary("FAILED: " + reason, totals());
   }
 

@@ -6,6 +6,7 @@
 #include <tribos/core/checkpoint.h>
 #include <tribos/core/dynamics_state.h>
 #include <tribos/core/material_state.h>
+#include <tribos/core/warnings.h>
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/scene/scene.h>
 #include <tribos/solver/linear_solver.h>
@@ -64,12 +65,13 @@ namespace tribos
     /**
      * @p timer gets the sections setup, assembly, contact search, contact
      * assembly and output (checkpoints); @p log prints a line for the user
-     * (the first process's).
+     * (the first process's); @p warnings gets the warnings about the model.
      */
     Problem(const Parameters::AllParameters                &parameters,
             const MPI_Comm                                  mpi_communicator,
             TimerOutput                                    &timer,
-            const std::function<void(const std::string &)> &log);
+            const std::function<void(const std::string &)> &log,
+            Warnings                                       &warnings);
 
     /**
      * Build the scene (partitioned with @p weights, per CellId, if given:
@@ -163,22 +165,6 @@ namespace tribos
      * steps): a clear error before any output is touched. */
     void
     check_checkpoint(const Checkpoint &checkpoint) const;
-    /** The memory of the machines the processes run on (collective). */
-    double
-    machines_memory() const;
-    /** Refuse a Scene/Refinement whose mesh would not fit in @p memory:
-     * the scene's @p n_scene_cells unrefined cells times 2^(dim level). */
-    void
-    check_mesh_size(const unsigned int n_scene_cells,
-                    const double       memory) const;
-    /** Refuse what simplex meshes do not support (mixed cell kinds,
-     * F-bar, contact on triangle faces in 3D); warn of locking. */
-    void
-    check_simplex_model();
-    /** Warnings about the model's support: nothing loads it, or a body
-     * that nothing holds (statics). */
-    void
-    support_warnings();
     /** What a checkpoint's state depends on beyond the sizes of the
      * mesh and dofs, by name (scene, pairs, materials), as text. */
     std::map<std::string, std::string>
@@ -324,14 +310,6 @@ namespace tribos
      * at the locally owned rows, the near-null space of AMG. */
     std::vector<std::vector<double>>
     rigid_body_modes() const;
-    /** Warnings for the user, printed when found. */
-    const std::vector<std::string> &
-    warnings() const
-    {
-      return warning_list;
-    }
-    void
-    warn(const std::string &message);
 
   private:
     /* setup.cc */
@@ -414,6 +392,7 @@ namespace tribos
     MPI_Comm                                       mpi_communicator;
     TimerOutput                                   &timer;
     const std::function<void(const std::string &)> log;
+    Warnings                                      &warnings;
 
     /** The mesh: parallel::shared or parallel::fullydistributed
      * (Parallel/Mesh). */
@@ -507,8 +486,7 @@ namespace tribos
     double length_floor = 0;
     /** Tractions below 1e-12 E_max are round-off: the floor of the
      * multipliers' convergence test. */
-    double                   traction_floor = 0;
-    std::vector<std::string> warning_list;
+    double traction_floor = 0;
 
     std::unique_ptr<MaterialState<dim>> material_state;
     std::unique_ptr<BulkAssembler<dim>> bulk_assembler;

@@ -59,7 +59,9 @@ namespace tribos
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    RunOutput(const Problem<dim> &problem, TimerOutput &timer);
+    RunOutput(const Problem<dim> &problem,
+              const Warnings     &warnings,
+              TimerOutput        &timer);
 
     /**
      * Create Output/Directory (removing the series files of an earlier run
@@ -115,6 +117,7 @@ namespace tribos
     displacement_errors(const double time) const;
 
     const Problem<dim>                  &problem;
+    const Warnings                      &warnings;
     const Parameters::AllParameters     &parameters;
     MPI_Comm                             mpi_communicator;
     TimerOutput                         &timer;

@@ -120,6 +120,7 @@ namespace tribos
      * unwinds, and the run would hang there instead of ending.
      */
     TimerOutput                     timer;
+    Warnings                        warnings;
     Problem<dim>                    problem;
     std::unique_ptr<RunOutput<dim>> output;
     /** The checkpoint a restart goes on from. */
