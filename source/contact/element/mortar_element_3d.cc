@@ -6,14 +6,16 @@
 #include <optional>
 #include <vector>
 
+#include "mortar_element_3d_internal.h"
+
 namespace tribos
 {
+  using namespace internal::Mortar3DImplementation;
 
 
 
   namespace
   {
-    using AD = ContactAD;
     /**
      * The AD number of one (slave face, master face) overlap: the 4 + 4
      * nodes' coordinates. Its integrals are carried over to the node's
@@ -26,67 +28,7 @@ namespace tribos
     template <typename Number>
     using Point = std::array<Number, 2>;
 
-    /** The most nodes of a face (the nine-node quadrilateral). */
-    constexpr unsigned int max_face_nodes = MortarFace3D::max_nodes;
-
     using internal::counter_clockwise;
-    template <typename Number>
-    using Plane = internal::AuxiliaryPlane<Number>;
-
-    /** Shape functions of a face of @p n nodes: MasterFace<3> (4),
-     * TriangleFace (3), the quadratic triangle (6: vertices, then the
-     * middles of the edges 0-1, 1-2, 2-0) or the biquadratic
-     * quadrilateral (9: MortarFace3D's order); no derivatives of the
-     * quadratic ones. */
-    template <typename Number>
-    void
-    face_shape(const unsigned int n,
-               const Number      *xi,
-               Number            *N,
-               Number (*dN)[2])
-    {
-      if (n == 3)
-        TriangleFace::shape(xi, N, dN);
-      else if (n == 4)
-        MasterFace<3>::shape(xi, N, dN);
-      else if (n == 9)
-      {
-        // The 1D functions of the nodes at -1, 1 and 0, in each direction;
-        // node i sits at (at_1[i], at_2[i]).
-        Number l[2][3], dl[3];
-        for (unsigned int d = 0; d < 2; ++d)
-          quadratic_segment_shape(xi[d], l[d], dl);
-        constexpr unsigned int at_1[9] = {0, 1, 0, 1, 2, 2, 0, 1, 2},
-                               at_2[9] = {0, 0, 1, 1, 0, 1, 2, 2, 2};
-        for (unsigned int i = 0; i < 9; ++i)
-          N[i] = l[0][at_1[i]] * l[1][at_2[i]];
-      }
-      else
-      {
-        const Number l[3] = {1. - xi[0] - xi[1], xi[0], xi[1]};
-        for (unsigned int v = 0; v < 3; ++v)
-        {
-          N[v]     = l[v] * (2. * l[v] - 1.);
-          N[3 + v] = 4. * l[v] * l[(v + 1) % 3];
-        }
-      }
-    }
-
-    /**
-     * A flat piece of a face, what the overlaps are clipped and integrated
-     * on: a linear face is one piece, itself; a quadratic triangle is four,
-     * the triangles of its vertices and edge middles (Popp et al.'s
-     * integration on linear sub-elements); a nine-node quadrilateral four
-     * bilinear quadrilaterals, each with a vertex, two edge middles and
-     * the centre. The piece's n nodes as positions
-     * in its face and their coordinates in the face's map.
-     */
-    struct Piece
-    {
-      unsigned int n;
-      unsigned int node[4];
-      double       xi[4][2];
-    };
 
     /** The pieces of a face of @p n nodes into @p pieces; their number. */
     unsigned int
@@ -115,20 +57,6 @@ namespace tribos
         return 4;
       }
       return 1;
-    }
-
-    /** The face coordinates of the point with coordinates @p x in
-     * @p piece. */
-    template <typename Number>
-    void
-    face_coordinates(const Piece &piece, const Number *x, Number *xi)
-    {
-      Number N[4], dN[4][2];
-      face_shape(piece.n, x, N, dN);
-      xi[0] = xi[1] = 0.;
-      for (unsigned int v = 0; v < piece.n; ++v)
-        for (unsigned int c = 0; c < 2; ++c)
-          xi[c] += N[v] * piece.xi[v][c];
     }
 
     /**
@@ -198,27 +126,6 @@ namespace tribos
       xi[0] -= (J[1][1] * r[0] - J[0][1] * r[1]) / det;
       xi[1] -= (J[0][0] * r[1] - J[1][0] * r[0]) / det;
     }
-
-    /** The 7-point rule of degree 5 on a triangle (Dunavant): barycentric
-     * coordinates and weights (summing to 1). */
-    struct TrianglePoint
-    {
-      double l[3], weight;
-    };
-    constexpr double a_1                     = 0.0597158717897698204929,
-                     b_1                     = 0.4701420641051150897536,
-                     w_1                     = 0.1323941527885061807294,
-                     a_2                     = 0.7974269853530873223564,
-                     b_2                     = 0.1012865073234563388218,
-                     w_2                     = 0.1259391805448271525956;
-    constexpr TrianglePoint triangle_rule[7] = {{{1. / 3., 1. / 3., 1. / 3.},
-                                                 0.225},
-                                                {{a_1, b_1, b_1}, w_1},
-                                                {{b_1, a_1, b_1}, w_1},
-                                                {{b_1, b_1, a_1}, w_1},
-                                                {{a_2, b_2, b_2}, w_2},
-                                                {{b_2, a_2, b_2}, w_2},
-                                                {{b_2, b_2, a_2}, w_2}};
 
     /**
      * A rule on the triangle exact to degree 8, for the products of two
@@ -490,210 +397,6 @@ namespace tribos
     }
 
 
-
-    /**
-     * The basis the dual functions of a face of @p n nodes are
-     * biorthogonal to, as Ntilde = T N: the face's own on a linear face
-     * (T = 1); on the quadratic triangle the modified basis of
-     * TriangleFace::modified_basis_alpha, on the nine-node quadrilateral
-     * the tensor product of the quadratic segment's with that alpha. The
-     * quadratic vertex functions integrate to zero over a flat face, so dual
-     * functions biorthogonal to them do not exist; the modified ones are
-     * positive on average and still sum to one.
-     */
-    void
-    modified_basis(const unsigned int n,
-                   double (&T)[max_face_nodes][max_face_nodes])
-    {
-      for (unsigned int i = 0; i < max_face_nodes; ++i)
-        for (unsigned int k = 0; k < max_face_nodes; ++k)
-          T[i][k] = (i == k && i < n) ? 1. : 0.;
-      if (n == 9)
-      {
-        // The tensor product of the quadratic segment's modified functions
-        // (ends N_e + alpha N_m, middle (1 - 2 alpha) N_m) with the same
-        // alpha: the biquadratic vertex functions integrate to only A/36
-        // (the centre's 4A/9), and the vertices' multipliers, divided by so
-        // little, scatter on distorted faces (the 3D press fit of
-        // tests/verification/curved_meshes.py: 8.2 % RMS at the vertices, 2.6 %
-        // with this basis, whose integrals are 9A/100 at the vertices, 3A/25 at
-        // the edge middles and 4A/25 at the centre of a flat face of area
-        // A).
-        const double           alpha     = TriangleFace::modified_basis_alpha;
-        const double           T_1[3][3] = {{1., 0., alpha},
-                                            {0., 1., alpha},
-                                            {0., 0., 1. - 2. * alpha}};
-        constexpr unsigned int at_1[9]   = {0, 1, 0, 1, 2, 2, 0, 1, 2},
-                               at_2[9]   = {0, 0, 1, 1, 0, 1, 2, 2, 2};
-        for (unsigned int i = 0; i < 9; ++i)
-          for (unsigned int k = 0; k < 9; ++k)
-            T[i][k] = T_1[at_1[i]][at_1[k]] * T_1[at_2[i]][at_2[k]];
-        return;
-      }
-      if (n != 6)
-        return;
-      const double alpha = TriangleFace::modified_basis_alpha;
-      for (unsigned int v = 0; v < 3; ++v)
-      {
-        T[v][3 + v]           = alpha; // edge v, v + 1
-        T[v][3 + (v + 2) % 3] = alpha; // edge v - 1, v
-        T[3 + v][3 + v]       = 1. - 2. * alpha;
-      }
-    }
-
-
-
-    /**
-     * The row @p a (coefficients of the face's functions N) of the
-     * functions slave face @p f of @p input carries in Phi = A Ntilde
-     * (Ntilde = T N the modified basis, A = D_e M_e^-1 of its mass matrix
-     * M_e = int Ntilde Ntilde^T over the face's pieces in their planes
-     * @p planes, D_e its row sums), blended with Ntilde by @p theta as in
-     * 2D, summed with their weights: node j's row, and those of the
-     * hanging nodes it carries.
-     */
-    void
-    carried_row(const MortarInput3D &input,
-                const unsigned int   f,
-                const Piece         *pieces,
-                const unsigned int   n_pieces,
-                const Plane<AD>     *planes,
-                const AD            &theta,
-                AD                  *a)
-    {
-      const AD           zero(0.);
-      const unsigned int n = input.slave_face[f].n;
-      double             T[max_face_nodes][max_face_nodes];
-      modified_basis(n, T);
-      // Scratch of this thread (AD numbers zero their derivatives when
-      // constructed: some 200 of them per call).
-      static thread_local struct
-      {
-        AD coefficients[max_face_nodes]; // of Phi in the modified basis
-        AD mass[max_face_nodes][max_face_nodes];
-        AD row_sum[max_face_nodes];
-        AD lower[max_face_nodes][max_face_nodes];
-        AD y[max_face_nodes];
-      } scratch;
-      auto &coefficients = scratch.coefficients;
-      for (unsigned int i = 0; i < n; ++i)
-        coefficients[i] = zero;
-      if (theta.val() <= 0)
-        for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
-          coefficients[input.carriers[f][c].first] +=
-            input.carriers[f][c].second;
-      else
-      {
-        // The mass matrix, exactly on flat pieces: 2 x 2 Gauss on a
-        // bilinear quadrilateral, 3 x 3 on the pieces of a nine-node one
-        // (degree 4 in each direction, 5 with the Jacobian), the 7-point
-        // rule on a triangle piece (degree 4 on the quadratic triangle).
-        auto &mass = scratch.mass;
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int k = 0; k < n; ++k)
-            mass[i][k] = zero;
-        // (xi_1, xi_2, weight) in the piece's coordinates.
-        using Rule = std::vector<std::array<double, 3>>;
-        static const Rule quadrilateral_rule = []()
-        {
-          const double g = 1. / std::sqrt(3.);
-          return Rule{{{-g, -g, 1.}},
-                      {{g, -g, 1.}},
-                      {{-g, g, 1.}},
-                      {{g, g, 1.}}};
-        }();
-        static const Rule biquadratic_rule = []()
-        {
-          const double g    = std::sqrt(0.6);
-          const double x[3] = {-g, 0., g}, w[3] = {5. / 9., 8. / 9., 5. / 9.};
-          Rule         rule;
-          for (unsigned int b = 0; b < 3; ++b)
-            for (unsigned int a = 0; a < 3; ++a)
-              rule.push_back({{x[a], x[b], w[a] * w[b]}});
-          return rule;
-        }();
-        static const Rule triangle_piece_rule = []()
-        {
-          Rule rule;
-          for (const TrianglePoint &t : triangle_rule)
-            rule.push_back({{t.l[1], t.l[2], 0.5 * t.weight}});
-          return rule;
-        }();
-        for (unsigned int s = 0; s < n_pieces; ++s)
-        {
-          const Piece &piece = pieces[s];
-          const Rule  &rule  = piece.n == 3 ? triangle_piece_rule :
-                               n == 9       ? biquadratic_rule :
-                                              quadrilateral_rule;
-          for (const auto &point : rule)
-          {
-            const double x[2] = {point[0], point[1]};
-            double N_piece[4], dN[max_face_nodes][2], xi[2], N[max_face_nodes],
-              Nt[max_face_nodes];
-            face_shape(piece.n, x, N_piece, dN);
-            AD J[2][2] = {{zero, zero}, {zero, zero}};
-            for (unsigned int k = 0; k < piece.n; ++k)
-              for (unsigned int r = 0; r < 2; ++r)
-                for (unsigned int c = 0; c < 2; ++c)
-                  J[r][c] += dN[k][c] * planes[s].P[k][r];
-            const AD det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-            face_coordinates(piece, x, xi);
-            face_shape(n, xi, N, dN);
-            for (unsigned int i = 0; i < n; ++i)
-            {
-              Nt[i] = 0.;
-              for (unsigned int k = 0; k < n; ++k)
-                Nt[i] += T[i][k] * N[k];
-            }
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int k = 0; k < n; ++k)
-                mass[i][k] += (point[2] * Nt[i] * Nt[k]) * det;
-          }
-        }
-        auto &row_sum = scratch.row_sum;
-        for (unsigned int i = 0; i < n; ++i)
-        {
-          row_sum[i] = zero;
-          for (unsigned int k = 0; k < n; ++k)
-            row_sum[i] += mass[i][k];
-        }
-        // M_e = L U (symmetric positive definite: no pivoting).
-        auto &lower = scratch.lower;
-        for (unsigned int p = 0; p < n; ++p)
-          for (unsigned int i = p + 1; i < n; ++i)
-          {
-            lower[i][p] = mass[i][p] / mass[p][p];
-            for (unsigned int k = p; k < n; ++k)
-              mass[i][k] -= lower[i][p] * mass[p][k];
-          }
-        for (unsigned int c = 0; c < input.n_carriers[f]; ++c)
-        {
-          const auto [j_local, weight] = input.carriers[f][c];
-          // y = M_e^-1 e_j.
-          auto &y = scratch.y;
-          for (unsigned int k = 0; k < n; ++k)
-            y[k] = zero;
-          y[j_local] = 1.;
-          for (unsigned int p = 0; p < n; ++p)
-            for (unsigned int i = p + 1; i < n; ++i)
-              y[i] -= lower[i][p] * y[p];
-          for (unsigned int p = n; p-- > 0;)
-          {
-            for (unsigned int k = p + 1; k < n; ++k)
-              y[p] -= mass[p][k] * y[k];
-            y[p] /= mass[p][p];
-          }
-          for (unsigned int k = 0; k < n; ++k)
-            coefficients[k] += weight * (theta * row_sum[j_local] * y[k] +
-                                         (k == j_local ? 1. - theta : zero));
-        }
-      }
-      // From the modified basis to the face's functions: a = T^T c.
-      for (unsigned int m = 0; m < n; ++m)
-        for (unsigned int k = 0; k < n; ++k)
-          if (T[m][k] != 0.)
-            a[k] += coefficients[m] * T[m][k];
-    }
   } // namespace
 
 
