@@ -66,10 +66,11 @@ namespace tribos
       return;
     if (parameters.finite_element.degree == 1)
     {
-      warnings.warn("the mesh's cells are second-order (curved), and Finite "
-           "element/Polynomial degree = 1 takes their vertices only: the "
-           "cells are straight, a curved boundary is faceted. Polynomial "
-           "degree = 2 keeps the curved geometry.");
+      warnings.warn(
+        "the mesh's cells are second-order (curved), and Finite "
+        "element/Polynomial degree = 1 takes their vertices only: the "
+        "cells are straight, a curved boundary is faceted. Polynomial "
+        "degree = 2 keeps the curved geometry.");
       curved_cells = {};
       return;
     }

@@ -32,7 +32,7 @@ namespace tribos
   {
     time            = end_time;
     increment_start = owned_solution;
-    ghosted_anchors = ghosted_solution;
+    stabilization_springs.begin_solve(ghosted_solution);
     // The start is the converged state (the update test measures the
     // increment's change from it, the stabilization springs hold to it);
     // the first iterate is the predicted one, and the increment's
@@ -42,7 +42,6 @@ namespace tribos
       owned_solution.add(1., *predictor);
       solution_changed();
     }
-    n_relaxations = 0;
     if (contact_handler)
       contact_handler->begin_increment();
     if (dynamics_state)
@@ -125,8 +124,8 @@ namespace tribos
     targets.full_residual = &full_residual;
     if (stabilized)
     {
-      clear(stabilization_forces);
-      targets.stabilization = &stabilization_forces;
+      clear(*stabilization_springs.forces());
+      targets.stabilization = stabilization_springs.forces();
     }
     if (track_external)
     {
@@ -140,7 +139,7 @@ namespace tribos
     }
     bulk_assembler->assemble(displacement(),
                              ghosted_solution,
-                             ghosted_anchors,
+                             stabilization_springs.anchors(),
                              time,
                              constraints,
                              homogeneous_constraints,
@@ -175,7 +174,7 @@ namespace tribos
     free_residual.compress(VectorOperation::add);
     full_residual.compress(VectorOperation::add);
     if (stabilized)
-      stabilization_forces.compress(VectorOperation::add);
+      stabilization_springs.forces()->compress(VectorOperation::add);
     if (track_external)
       external_forces.compress(VectorOperation::add);
     if (dynamic)
@@ -286,80 +285,20 @@ namespace tribos
 
   template <int dim>
   NonlinearProblem::Verdict
-  Problem<dim>::at_convergence(IncrementReport &report)
+  Problem<dim>::at_convergence()
   {
-    const auto &p = parameters.nonlinear_solver;
     if (contact_handler && !contact_handler->accept_iterate(log))
       return Verdict::iterate;
-    report.n_chattering = contact_handler ? contact_handler->n_chattering() : 0;
-    report.n_relaxations = n_relaxations;
-    if (p.stabilization > 0)
-    {
-      const auto [force, ratio]  = stabilization_measure();
-      report.stabilization_force = force;
-      report.stabilization_ratio = ratio;
-      if (ratio > p.stabilization_limit)
-      {
-        // The springs still carry part of the load: anchor them at this
-        // iterate and go on (pseudo-transient continuation).
-        if (n_relaxations >= p.max_stabilization_relaxations)
-          throw NonConvergence(
-            "the stabilization springs still carry " + to_scientific(ratio) +
-            " of the load after " + std::to_string(n_relaxations) +
-            " re-anchorings (Nonlinear solver/Stabilization limit = " +
-            to_scientific(p.stabilization_limit) +
-            ", Maximum stabilization relaxations)");
-        ++n_relaxations;
-        ghosted_anchors = ghosted_solution;
-        return Verdict::iterate;
-      }
-    }
-    return Verdict::accept;
-  }
-
-
-
-  template <int dim>
-  std::pair<double, double>
-  Problem<dim>::stabilization_measure() const
-  {
-    // Axisymmetric: radial resultants cancel around the ring; only the
-    // axial component is a force.
-    const unsigned int first = parameters.finite_element.axisymmetric ? 1 : 0;
-    std::vector<Tensor<1, dim>> per_body(material_state->n_materials());
-    Tensor<1, dim>              applied;
-    for (const auto i : locally_owned_dofs)
-    {
-      per_body[dof_body[i]][dof_component[i]] += stabilization_forces[i];
-      applied[dof_component[i]] += external_forces[i];
-    }
-    double springs = 0;
-    for (auto &f : per_body)
-    {
-      f = Utilities::MPI::sum(f, mpi_communicator);
-      for (unsigned int d = 0; d < first; ++d)
-        f[d] = 0;
-      springs = std::max(springs, f.norm());
-    }
-    applied = Utilities::MPI::sum(applied, mpi_communicator);
-    for (unsigned int d = 0; d < first; ++d)
-      applied[d] = 0;
-    double     load      = applied.norm();
-    const auto reactions = reaction_forces();
-    for (unsigned int c = 0; c + dim <= reactions.size(); c += dim)
-    {
-      double squared = 0;
-      for (unsigned int d = first; d < dim; ++d)
-        squared += reactions[c + d] * reactions[c + d];
-      load = std::max(load, std::sqrt(squared));
-    }
-    const double floor =
-      parameters.nonlinear_solver.absolute_residual_tolerance;
-    if (springs <= floor)
-      return {springs, 0.};
-    return {springs,
-            load > 0 ? springs / load :
-                       std::numeric_limits<double>::infinity()};
+    // The monitor's count is a running maximum of the solve; the most of
+    // every solve of the attempt.
+    if (contact_handler)
+      counters.n_chattering =
+        std::max(counters.n_chattering, contact_handler->n_chattering());
+    if (!stabilization_springs.enabled())
+      return Verdict::accept;
+    return stabilization_springs.at_convergence(ghosted_solution,
+                                                external_forces,
+                                                reaction_forces());
   }
 
 
@@ -445,6 +384,9 @@ namespace tribos
         [this]() { return bulk_assembler->stored_energy(displacement()); });
     if (contact_handler)
       contact_handler->commit();
+    stabilization_springs.commit();
+    committed_counters = counters;
+    counters           = ContactCounters();
   }
 
 
@@ -456,18 +398,20 @@ namespace tribos
     material_state->restore();
     if (contact_handler)
       contact_handler->restore();
+    stabilization_springs.restore();
+    counters = ContactCounters();
   }
 
 
 
   template <int dim>
   bool
-  Problem<dim>::outer_update(IncrementReport &report)
+  Problem<dim>::outer_update()
   {
     // Augmented Lagrangian: a Uzawa update of the multipliers, then the
     // same increment again, until the penetration is below the tolerance.
     return contact_handler &&
-           contact_handler->outer_update(report.n_augmentations);
+           contact_handler->outer_update(counters.n_augmentations);
   }
 
 

@@ -134,12 +134,13 @@ namespace tribos
   {
     TimerOutput::Scope t(timer, "output");
     Checkpoint         c;
-    c.dimension      = dim;
-    c.n_active_cells = triangulation.n_global_active_cells();
-    c.dofs_per_cell  = fe->n_dofs_per_cell();
-    c.n_dofs         = dof_handler.n_dofs();
-    c.n_multipliers  = n_multipliers;
-    c.stepper        = stepper;
+    c.dimension                   = dim;
+    c.n_active_cells              = triangulation.n_global_active_cells();
+    c.dofs_per_cell               = fe->n_dofs_per_cell();
+    c.n_dofs                      = dof_handler.n_dofs();
+    c.n_multipliers               = n_multipliers;
+    c.stepper                     = stepper;
+    c.largest_stabilization_ratio = stabilization_springs.largest_ratio();
 
     // The multipliers of a system vector, each from its owner, summed over
     // the processes (only the owner has a node's multipliers).
@@ -405,6 +406,7 @@ namespace tribos
                                    "Materials must be those of the run "
                                    "that wrote it."));
     material_state->restore();
+    stabilization_springs.set_largest_ratio(c.largest_stabilization_ratio);
 
     time = c.stepper.time;
     if (contact_handler)

@@ -42,6 +42,11 @@ namespace tribos
     , timer(timer)
     , log(log)
     , warnings(warnings)
+    , stabilization_springs(parameters,
+                            mpi_communicator,
+                            locally_owned_dofs,
+                            dof_component,
+                            dof_body)
     , triangulation_storage(
         parameters.parallel.mesh == Parameters::Parallel::Mesh::shared ?
           std::unique_ptr<parallel::TriangulationBase<dim>>(
@@ -474,12 +479,13 @@ namespace tribos
     owned_solution.reinit(system_owned, mpi_communicator);
     increment_start.reinit(system_owned, mpi_communicator);
     ghosted_solution.reinit(system_owned, system_relevant, mpi_communicator);
-    ghosted_anchors.reinit(system_owned, system_relevant, mpi_communicator);
     if (n_multipliers > 0)
       ghosted_displacement.reinit(locally_owned_dofs,
                                   locally_relevant_dofs,
                                   mpi_communicator);
-    stabilization_forces.reinit(system_owned, mpi_communicator);
+    stabilization_springs.reinit(system_owned,
+                                 system_relevant,
+                                 material_state->n_materials());
     external_forces.reinit(system_owned, mpi_communicator);
     dof_component.assign(dof_handler.n_dofs(), 0);
     dof_body.assign(dof_handler.n_dofs(), 0);

@@ -414,8 +414,8 @@ namespace tribos
     {
       for (const double value : contact_output->columns())
         row.push_back(value);
-      row.push_back(report.n_augmentations);
-      row.push_back(report.n_chattering);
+      row.push_back(problem.contact_counters().n_augmentations);
+      row.push_back(problem.contact_counters().n_chattering);
     }
     if (const auto *dynamics = problem.dynamics())
     {
@@ -445,9 +445,10 @@ namespace tribos
     }
     if (parameters.nonlinear_solver.stabilization > 0)
     {
-      row.push_back(report.stabilization_force);
-      row.push_back(report.stabilization_ratio);
-      row.push_back(report.n_relaxations);
+      const auto &springs = problem.stabilization().last_increment();
+      row.push_back(springs.force);
+      row.push_back(springs.ratio);
+      row.push_back(springs.relaxations);
     }
     history_csv->add_row(row);
   }

@@ -108,7 +108,7 @@ namespace tribos
           out << "refinement steps  " << linear_solver->n_refinements() << '\n';
         if (parameters.nonlinear_solver.stabilization > 0)
           out << "largest stabilization ratio "
-              << totals.largest_stabilization_ratio << '\n';
+              << run.largest_stabilization_ratio << '\n';
         out << "peak memory       " << peak_memory.max
             << " MB per process (max), " << peak_memory.sum << " MB in all\n";
         if (n_ranks > 1)

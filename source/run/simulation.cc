@@ -160,10 +160,11 @@ namespace tribos
     t.n_linear_solves =
       (restart ? restart->stepper.totals.n_linear_solves : 0) +
       (newton ? newton->n_linear_solves() : 0);
-    t.linear_solver  = linear_solver.get();
-    t.n_rebalances   = last_rebalance.count;
-    t.rebalance_step = last_rebalance.step;
-    t.imbalance      = last_rebalance.imbalance;
+    t.linear_solver               = linear_solver.get();
+    t.largest_stabilization_ratio = problem.stabilization().largest_ratio();
+    t.n_rebalances                = last_rebalance.count;
+    t.rebalance_step              = last_rebalance.step;
+    t.imbalance                   = last_rebalance.imbalance;
     return t;
   }
 

@@ -26,15 +26,11 @@ namespace tribos
     IncrementReport report = newton.solve(problem, observer, time, guess);
     // Outer updates (Uzawa), each followed by a new solve of the same
     // increment.
-    while (problem.outer_update(report))
+    while (problem.outer_update())
     {
       const IncrementReport again = newton.solve(problem, observer, time);
       report.n_iterations += again.n_iterations;
-      report.residual     = again.residual;
-      report.n_chattering = std::max(report.n_chattering, again.n_chattering);
-      report.stabilization_force = again.stabilization_force;
-      report.stabilization_ratio = again.stabilization_ratio;
-      report.n_relaxations += again.n_relaxations;
+      report.residual = again.residual;
     }
     return report;
   }
@@ -112,9 +108,6 @@ namespace tribos
           solves_accepted         = newton.n_linear_solves();
           sums.n_linear_solves += report.n_iterations_all;
           sums.n_newton_iterations += report.n_iterations;
-          sums.largest_stabilization_ratio =
-            std::max(sums.largest_stabilization_ratio,
-                     report.stabilization_ratio);
           if (extrapolate)
           {
             change = problem.solution();

@@ -307,8 +307,7 @@ namespace tribos
         if (converged)
         {
           report.residual = r.free;
-          if (problem.at_convergence(report) ==
-              NonlinearProblem::Verdict::accept)
+          if (problem.at_convergence() == NonlinearProblem::Verdict::accept)
           {
             report.n_iterations = it.n_solves;
             return report;

@@ -37,6 +37,10 @@ namespace tribos
     unsigned int n_multipliers  = 0;
 
     StepperState stepper;
+    /** Stabilization::largest_ratio() (in the archive where the stepper's
+     * totals kept it before format 4 had it there: the bytes are
+     * unchanged). */
+    double largest_stabilization_ratio = 0;
 
     /** Every active cell (CellId::to_binary), in CellId order: the same on
      * every partition of the mesh, shared or distributed. */
@@ -76,7 +80,7 @@ namespace tribos
       archive &s.step &s.time &s.increment &s.converged_in_row;
       archive &s.change_increment &multiplier_change;
       archive &t.n_increments &t.n_newton_iterations &t.n_cutbacks;
-      archive &t.largest_stabilization_ratio &t.n_linear_solves;
+      archive &largest_stabilization_ratio           &t.n_linear_solves;
       archive &cells &cell_values &multipliers &history &contact &scalars;
       archive &pvd_records &fingerprint                          &geometry;
     }

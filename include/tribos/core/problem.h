@@ -6,6 +6,7 @@
 #include <tribos/core/checkpoint.h>
 #include <tribos/core/dynamics_state.h>
 #include <tribos/core/material_state.h>
+#include <tribos/core/stabilization.h>
 #include <tribos/core/warnings.h>
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/scene/scene.h>
@@ -62,6 +63,16 @@ namespace tribos
   class Problem : public IncrementalProblem
   {
   public:
+    /** What history.csv reports of the contact's policies in a converged
+     * increment (its attempt's solves together). */
+    struct ContactCounters
+    {
+      /** Outer (Uzawa) updates of the augmented Lagrangian. */
+      unsigned int n_augmentations = 0;
+      /** Most chattering slave nodes seen in an iteration. */
+      unsigned int n_chattering = 0;
+    };
+
     /**
      * @p timer gets the sections setup, assembly, contact search, contact
      * assembly and output (checkpoints); @p log prints a line for the user
@@ -139,7 +150,7 @@ namespace tribos
     after_assembly(const unsigned int iteration,
                    const double       residual) override;
     Verdict
-    at_convergence(IncrementReport &report) override;
+    at_convergence() override;
     double
     tangent_error() override;
     void
@@ -147,7 +158,7 @@ namespace tribos
     void
     restore() override;
     bool
-    outer_update(IncrementReport &report) override;
+    outer_update() override;
 
     /* Checkpoints (restart.cc) */
     /**
@@ -282,6 +293,18 @@ namespace tribos
     {
       return *bulk_assembler;
     }
+    /** The stabilization springs (their report of the last increment). */
+    const Stabilization<dim> &
+    stabilization() const
+    {
+      return stabilization_springs;
+    }
+    /** The contact's counters of the last committed increment. */
+    const ContactCounters &
+    contact_counters() const
+    {
+      return committed_counters;
+    }
     /** Per Dirichlet condition and component, the reaction force (the
      * residual's sum over its dofs; in dynamics with M a) at the last
      * assembly (collective). */
@@ -365,15 +388,6 @@ namespace tribos
     assemble_system(const bool                       with_matrix,
                     const AffineConstraints<double> &constraints,
                     const double                     time);
-    /**
-     * The stabilization springs at the last assembly: the largest magnitude
-     * of their resultant on one body, and its ratio to the load (the
-     * largest magnitude of the applied force resultant and of each
-     * Dirichlet condition's reaction resultant). Axisymmetric: axial
-     * components only.
-     */
-    std::pair<double, double>
-    stabilization_measure() const;
 
     /* restart.cc */
     /** The values of @p v (dof-sized, owned) per active cell, gathered on
@@ -457,16 +471,9 @@ namespace tribos
     Vector increment_start;
     /** See restart_change(). */
     Vector change_of_restart;
-    /** The stabilization springs' anchors: the solution at the start of
-     * the increment, moved on at every re-anchoring. */
-    Vector ghosted_anchors;
     /** The current increment's end time and constraints. */
     double                    time = 0;
     AffineConstraints<double> increment_constraints;
-    /** Re-anchorings of the stabilization springs in this increment. */
-    unsigned int n_relaxations = 0;
-    /** The stabilization forces of the last assembly. */
-    Vector stabilization_forces;
     /** The applied (traction and body) forces of the last assembly, kept
      * with stabilization and dynamics. */
     Vector external_forces;
@@ -487,6 +494,11 @@ namespace tribos
     /** Tractions below 1e-12 E_max are round-off: the floor of the
      * multipliers' convergence test. */
     double traction_floor = 0;
+    /** The springs (they read the dof maps above). */
+    Stabilization<dim> stabilization_springs;
+    /** The contact's counters of this attempt and of the last committed
+     * increment. */
+    ContactCounters counters, committed_counters;
 
     std::unique_ptr<MaterialState<dim>> material_state;
     std::unique_ptr<BulkAssembler<dim>> bulk_assembler;

@@ -31,6 +31,9 @@ namespace tribos
      * earlier ones included. */
     unsigned int        n_linear_solves = 0;
     const LinearSolver *linear_solver   = nullptr;
+    /** The largest ratio of the stabilization springs to the load at a
+     * converged increment (Stabilization::largest_ratio()). */
+    double largest_stabilization_ratio = 0;
     /** Rebalances so far, the step of the last and its contact time's
      * max/min over the processes. */
     unsigned int n_rebalances   = 0;

@@ -34,7 +34,7 @@ namespace tribos
      * May throw NonConvergence.
      */
     virtual bool
-    outer_update(IncrementReport & /*report*/)
+    outer_update()
     {
       return false;
     }
@@ -45,10 +45,9 @@ namespace tribos
   /** Totals of a run. */
   struct StepperTotals
   {
-    unsigned int n_increments                = 0;
-    unsigned int n_newton_iterations         = 0;
-    unsigned int n_cutbacks                  = 0;
-    double       largest_stabilization_ratio = 0;
+    unsigned int n_increments        = 0;
+    unsigned int n_newton_iterations = 0;
+    unsigned int n_cutbacks          = 0;
     /** Linear solves of the converged increments, their failed attempts
      * included. */
     unsigned int n_linear_solves = 0;

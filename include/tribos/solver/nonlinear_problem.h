@@ -10,7 +10,12 @@ namespace tribos
 {
   using namespace dealii;
 
-  /** Counters of one converged increment, reported and written to CSV. */
+  /**
+   * What the solvers count of one converged increment, reported and written
+   * to CSV. Only the solvers' own counts: what a problem's policies count
+   * (contact, stabilization) the problem keeps and the observer reads from
+   * it.
+   */
   struct IncrementReport
   {
     /** Newton iterations of the accepted solve(s). */
@@ -19,16 +24,6 @@ namespace tribos
      * ones that were cut back included (= linear solves). */
     unsigned int n_iterations_all = 0;
     double       residual         = 0;
-    /** Outer (Uzawa) updates of the augmented Lagrangian. */
-    unsigned int n_augmentations = 0;
-    /** Most chattering slave nodes seen in an iteration. */
-    unsigned int n_chattering = 0;
-    /** Largest magnitude of the stabilization springs' resultant on one
-     * body at convergence, and its ratio to the load. */
-    double stabilization_force = 0;
-    double stabilization_ratio = 0;
-    /** Re-anchorings of the stabilization springs. */
-    unsigned int n_relaxations = 0;
   };
 
 
@@ -165,11 +160,11 @@ namespace tribos
     }
 
     /**
-     * Called at an iterate that passed Newton's tests. The problem may add to
-     * the @p report, throw NonConvergence, or ask for more iterations.
+     * Called at an iterate that passed Newton's tests. The problem may
+     * accept it, throw NonConvergence, or ask for more iterations.
      */
     virtual Verdict
-    at_convergence(IncrementReport & /*report*/)
+    at_convergence()
     {
       return Verdict::accept;
     }
