@@ -48,12 +48,7 @@ namespace tribos
                             dof_component,
                             dof_body)
     , triangulation_storage(
-        parameters.parallel.mesh == Parameters::Parallel::Mesh::shared ?
-          std::unique_ptr<parallel::TriangulationBase<dim>>(
-            std::make_unique<parallel::shared::Triangulation<dim>>(
-              mpi_communicator)) :
-          std::make_unique<parallel::fullydistributed::Triangulation<dim>>(
-            mpi_communicator))
+        make_triangulation<dim>(parameters, mpi_communicator))
     , triangulation(*triangulation_storage)
     , dof_handler(triangulation)
   {
@@ -64,8 +59,7 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::setup(
-    const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights)
+  Problem<dim>::setup(const CellWeights *weights)
   {
     for (const auto &w : parameters.input_warnings)
       warnings.warn(w);
@@ -77,248 +71,16 @@ namespace tribos
 
 
 
-  namespace
-  {
-    /**
-     * The scene into the empty @p triangulation: as its generator makes it
-     * (with a second-order mesh's curved geometry into @p curved), or with
-     * every cell split into simplices (Finite element/Cells).
-     * @p check_size gets the scene's unrefined cell count: before a
-     * refined mesh is built (from the scene built at level 0), or at
-     * Scene/Refinement = 0 from the mesh itself (not built twice).
-     */
-    template <int dim, typename SizeCheck>
-    void
-    create_scene(const Parameters::AllParameters &parameters,
-                 Triangulation<dim>              &triangulation,
-                 CurvedCells<dim>                &curved,
-                 const SizeCheck                 &check_size)
-    {
-      const auto        &scene      = *parameters.scene.geometry;
-      const unsigned int refinement = parameters.scene.refinement;
-      if (refinement > 0)
-      {
-        Triangulation<dim> coarse;
-        scene.create(0, coarse);
-        check_size(coarse.n_active_cells());
-      }
-      if (!parameters.finite_element.split_into_simplices)
-      {
-        scene.create_curved(refinement, triangulation, curved);
-        if (refinement == 0)
-          check_size(triangulation.n_active_cells());
-        return;
-      }
-      Triangulation<dim> cells;
-      scene.create_curved(refinement, cells, curved);
-      if (refinement == 0)
-        check_size(cells.n_active_cells());
-      AssertThrow(curved.empty(),
-                  ExcMessage("Parameter <Finite element/Cells> = simplices "
-                             "splits straight cells; the mesh of the scene "
-                             "has second-order (curved) cells. Mesh the "
-                             "body with triangles or tetrahedra in gmsh "
-                             "instead."));
-      AssertThrow(cells.all_reference_cells_are_hyper_cube(),
-                  ExcMessage("Parameter <Finite element/Cells> = simplices "
-                             "splits quadrilaterals and hexahedra; the mesh "
-                             "of the scene has simplices already."));
-      // deal.II splits conforming meshes only (a coarse mesh of simplices
-      // has no hanging nodes).
-      bool has_hanging_nodes = false;
-      for (const auto &cell : cells.active_cell_iterators())
-        for (const auto f : cell->face_indices())
-          if (!cell->at_boundary(f) && cell->neighbor(f)->has_children())
-            has_hanging_nodes = true;
-      AssertThrow(!has_hanging_nodes,
-                  ExcMessage("Parameter <Finite element/Cells> = simplices "
-                             "splits conforming meshes only; the scene <" +
-                             parameters.scene.name +
-                             "> refines locally (hanging nodes): set its "
-                             "local refinement to 0 (e.g. Contact "
-                             "refinements) and refine with Scene/Refinement."));
-      GridGenerator::convert_hypercube_to_simplex_mesh(cells, triangulation);
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
-  Problem<dim>::make_grid(
-    const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights)
+  Problem<dim>::make_grid(const CellWeights *weights)
   {
     TimerOutput::Scope t(timer, "setup");
-    curved_cells = {};
-    if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
-    {
-      const double memory = machines_memory(mpi_communicator);
-      create_scene(parameters,
-                   triangulation,
-                   curved_cells,
-                   [&](const unsigned int n)
-                   { check_mesh_size<dim>(parameters, n, memory); });
-    }
-    else
-      create_distributed_scene(weights);
-    if (!triangulation.all_reference_cells_are_hyper_cube())
-      check_simplex_model<dim>(parameters, triangulation, warnings);
-
-    // Every boundary id named in a condition must exist in the mesh (the
-    // faces of own cells: on a distributed mesh the outer faces of the
-    // ghost layer are boundary faces with id 0 too).
-    std::set<types::boundary_id> existing;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-            existing.insert(face->boundary_id());
-    existing = Utilities::MPI::compute_set_union(existing, mpi_communicator);
-    const auto require = [&](const unsigned int id, const std::string &entry)
-    {
-      AssertThrow(existing.count(id) == 1,
-                  ExcMessage("Parameter <Boundary conditions/" + entry +
-                             "> names boundary id " + std::to_string(id) +
-                             ", which scene <" + parameters.scene.name +
-                             "> does not have. Its boundary ids are " +
-                             Text::join(existing) +
-                             (parameters.scene.name == "gmsh" ?
-                                " (a gmsh mesh's boundary ids are the "
-                                "physical group tags of its boundary lines "
-                                "in 2D, surfaces in 3D)." :
-                                "; the README lists what each one is.")));
-    };
-    for (const auto &c : parameters.boundary_conditions.dirichlet)
-      require(c.boundary_id, "Dirichlet");
-    for (const auto id : parameters.boundary_conditions.symmetry)
-      require(id, "Symmetry");
-    for (const auto &c : parameters.boundary_conditions.neumann)
-      require(c.boundary_id, "Neumann");
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::create_distributed_scene(
-    const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights)
-  {
-    // The scene generators build whole meshes (curved bodies refined on
-    // their exact manifolds, then merged flat): the first process builds it,
-    // METIS partitions it, and every process keeps its own cells and their
-    // ghosts. A bad scene is reported on every process.
-    const unsigned int n_ranks =
-      Utilities::MPI::n_mpi_processes(mpi_communicator);
-    // Collective, so before the first process builds the scene.
-    const double       memory = machines_memory(mpi_communicator);
-    Triangulation<dim> serial;
-    CurvedCells<dim>   serial_curved;
-    std::string        error;
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-    {
-      try
-      {
-        create_scene(parameters,
-                     serial,
-                     serial_curved,
-                     [&](const unsigned int n)
-                     { check_mesh_size<dim>(parameters, n, memory); });
-      }
-      catch (const ExceptionBase &e)
-      {
-        std::ostringstream text;
-        e.print_info(text);
-        error = text.str();
-      }
-      catch (const std::exception &e)
-      {
-        error = e.what();
-      }
-    }
-    error = Utilities::MPI::broadcast(mpi_communicator, error, 0);
-    AssertThrow(error.empty(), ExcMessage(error));
-
-    const auto description = TriangulationDescription::Utilities::
-      create_description_from_triangulation_in_groups<dim, dim>(
-        [&serial](Triangulation<dim> &tria)
-        {
-          tria.copy_triangulation(serial);
-          // The mesh is final: no refinement follows, no manifold is
-          // needed on the processes.
-          for (const auto &cell : tria.cell_iterators())
-            cell->set_all_manifold_ids(numbers::flat_manifold_id);
-          tria.reset_all_manifolds();
-        },
-        [this, n_ranks, weights](Triangulation<dim> &tria,
-                                 const MPI_Comm,
-                                 const unsigned int)
-        {
-          // A cell that carries slave faces weighs more: its slave nodes'
-          // contact elements are evaluated by its process. (No weights at
-          // all is METIS' plain partition.)
-          const unsigned int weight = parameters.parallel.contact_cell_weight;
-          const auto slave_ids      = parameters.contact.slave_boundary_ids();
-          std::vector<unsigned int> cell_weights;
-          if (weight > 1)
-          {
-            cell_weights.assign(tria.n_active_cells(), 1);
-            for (const auto &cell : tria.active_cell_iterators())
-              for (const auto &face : cell->face_iterators())
-                if (face->at_boundary() &&
-                    slave_ids.count(face->boundary_id()) == 1)
-                  cell_weights[cell->active_cell_index()] = weight;
-          }
-          // After a rebalance: 1 + each cell's measured contact work, in
-          // cells' assembly.
-          if (weights != nullptr)
-          {
-            if (cell_weights.empty())
-              cell_weights.assign(tria.n_active_cells(), 1);
-            for (const auto &[id, w] : *weights)
-            {
-              auto &weight_of_cell =
-                cell_weights[tria.create_cell_iterator(CellId(id))
-                               ->active_cell_index()];
-              weight_of_cell = std::max(weight_of_cell, 1 + w);
-            }
-          }
-          GridTools::partition_triangulation(n_ranks, cell_weights, tria);
-        },
-        mpi_communicator,
-        n_ranks);
-    triangulation.create_triangulation(description);
-
-    // Cells refined after the merge (local refinement at a contact point)
-    // are refined again from the description, and their new vertices would
-    // sit on straight lines: every process takes the vertices of its cells
-    // from the first process's mesh, where the scene put them (on a sphere,
-    // a cylinder, ...).
-    const unsigned int n_levels =
-      Utilities::MPI::broadcast(mpi_communicator, serial.n_levels(), 0);
-    if (n_levels > 1)
-    {
-      std::vector<CellId> mine;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (!cell->is_artificial() && cell->level() > 0)
-          mine.push_back(cell->id());
-      const std::vector<double> x = cells_from_first_process(
-        mpi_communicator,
-        serial,
-        mine,
-        [](const auto &cell, std::vector<double> &numbers)
-        {
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int d = 0; d < dim; ++d)
-              numbers.push_back(cell->vertex(v)[d]);
-        });
-      unsigned int next = 0;
-      for (const auto &cell : triangulation.active_cell_iterators())
-        if (!cell->is_artificial() && cell->level() > 0)
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int d = 0; d < dim; ++d)
-              cell->vertex(v)[d] = x[next++];
-    }
-    distribute_curved_cells(serial, serial_curved);
+    create_mesh<dim>(parameters,
+                     triangulation,
+                     curved_cells,
+                     weights,
+                     warnings);
   }
 
 
@@ -355,7 +117,15 @@ namespace tribos
     owned_per_process =
       Utilities::MPI::all_gather(mpi_communicator, locally_owned_dofs);
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
-    setup_geometry();
+    geometry.setup(dof_handler,
+                   *fe,
+                   quadrature,
+                   locally_owned_dofs,
+                   locally_relevant_dofs,
+                   curved_cells,
+                   parameters.finite_element.degree,
+                   warnings,
+                   mpi_communicator);
 
     const auto &bc = parameters.boundary_conditions;
     dirichlet_functions.clear();
@@ -401,7 +171,7 @@ namespace tribos
         locally_owned_dofs,
         mpi_communicator,
         parameters.finite_element.axisymmetric,
-        curved_mapping.get());
+        geometry.curved_mapping());
       // Contact couples this process's slave nodes to master nodes
       // anywhere: the constraints and the pattern know every contact dof.
       // The solution is ghosted on the slave nodes this process reads; the
@@ -585,6 +355,17 @@ namespace tribos
         dynamics_state->integrator().force_weight());
     dynamics_state->start(bulk_assembler->stored_energy(displacement()));
     log(dynamics_state->describe());
+  }
+
+
+
+  template <int dim>
+  const Mapping<dim> &
+  Problem<dim>::mapping() const
+  {
+    if (const Mapping<dim> *curved = geometry.curved_mapping())
+      return *curved;
+    return fe->reference_cell().template get_default_linear_mapping<dim>();
   }
 
 

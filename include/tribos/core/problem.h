@@ -4,8 +4,10 @@
 #include <tribos/contact/contact_handler.h>
 #include <tribos/core/bulk_assembler.h>
 #include <tribos/core/checkpoint.h>
+#include <tribos/core/create_mesh.h>
 #include <tribos/core/dynamics_state.h>
 #include <tribos/core/material_state.h>
+#include <tribos/core/reference_geometry.h>
 #include <tribos/core/stabilization.h>
 #include <tribos/core/warnings.h>
 #include <tribos/parameters/all_parameters.h>
@@ -90,8 +92,7 @@ namespace tribos
      * dynamics.
      */
     void
-    setup(const std::vector<std::pair<CellId::binary_type, unsigned int>>
-            *weights = nullptr);
+    setup(const CellWeights *weights = nullptr);
 
     /** The linear solver that holds on to the system matrix (released
      * before the matrix is rebuilt). */
@@ -232,7 +233,7 @@ namespace tribos
     bool
     curved() const
     {
-      return curved_mapping != nullptr;
+      return geometry.curved_mapping() != nullptr;
     }
     const IndexSet &
     owned_dofs() const
@@ -336,30 +337,11 @@ namespace tribos
 
   private:
     /* setup.cc */
+    /** The mesh (create_mesh()), in the setup timer section. */
     void
-    make_grid(
-      const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights);
-    /** Parallel/Mesh = distributed: the scene built on the first process,
-     * partitioned, and this process's part of it. */
-    void
-    create_distributed_scene(
-      const std::vector<std::pair<CellId::binary_type, unsigned int>> *weights);
-    /** Hand every process the curved geometry of its own cells from the
-     * first process's @p serial mesh and its @p serial_curved cells (a
-     * distributed mesh of a second-order file). */
-    void
-    distribute_curved_cells(const Triangulation<dim> &serial,
-                            const CurvedCells<dim>   &serial_curved);
+    make_grid(const CellWeights *weights);
     void
     setup_system();
-    /** The curved geometry on the dofs (with Polynomial degree = 2; degree
-     * 1 drops it with a warning): reference_positions and the mapping. */
-    void
-    setup_geometry();
-    /** Refuse a curved cell whose map folds it (a mid-side node far off
-     * its edge): det J <= 0 at a quadrature point or node. */
-    void
-    check_curved_cells() const;
     /** The system's index sets, with the multipliers of the contact. */
     void
     setup_unknowns();
@@ -417,10 +399,9 @@ namespace tribos
     /** A second-order mesh's curved geometry per active cell (own cells
      * on a distributed mesh); empty: straight cells. */
     CurvedCells<dim> curved_cells;
-    /** Curved cells: each dof's reference coordinate (its node's, in the
-     * dof's component), ghosted on the cells' dofs; the mapping on it. */
-    Vector                        reference_positions;
-    std::unique_ptr<Mapping<dim>> curved_mapping;
+    /** Curved cells on the dofs (after the DoFHandler, whose dofs its
+     * mapping reads). */
+    ReferenceGeometry<dim> geometry;
     /** Gauss rules of the mesh's cell kind (quadrilaterals and hexahedra:
      * tensor products; triangles and tetrahedra: the simplex rules) and of
      * its faces, set with the finite element (setup_system()). */

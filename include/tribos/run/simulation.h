@@ -34,7 +34,7 @@ namespace tribos
     std::string checkpoint;
     /** Rank 0: METIS' weight of every cell with measured contact work
      * (others weigh 1). */
-    std::vector<std::pair<CellId::binary_type, unsigned int>> weights;
+    CellWeights weights;
     /** The contact time's max/min over the processes in the step. */
     double       imbalance = 0;
     unsigned int step      = 0;

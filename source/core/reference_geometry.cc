@@ -1,70 +1,35 @@
 /**
- * The cells' reference geometry: a second-order mesh's curved cells
- * handed to the processes, set on the dofs, checked, and the mapping every
- * evaluation on the cells takes.
+ * The reference geometry of a second-order mesh's curved cells on the dofs,
+ * checked, and the mapping every evaluation on the cells takes.
  */
 
-#include <tribos/base/cells_from_first_process.h>
-#include <tribos/core/problem.h>
+#include <tribos/core/reference_geometry.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_fe_field.h>
 
 #include <sstream>
+#include <string>
 
 namespace tribos
 {
   template <int dim>
   void
-  Problem<dim>::distribute_curved_cells(const Triangulation<dim> &serial,
-                                        const CurvedCells<dim>   &serial_curved)
+  ReferenceGeometry<dim>::setup(const DoFHandler<dim> &dof_handler,
+                                const FESystem<dim>   &fe,
+                                const Quadrature<dim> &quadrature,
+                                const IndexSet        &locally_owned_dofs,
+                                const IndexSet        &locally_relevant_dofs,
+                                CurvedCells<dim>      &curved_cells,
+                                const unsigned int     degree,
+                                Warnings              &warnings,
+                                const MPI_Comm         mpi_communicator)
   {
-    // Every process asks for the support points of its own cells (by
-    // CellId, the same in the serial and the distributed mesh).
-    if (Utilities::MPI::broadcast(mpi_communicator, serial_curved.empty(), 0))
-      return;
-    std::vector<CellId> mine;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        mine.push_back(cell->id());
-    const std::vector<double> x = cells_from_first_process(
-      mpi_communicator,
-      serial,
-      mine,
-      [&](const auto &cell, std::vector<double> &numbers)
-      {
-        for (const auto &point :
-             serial_curved.support_points[cell->active_cell_index()])
-          for (unsigned int d = 0; d < dim; ++d)
-            numbers.push_back(point[d]);
-      });
-    curved_cells.support_points.assign(triangulation.n_active_cells(), {});
-    if (mine.empty())
-      return;
-    const unsigned int n    = x.size() / (dim * mine.size());
-    unsigned int       next = 0;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-      {
-        auto &points = curved_cells.support_points[cell->active_cell_index()];
-        points.resize(n);
-        for (auto &point : points)
-          for (unsigned int d = 0; d < dim; ++d)
-            point[d] = x[next++];
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::setup_geometry()
-  {
-    curved_mapping.reset();
+    mapping.reset();
     if (curved_cells.empty())
       return;
-    if (parameters.finite_element.degree == 1)
+    if (degree == 1)
     {
       warnings.warn(
         "the mesh's cells are second-order (curved), and Finite "
@@ -78,19 +43,19 @@ namespace tribos
     // the quadratic element (FE_Q(2), FE_SimplexP(2)) the dof's base
     // function belongs to, in the dof's component.
     Vector owned(locally_owned_dofs, mpi_communicator);
-    std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
       {
         const auto &points =
           curved_cells.support_points[cell->active_cell_index()];
-        AssertThrow(points.size() == fe->base_element(0).n_dofs_per_cell(),
+        AssertThrow(points.size() == fe.base_element(0).n_dofs_per_cell(),
                     ExcInternalError());
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < dofs.size(); ++i)
           if (locally_owned_dofs.is_element(dofs[i]))
           {
-            const auto [component, base] = fe->system_to_component_index(i);
+            const auto [component, base] = fe.system_to_component_index(i);
             owned[dofs[i]]               = points[base][component];
           }
       }
@@ -99,26 +64,30 @@ namespace tribos
                                locally_relevant_dofs,
                                mpi_communicator);
     reference_positions = owned;
-    curved_mapping =
+    mapping =
       std::make_unique<MappingFEField<dim, dim, Vector>>(dof_handler,
                                                          reference_positions);
-    check_curved_cells();
+    check_curved_cells(dof_handler, fe, quadrature, mpi_communicator);
   }
 
 
 
   template <int dim>
   void
-  Problem<dim>::check_curved_cells() const
+  ReferenceGeometry<dim>::check_curved_cells(
+    const DoFHandler<dim> &dof_handler,
+    const FESystem<dim>   &fe,
+    const Quadrature<dim> &quadrature,
+    const MPI_Comm         mpi_communicator) const
   {
     // The Jacobian of the curved map at the quadrature points and at the
     // nodes: a mid-side node far off its edge folds the cell (det J <= 0),
     // and nothing after this would say so.
     std::vector<Point<dim>> points = quadrature.get_points();
-    for (const auto &p : fe->base_element(0).get_unit_support_points())
+    for (const auto &p : fe.base_element(0).get_unit_support_points())
       points.push_back(p);
-    FEValues<dim> fe_values(mapping(),
-                            *fe,
+    FEValues<dim> fe_values(*mapping,
+                            fe,
                             Quadrature<dim>(points),
                             update_jacobians | update_quadrature_points);
     std::string   folded;
@@ -151,16 +120,14 @@ namespace tribos
 
 
   template <int dim>
-  const Mapping<dim> &
-  Problem<dim>::mapping() const
+  const Mapping<dim> *
+  ReferenceGeometry<dim>::curved_mapping() const
   {
-    if (curved_mapping)
-      return *curved_mapping;
-    return fe->reference_cell().template get_default_linear_mapping<dim>();
+    return mapping.get();
   }
 
 
 
-  template class Problem<2>;
-  template class Problem<3>;
+  template class ReferenceGeometry<2>;
+  template class ReferenceGeometry<3>;
 } // namespace tribos
