@@ -14,11 +14,11 @@ namespace tribos
   Problem<dim>::solution_changed()
   {
     ghosted_solution = owned_solution;
-    if (n_multipliers == 0)
+    if (layout.n_multipliers == 0)
       return;
     // The displacement part for the finite element evaluations.
-    Vector owned(locally_owned_dofs, mpi_communicator);
-    for (const auto i : locally_owned_dofs)
+    Vector owned(layout.locally_owned_dofs, mpi_communicator);
+    for (const auto i : layout.locally_owned_dofs)
       owned[i] = owned_solution[i];
     owned.compress(VectorOperation::insert);
     ghosted_displacement = owned;
@@ -46,7 +46,7 @@ namespace tribos
       contact_handler->begin_increment();
     if (dynamics_state)
       dynamics_state->begin_increment(time);
-    make_constraints(time, false, increment_constraints);
+    model.make_constraints(time, &ghosted_solution, increment_constraints);
   }
 
 
@@ -188,19 +188,10 @@ namespace tribos
   std::vector<double>
   Problem<dim>::reaction_forces() const
   {
-    std::vector<double> forces;
-    for (const auto &per_component : reaction_dofs)
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        double sum = 0;
-        for (const auto dof : per_component[d])
-          if (locally_owned_dofs.is_element(dof))
-            sum +=
-              full_residual[dof] +
-              (dynamics_state ? dynamics_state->inertia_forces()[dof] : 0.);
-        forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
-      }
-    return forces;
+    return model.reaction_forces(full_residual,
+                                 dynamics_state ?
+                                   &dynamics_state->inertia_forces() :
+                                   nullptr);
   }
 
 
@@ -247,11 +238,11 @@ namespace tribos
   NonlinearProblem::Norms
   Problem<dim>::norms(const Vector &v) const
   {
-    if (n_multipliers == 0)
+    if (layout.n_multipliers == 0)
       return {v.l2_norm(), 0};
     double                        squared[2] = {0, 0};
-    const types::global_dof_index n_dofs     = dof_handler.n_dofs();
-    for (const auto i : system_owned)
+    const types::global_dof_index n_dofs     = model.dof_handler().n_dofs();
+    for (const auto i : layout.system_owned)
       squared[i < n_dofs ? 0 : 1] += v[i] * v[i];
     return {std::sqrt(Utilities::MPI::sum(squared[0], mpi_communicator)),
             std::sqrt(Utilities::MPI::sum(squared[1], mpi_communicator))};
@@ -317,26 +308,27 @@ namespace tribos
       owned_solution = start;
       solution_changed();
     };
-    const types::global_dof_index n_system = system_owned.size();
+    const types::global_dof_index n_system = layout.system_owned.size();
 
     // Columns: every free contact dof, every multiplier and every 7th free
     // dof.
     std::vector<types::global_dof_index> columns;
     for (types::global_dof_index j = 0; j < n_system; ++j)
       if (!homogeneous_constraints.is_constrained(j) &&
-          ((contact_handler && j < dof_handler.n_dofs() &&
+          ((contact_handler && j < model.dof_handler().n_dofs() &&
             contact_handler->contact_dofs().is_element(j)) ||
-           j >= dof_handler.n_dofs() || j % 7 == 0))
+           j >= model.dof_handler().n_dofs() || j % 7 == 0))
         columns.push_back(j);
 
     double error = 0, size = 0;
     // The step relative to the displacement, at least 1e-9 of the model's
     // diameter: free of the length unit.
-    const double h = 1e-7 * std::max(0.01 * GridTools::diameter(triangulation),
-                                     owned_solution.linfty_norm());
-    Vector       unit(system_owned, mpi_communicator);
-    Vector       plus(system_owned, mpi_communicator);
-    Vector       column(system_owned, mpi_communicator);
+    const double h =
+      1e-7 * std::max(0.01 * GridTools::diameter(model.triangulation()),
+                      owned_solution.linfty_norm());
+    Vector unit(layout.system_owned, mpi_communicator);
+    Vector plus(layout.system_owned, mpi_communicator);
+    Vector column(layout.system_owned, mpi_communicator);
     for (const auto j : columns)
     {
       unit    = 0;

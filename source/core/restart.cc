@@ -57,12 +57,14 @@ namespace tribos
   Problem<dim>::cell_values(const Vector                         &v,
                             std::vector<std::array<unsigned, 4>> *cells) const
   {
-    Vector ghosted(locally_owned_dofs, locally_relevant_dofs, mpi_communicator);
+    Vector ghosted(layout.locally_owned_dofs,
+                   layout.locally_relevant_dofs,
+                   mpi_communicator);
     ghosted                                = v;
-    const unsigned int                   n = fe->n_dofs_per_cell();
+    const unsigned int                   n = model.fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     std::vector<std::pair<CellKey, std::vector<double>>> mine;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : model.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
       {
         cell->get_dof_indices(dofs);
@@ -91,12 +93,12 @@ namespace tribos
     const std::vector<double>                  &values,
     Vector                                     &v) const
   {
-    const unsigned int                   n = fe->n_dofs_per_cell();
+    const unsigned int                   n = model.fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     AssertThrow(values.size() == cells.size() * n,
                 ExcMessage("The checkpoint's vector does not fit the mesh."));
     unsigned int n_missing = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : model.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
       {
         const CellKey key = cell->id().template to_binary<dim>();
@@ -110,7 +112,7 @@ namespace tribos
         const std::size_t position = it - cells.begin();
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
-          if (locally_owned_dofs.is_element(dofs[i]))
+          if (layout.locally_owned_dofs.is_element(dofs[i]))
             v[dofs[i]] = values[position * n + i];
       }
     // Every process says so, or none (no process waits for the others).
@@ -134,29 +136,29 @@ namespace tribos
   {
     TimerOutput::Scope t(timer, "output");
     Checkpoint         c;
-    c.dimension                   = dim;
-    c.n_active_cells              = triangulation.n_global_active_cells();
-    c.dofs_per_cell               = fe->n_dofs_per_cell();
-    c.n_dofs                      = dof_handler.n_dofs();
-    c.n_multipliers               = n_multipliers;
-    c.stepper                     = stepper;
+    c.dimension      = dim;
+    c.n_active_cells = model.triangulation().n_global_active_cells();
+    c.dofs_per_cell  = model.fe().n_dofs_per_cell();
+    c.n_dofs         = model.dof_handler().n_dofs();
+    c.n_multipliers  = layout.n_multipliers;
+    c.stepper        = stepper;
     c.largest_stabilization_ratio = stabilization_springs.largest_ratio();
 
     // The multipliers of a system vector, each from its owner, summed over
     // the processes (only the owner has a node's multipliers).
     const auto multipliers_of = [&](const Vector &v)
     {
-      std::vector<double> values(n_multipliers, 0.);
-      for (const auto i : system_owned)
-        if (i >= dof_handler.n_dofs())
-          values[i - dof_handler.n_dofs()] = v[i];
+      std::vector<double> values(layout.n_multipliers, 0.);
+      for (const auto i : layout.system_owned)
+        if (i >= model.dof_handler().n_dofs())
+          values[i - model.dof_handler().n_dofs()] = v[i];
       Utilities::MPI::sum(values, mpi_communicator, values);
       return values;
     };
 
     // The displacement part of the solution, then the multipliers.
-    Vector owned(locally_owned_dofs, mpi_communicator);
-    for (const auto i : locally_owned_dofs)
+    Vector owned(layout.locally_owned_dofs, mpi_communicator);
+    for (const auto i : layout.locally_owned_dofs)
       owned[i] = owned_solution[i];
     owned.compress(VectorOperation::insert);
     c.cell_values["solution"] = cell_values(owned, &c.cells);
@@ -166,7 +168,7 @@ namespace tribos
     // displacement part per cell, its multipliers.
     if (c.stepper.change_increment > 0)
     {
-      for (const auto i : locally_owned_dofs)
+      for (const auto i : layout.locally_owned_dofs)
         owned[i] = change[i];
       owned.compress(VectorOperation::insert);
       c.cell_values["change"] = cell_values(owned);
@@ -175,7 +177,7 @@ namespace tribos
 
     // Plastic history of the owned cells, gathered in cell order.
     std::vector<std::pair<CellKey, std::vector<double>>> mine;
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : model.triangulation().active_cell_iterators())
       if (cell->is_locally_owned() && material_state->has_history(cell))
         mine.emplace_back(cell->id().template to_binary<dim>(),
                           material_state->cell_history(cell));
@@ -264,7 +266,7 @@ namespace tribos
         m += weights[d] * x[d];
       return m;
     };
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : model.triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
       {
         for (const auto v : cell->vertex_indices())
@@ -307,10 +309,12 @@ namespace tribos
                              "run that wrote it."));
     };
     require(c.dimension, dim, "dimensions");
-    require(c.n_active_cells, triangulation.n_global_active_cells(), "cells");
-    require(c.dofs_per_cell, fe->n_dofs_per_cell(), "dofs per cell");
-    require(c.n_dofs, dof_handler.n_dofs(), "dofs");
-    require(c.n_multipliers, n_multipliers, "contact multipliers");
+    require(c.n_active_cells,
+            model.triangulation().n_global_active_cells(),
+            "cells");
+    require(c.dofs_per_cell, model.fe().n_dofs_per_cell(), "dofs per cell");
+    require(c.n_dofs, model.dof_handler().n_dofs(), "dofs");
+    require(c.n_multipliers, layout.n_multipliers, "contact multipliers");
     // The same sizes on another geometry or other materials would restart
     // a state that does not belong to the model.
     for (const auto &[name, value] : fingerprint())
@@ -371,20 +375,21 @@ namespace tribos
     const std::string where =
       "--restart <" + parameters.restart_directory + ">: ";
     set_from_cell_values(c.cells, c.cell_values.at("solution"), owned_solution);
-    for (types::global_dof_index i = 0; i < n_multipliers; ++i)
-      if (system_owned.is_element(dof_handler.n_dofs() + i))
-        owned_solution[dof_handler.n_dofs() + i] = c.multipliers[i];
+    for (types::global_dof_index i = 0; i < layout.n_multipliers; ++i)
+      if (layout.system_owned.is_element(model.dof_handler().n_dofs() + i))
+        owned_solution[model.dof_handler().n_dofs() + i] = c.multipliers[i];
     owned_solution.compress(VectorOperation::insert);
     solution_changed();
     if (c.stepper.change_increment > 0)
     {
-      change_of_restart.reinit(system_owned, mpi_communicator);
+      change_of_restart.reinit(layout.system_owned, mpi_communicator);
       set_from_cell_values(c.cells,
                            c.cell_values.at("change"),
                            change_of_restart);
-      for (types::global_dof_index i = 0; i < n_multipliers; ++i)
-        if (system_owned.is_element(dof_handler.n_dofs() + i))
-          change_of_restart[dof_handler.n_dofs() + i] = c.multiplier_change[i];
+      for (types::global_dof_index i = 0; i < layout.n_multipliers; ++i)
+        if (layout.system_owned.is_element(model.dof_handler().n_dofs() + i))
+          change_of_restart[model.dof_handler().n_dofs() + i] =
+            c.multiplier_change[i];
       change_of_restart.compress(VectorOperation::insert);
     }
 
@@ -392,7 +397,7 @@ namespace tribos
     std::map<CellKey, const std::vector<double> *> by_cell;
     for (const auto &[cell, values] : c.history)
       by_cell[cell] = &values;
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : model.triangulation().active_cell_iterators())
       if (cell->is_locally_owned() && material_state->has_history(cell))
       {
         const auto it = by_cell.find(cell->id().template to_binary<dim>());

@@ -80,13 +80,16 @@ namespace tribos
 
 
   template <int dim>
-  RunOutput<dim>::RunOutput(const Problem<dim> &problem,
-                            const Warnings     &warnings,
-                            TimerOutput        &timer)
-    : problem(problem)
+  RunOutput<dim>::RunOutput(const Parameters::AllParameters &parameters,
+                            const Model<dim>                &model,
+                            const Problem<dim>              &problem,
+                            const Warnings                  &warnings,
+                            TimerOutput                     &timer)
+    : model(model)
+    , problem(problem)
     , warnings(warnings)
-    , parameters(problem.get_parameters())
-    , mpi_communicator(problem.communicator())
+    , parameters(parameters)
+    , mpi_communicator(model.communicator())
     , timer(timer)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
   {
@@ -258,7 +261,7 @@ namespace tribos
       };
       std::pair<Key, std::array<types::global_dof_index, dim>> best;
       best.first.fill(std::numeric_limits<double>::max());
-      for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
+      for (const auto &cell : model.dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto v : cell->vertex_indices())
             if (const Key key = key_of(cell, v); key < best.first)
@@ -310,16 +313,16 @@ namespace tribos
   std::pair<double, double>
   RunOutput<dim>::displacement_errors(const double time) const
   {
-    const auto &dof_handler   = problem.get_dof_handler();
-    const auto &triangulation = problem.get_triangulation();
+    const auto &dof_handler   = model.dof_handler();
+    const auto &triangulation = model.triangulation();
     exact_displacement->set_time(time);
-    const ReferenceCell   cell_kind = problem.get_fe().reference_cell();
+    const ReferenceCell   cell_kind = model.fe().reference_cell();
     const Quadrature<dim> error_quadrature =
       cell_kind.template get_gauss_type_quadrature<dim>(
         // deal.II's simplex Gauss rules go up to 4 points per direction
         // (exact for degree 7).
         cell_kind.is_simplex() ? 4 : parameters.finite_element.degree + 3);
-    const Mapping<dim>   &mapping = problem.mapping();
+    const Mapping<dim>   &mapping = model.mapping();
     dealii::Vector<float> cellwise(triangulation.n_active_cells());
     VectorTools::integrate_difference(mapping,
                                       dof_handler,
@@ -403,7 +406,7 @@ namespace tribos
       row.push_back(l2);
       row.push_back(h1);
     }
-    const auto &owned = problem.owned_dofs();
+    const auto &owned = model.layout().locally_owned_dofs;
     for (const auto &dofs : probe_dofs)
       for (const auto dof : dofs)
         row.push_back(Utilities::MPI::sum(owned.is_element(dof) ?

@@ -14,7 +14,7 @@ namespace tribos
   RunOutput<dim>::write_summary(const std::string &status, const RunTotals &run)
   {
     const auto *contact       = problem.contact();
-    const auto &triangulation = problem.get_triangulation();
+    const auto &triangulation = model.triangulation();
     // Load balance: each process's time in the sections its share of the
     // cells and of the contact zone sets (collective, so before rank 0
     // alone goes on). A contact zone on one process makes the others wait.
@@ -38,7 +38,13 @@ namespace tribos
     // contact across processes.
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const auto ghost_values = problem.ghost_values();
+    // The ghost values per update of the ghosted solution, and the
+    // contact's share of them.
+    const auto &layout = model.layout();
+    const std::pair<types::global_dof_index, types::global_dof_index>
+               ghost_values = {layout.system_relevant.n_elements() -
+                                 layout.system_owned.n_elements(),
+                               layout.n_contact_ghosts};
     const auto ghosts =
       Utilities::MPI::min_max_avg(double(ghost_values.first), mpi_communicator);
     const auto contact_ghosts =
@@ -82,12 +88,12 @@ namespace tribos
             << "scene             " << parameters.scene.name << '\n'
             << "cells             " << triangulation.n_global_active_cells()
             << '\n'
-            << "dofs              " << problem.get_dof_handler().n_dofs()
-            << '\n'
+            << "dofs              " << model.dof_handler().n_dofs() << '\n'
             << "contact dofs      "
             << (contact ? contact->contact_dofs().n_elements() : 0) << '\n'
-            << "multipliers       " << problem.n_contact_multipliers() << '\n'
-            << "bodies            " << problem.n_bodies() << '\n'
+            << "multipliers       " << model.layout().n_multipliers << '\n'
+            << "bodies            " << problem.materials().bodies().size()
+            << '\n'
             << "MPI processes     "
             << Utilities::MPI::n_mpi_processes(mpi_communicator) << '\n'
             << "increments        " << totals.n_increments << '\n'

@@ -40,9 +40,11 @@ namespace tribos
      */
     template <int dim>
     void
-    compute_cell_fields(const Problem<dim> &problem, CellFields &fields)
+    compute_cell_fields(const Model<dim>   &model,
+                        const Problem<dim> &problem,
+                        CellFields         &fields)
     {
-      const auto        &triangulation = problem.get_triangulation();
+      const auto        &triangulation = model.triangulation();
       const auto        &materials     = problem.materials();
       const unsigned int n_cells       = triangulation.n_active_cells();
       const unsigned int n_stress      = (dim == 2 ? 4 : 6);
@@ -117,16 +119,17 @@ namespace tribos
      */
     template <int dim>
     void
-    add_contact_fields(const Problem<dim>       &problem,
+    add_contact_fields(const Model<dim>         &model,
+                       const Problem<dim>       &problem,
                        const ContactOutput<dim> &contact_output,
                        ContactFields<dim>       &fields,
                        DataOut<dim>             &data_out)
     {
-      const MPI_Comm  communicator = problem.communicator();
-      const auto     &owned_dofs   = problem.owned_dofs();
-      const auto     &fe           = problem.get_fe();
-      const auto     &dof_handler  = problem.get_dof_handler();
-      const IndexSet &relevant     = problem.relevant_dofs();
+      const MPI_Comm  communicator = model.communicator();
+      const auto     &owned_dofs   = model.layout().locally_owned_dofs;
+      const auto     &fe           = model.fe();
+      const auto     &dof_handler  = model.dof_handler();
+      const IndexSet &relevant     = model.layout().locally_relevant_dofs;
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
         interpretation(
@@ -151,7 +154,7 @@ namespace tribos
         if (!cell->is_artificial())
         {
           const typename DoFHandler<dim>::active_cell_iterator node_cell(
-            &problem.get_triangulation(),
+            &model.triangulation(),
             cell->level(),
             cell->index(),
             &node_dof_handler);
@@ -205,9 +208,9 @@ namespace tribos
       return;
 
     CellFields cells;
-    compute_cell_fields(problem, cells);
+    compute_cell_fields(model, problem, cells);
     DataOut<dim> data_out;
-    data_out.attach_dof_handler(problem.get_dof_handler());
+    data_out.attach_dof_handler(model.dof_handler());
     using cell_iterator = typename Triangulation<dim>::active_cell_iterator;
     const auto next_owned =
       [](const Triangulation<dim> &tria, cell_iterator cell)
@@ -243,10 +246,13 @@ namespace tribos
     if (problem.materials().any_history())
       data_out.add_data_vector(cells.plastic_strain, "PEEQ");
     data_out.add_data_vector(cells.body_id, "body_id");
-    ContactFields<dim> contact_fields(problem.get_triangulation(),
-                                      problem.get_fe());
+    ContactFields<dim> contact_fields(model.triangulation(), model.fe());
     if (contact_output)
-      add_contact_fields(problem, *contact_output, contact_fields, data_out);
+      add_contact_fields(model,
+                         problem,
+                         *contact_output,
+                         contact_fields,
+                         data_out);
 
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
@@ -258,17 +264,16 @@ namespace tribos
     // triangles and tetrahedra (VTK types 22 and 24: the fields at the
     // edge middles too). Curved cells (a second-order mesh): the patches'
     // points where the mapping puts them, inside the bodies too.
-    if (problem.curved())
-      data_out.build_patches(problem.mapping(),
+    if (model.curved_mapping() != nullptr)
+      data_out.build_patches(model.mapping(),
                              parameters.finite_element.degree,
                              DataOut<dim>::curved_inner_cells);
-    else if (problem.get_triangulation().all_reference_cells_are_hyper_cube())
+    else if (model.triangulation().all_reference_cells_are_hyper_cube())
       data_out.build_patches(parameters.finite_element.degree);
     else
-      data_out.build_patches(problem.get_fe()
-                               .reference_cell()
-                               .template get_default_linear_mapping<dim>(),
-                             parameters.finite_element.degree);
+      data_out.build_patches(
+        model.fe().reference_cell().template get_default_linear_mapping<dim>(),
+        parameters.finite_element.degree);
 
     // zlib's fastest level: deal.II's default (best compression) took five
     // times as long for files 12 % smaller (Hertz 2D, doc/benchmarks.md).

@@ -52,16 +52,16 @@ namespace tribos
       // work (one node's element outweighs a process's share, say).
       may_rebalance = false;
       warnings.warn("the contact work stayed out of balance after rebalancing "
-                   "(max/min " +
-                   std::to_string(imbalance) + " in step " +
-                   std::to_string(step) + "): no further rebalancing");
+                    "(max/min " +
+                    std::to_string(imbalance) + " in step " +
+                    std::to_string(step) + "): no further rebalancing");
       return;
     }
 
     // A node's work in units of one cell's assembly, on its cell.
     const double per_cell =
       std::max(Utilities::MPI::sum(assembly_time, mpi_communicator) /
-                 problem.get_triangulation().n_global_active_cells(),
+                 model.triangulation().n_global_active_cells(),
                std::numeric_limits<double>::min());
     std::map<CellId::binary_type, double> mine;
     for (const auto &[cell, seconds] : work)

@@ -21,9 +21,10 @@ namespace tribos
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
     , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
     , warnings(mpi_communicator)
+    , model(parameters, mpi_communicator, timer, warnings)
     , problem(
         parameters,
-        mpi_communicator,
+        model,
         timer,
         [this](const std::string &line) { pcout << line << std::endl; },
         warnings)
@@ -45,15 +46,19 @@ namespace tribos
       restart->load(parameters.restart_directory);
       problem.check_checkpoint(*restart);
     }
-    output = std::make_unique<RunOutput<dim>>(problem, warnings, timer);
+    output = std::make_unique<RunOutput<dim>>(parameters,
+                                              model,
+                                              problem,
+                                              warnings,
+                                              timer);
     output->open(restart.get());
 
+    const auto         n_bodies = problem.materials().bodies().size();
     std::ostringstream header;
     header << "tribos: " << dim << "D scene <" << parameters.scene.name << ">, "
-           << problem.get_triangulation().n_global_active_cells() << " cells, "
-           << problem.get_dof_handler().n_dofs() << " dofs, "
-           << problem.n_bodies()
-           << (problem.n_bodies() == 1 ? " body, " : " bodies, ")
+           << model.triangulation().n_global_active_cells() << " cells, "
+           << model.dof_handler().n_dofs() << " dofs, " << n_bodies
+           << (n_bodies == 1 ? " body, " : " bodies, ")
            << Utilities::MPI::n_mpi_processes(mpi_communicator)
            << " MPI process(es)";
     output->print(header.str());
@@ -131,17 +136,16 @@ namespace tribos
     // The solvers: the linear solve of a Newton iteration (AMG gets the
     // rigid-body modes as its near-null space), Newton, and the load
     // stepping around it.
-    const auto n_multipliers = problem.n_contact_multipliers();
+    const auto n_multipliers = model.layout().n_multipliers;
     linear_solver = std::make_unique<LinearSolver>(parameters.linear_solver,
                                                    dim,
                                                    n_multipliers > 0);
     linear_solver->set_timer(timer);
     problem.attach(*linear_solver);
     if (n_multipliers > 0)
-      linear_solver->set_multiplier_blocks(problem.get_dof_handler().n_dofs(),
-                                           dim);
+      linear_solver->set_multiplier_blocks(model.dof_handler().n_dofs(), dim);
     if (linear_solver->iterative(problem.system_matrix()))
-      linear_solver->set_near_null_space(problem.rigid_body_modes(),
+      linear_solver->set_near_null_space(model.rigid_body_modes(),
                                          parameters.finite_element.degree > 1);
     newton  = std::make_unique<NewtonSolver>(parameters.nonlinear_solver,
                                             *linear_solver);

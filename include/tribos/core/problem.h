@@ -7,6 +7,7 @@
 #include <tribos/core/create_mesh.h>
 #include <tribos/core/dynamics_state.h>
 #include <tribos/core/material_state.h>
+#include <tribos/core/model.h>
 #include <tribos/core/reference_geometry.h>
 #include <tribos/core/stabilization.h>
 #include <tribos/core/warnings.h>
@@ -42,24 +43,21 @@ namespace tribos
 
   /**
    * The boundary value problem of all bodies of a scene, quasi-static or
-   * dynamic: total Lagrangian displacement formulation, one DoFHandler
-   * over one triangulation shared by all bodies, Trilinos distributed
-   * linear algebra. Under MPI the mesh is shared (every process holds all
-   * of it) or distributed (every process holds its own cells and a layer
-   * of ghosts; Parallel/Mesh); the contact surfaces are gathered on every
-   * process either way (ContactSurface), so the contact search sees every
-   * master face. The unknowns are the displacement dofs followed by the
-   * contact multipliers (if a pair uses them), in one vector.
+   * dynamic, on a Model's discretization: total Lagrangian displacement
+   * formulation, Trilinos distributed linear algebra. The unknowns are the
+   * displacement dofs followed by the contact multipliers (if a pair uses
+   * them), in one vector (UnknownsLayout).
    *
-   * Problem owns the model and its state: the mesh, the dofs and
-   * constraints, the system, the materials and their history
-   * (MaterialState), the contact (ContactHandler) and the dynamics
-   * (DynamicsState). It is the IncrementalProblem the generic solvers of
-   * solver/ drive; the bulk terms come from its BulkAssembler, the contact
-   * terms from its ContactHandler. It writes no output: postprocess/
-   * reads it through the const accessors, run/Simulation drives it. The
-   * implementation is split over source/core/: setup.cc, increment.cc
-   * (the solver hooks), restart.cc (checkpoints).
+   * Problem couples the parts for the solver: the Model (mesh, dofs,
+   * constraints; Simulation owns it), the materials and their history
+   * (MaterialState), the bulk terms (BulkAssembler), the contact
+   * (ContactHandler), the dynamics (DynamicsState) and the stabilization
+   * springs (Stabilization). It holds the system's vectors and matrix and
+   * is the IncrementalProblem the generic solvers of solver/ drive. It
+   * writes no output: postprocess/ reads it and the Model through const
+   * accessors, run/Simulation drives it. The implementation is split over
+   * source/core/: setup.cc, increment.cc (the solver hooks), restart.cc
+   * (checkpoints).
    */
   template <int dim>
   class Problem : public IncrementalProblem
@@ -81,7 +79,7 @@ namespace tribos
      * (the first process's); @p warnings gets the warnings about the model.
      */
     Problem(const Parameters::AllParameters                &parameters,
-            const MPI_Comm                                  mpi_communicator,
+            Model<dim>                                     &model,
             TimerOutput                                    &timer,
             const std::function<void(const std::string &)> &log,
             Warnings                                       &warnings);
@@ -195,56 +193,6 @@ namespace tribos
       return change_of_restart;
     }
 
-    /* What the outputs read. */
-    const Parameters::AllParameters &
-    get_parameters() const
-    {
-      return parameters;
-    }
-    MPI_Comm
-    communicator() const
-    {
-      return mpi_communicator;
-    }
-    const parallel::TriangulationBase<dim> &
-    get_triangulation() const
-    {
-      return triangulation;
-    }
-    const DoFHandler<dim> &
-    get_dof_handler() const
-    {
-      return dof_handler;
-    }
-    const FESystem<dim> &
-    get_fe() const
-    {
-      return *fe;
-    }
-    /**
-     * The cells' reference geometry, for every evaluation on them: the
-     * curved cells of a second-order mesh with Polynomial degree = 2
-     * (MappingFEField on the dofs' reference positions), else the mesh's
-     * straight cells (the linear mapping of its cell kind).
-     */
-    const Mapping<dim> &
-    mapping() const;
-    /** Whether the cells are curved (mapping()). */
-    bool
-    curved() const
-    {
-      return geometry.curved_mapping() != nullptr;
-    }
-    const IndexSet &
-    owned_dofs() const
-    {
-      return locally_owned_dofs;
-    }
-    const IndexSet &
-    relevant_dofs() const
-    {
-      return locally_relevant_dofs;
-    }
     /**
      * The displacement with ghost entries: the solution itself, or (with
      * multipliers, whose unknowns follow the dofs) its first n_dofs
@@ -253,7 +201,8 @@ namespace tribos
     const Vector &
     displacement() const
     {
-      return n_multipliers == 0 ? ghosted_solution : ghosted_displacement;
+      return layout.n_multipliers == 0 ? ghosted_solution :
+                                         ghosted_displacement;
     }
     /** The unknowns (owned entries). */
     const Vector &
@@ -311,29 +260,6 @@ namespace tribos
      * assembly (collective). */
     std::vector<double>
     reaction_forces() const;
-    /** The number of bodies, of contact multipliers. */
-    unsigned int
-    n_bodies() const
-    {
-      return material_state->bodies().size();
-    }
-    types::global_dof_index
-    n_contact_multipliers() const
-    {
-      return n_multipliers;
-    }
-    /** The ghost values per update of the ghosted solution, and the
-     * contact's share of them. */
-    std::pair<types::global_dof_index, types::global_dof_index>
-    ghost_values() const
-    {
-      return {system_relevant.n_elements() - system_owned.n_elements(),
-              n_contact_ghosts};
-    }
-    /** The rigid-body modes (translations, rotations about the centroid)
-     * at the locally owned rows, the near-null space of AMG. */
-    std::vector<std::vector<double>>
-    rigid_body_modes() const;
 
   private:
     /* setup.cc */
@@ -342,21 +268,17 @@ namespace tribos
     make_grid(const CellWeights *weights);
     void
     setup_system();
-    /** The system's index sets, with the multipliers of the contact. */
-    void
-    setup_unknowns();
-    /** The vectors of the system, the dofs' components and bodies, and the
-     * round-off floors. */
+    /** What the contact adds to the unknowns (its ghosts, dofs and
+     * multipliers), into extra_unknowns. */
+    const ContactUnknowns &
+    contact_unknowns();
+    /** The vectors of the system and the round-off floors. */
     void
     setup_vectors();
     void
     setup_dynamics();
     void
     make_sparsity();
-    void
-    make_constraints(const double               time,
-                     const bool                 homogeneous,
-                     AffineConstraints<double> &constraints) const;
 
     /* increment.cc */
     /**
@@ -384,56 +306,16 @@ namespace tribos
                          const std::vector<double>                  &values,
                          Vector                                     &v) const;
 
-    const Parameters::AllParameters               &parameters;
+    const Parameters::AllParameters &parameters;
+    /** The discretization (Simulation owns it), its unknowns' layout and
+     * its homogeneous constraints. */
+    Model<dim>                                    &model;
+    const UnknownsLayout                          &layout;
+    const AffineConstraints<double>               &homogeneous_constraints;
     MPI_Comm                                       mpi_communicator;
     TimerOutput                                   &timer;
     const std::function<void(const std::string &)> log;
     Warnings                                      &warnings;
-
-    /** The mesh: parallel::shared or parallel::fullydistributed
-     * (Parallel/Mesh). */
-    std::unique_ptr<parallel::TriangulationBase<dim>> triangulation_storage;
-    parallel::TriangulationBase<dim>                 &triangulation;
-    std::unique_ptr<FESystem<dim>>                    fe;
-    DoFHandler<dim>                                   dof_handler;
-    /** A second-order mesh's curved geometry per active cell (own cells
-     * on a distributed mesh); empty: straight cells. */
-    CurvedCells<dim> curved_cells;
-    /** Curved cells on the dofs (after the DoFHandler, whose dofs its
-     * mapping reads). */
-    ReferenceGeometry<dim> geometry;
-    /** Gauss rules of the mesh's cell kind (quadrilaterals and hexahedra:
-     * tensor products; triangles and tetrahedra: the simplex rules) and of
-     * its faces, set with the finite element (setup_system()). */
-    Quadrature<dim>     quadrature;
-    Quadrature<dim - 1> face_quadrature;
-
-    IndexSet locally_owned_dofs;
-    /** The dofs the ghosted vectors hold: those of the own and ghost
-     * cells, and the slave nodes this process reads
-     * (ContactHandler::ghost_dofs(); a shared mesh: every contact dof). */
-    IndexSet locally_relevant_dofs;
-    /** The dofs the constraints and the sparsity pattern know: the
-     * relevant ones and every contact dof (contact writes rows and columns
-     * of master dofs anywhere). */
-    IndexSet coupled_dofs;
-    /** Every process's locally owned dofs. */
-    std::vector<IndexSet> owned_per_process;
-    /** Dofs ghosted on this process only because of contact (slave nodes
-     * beyond its cells): the contact's share of every ghost update. */
-    types::global_dof_index n_contact_ghosts = 0;
-    /**
-     * The unknowns of the linear system: the displacement dofs followed by
-     * the contact Lagrange multipliers (none unless a pair uses them). The
-     * matrix, right-hand side, residuals and Newton update live on these.
-     */
-    IndexSet system_owned;
-    IndexSet system_relevant;
-    /** coupled_dofs and the multipliers. */
-    IndexSet                system_coupled;
-    types::global_dof_index n_multipliers = 0;
-
-    AffineConstraints<double> homogeneous_constraints;
 
     TrilinosWrappers::SparseMatrix matrix;
     /** Counts the rebuilds of the matrix's sparsity pattern. */
@@ -452,15 +334,14 @@ namespace tribos
     Vector increment_start;
     /** See restart_change(). */
     Vector change_of_restart;
+    /** What the contact adds to the Model's unknowns. */
+    ContactUnknowns extra_unknowns;
     /** The current increment's end time and constraints. */
     double                    time = 0;
     AffineConstraints<double> increment_constraints;
     /** The applied (traction and body) forces of the last assembly, kept
      * with stabilization and dynamics. */
     Vector external_forces;
-    /** Vector component and body of every dof (by global dof number). */
-    std::vector<unsigned char>      dof_component;
-    std::vector<types::material_id> dof_body;
     /**
      * Newton's round-off stagnation is accepted only below this residual:
      * 1e-10 E_max A, the force of a stress of 1e-10 times the largest
@@ -475,7 +356,7 @@ namespace tribos
     /** Tractions below 1e-12 E_max are round-off: the floor of the
      * multipliers' convergence test. */
     double traction_floor = 0;
-    /** The springs (they read the dof maps above). */
+    /** The springs (they read the Model's dof maps). */
     Stabilization<dim> stabilization_springs;
     /** The contact's counters of this attempt and of the last committed
      * increment. */
@@ -487,10 +368,6 @@ namespace tribos
     std::unique_ptr<ContactHandler<dim>> contact_handler;
     /** Dynamics (null: quasi-static). */
     std::unique_ptr<DynamicsState<dim>> dynamics_state;
-
-    std::vector<std::unique_ptr<FunctionParser<dim>>> dirichlet_functions;
-    /** Per Dirichlet condition: all dofs on its boundary, per component. */
-    std::vector<std::vector<IndexSet>> reaction_dofs;
 
     /** The solver holding the matrix (attach()). */
     LinearSolver *linear_solver = nullptr;

@@ -62,9 +62,11 @@ namespace tribos
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    RunOutput(const Problem<dim> &problem,
-              const Warnings     &warnings,
-              TimerOutput        &timer);
+    RunOutput(const Parameters::AllParameters &parameters,
+              const Model<dim>                &model,
+              const Problem<dim>              &problem,
+              const Warnings                  &warnings,
+              TimerOutput                     &timer);
 
     /**
      * Create Output/Directory (removing the series files of an earlier run
@@ -119,6 +121,7 @@ namespace tribos
     std::pair<double, double>
     displacement_errors(const double time) const;
 
+    const Model<dim>                    &model;
     const Problem<dim>                  &problem;
     const Warnings                      &warnings;
     const Parameters::AllParameters     &parameters;

@@ -119,8 +119,10 @@ namespace tribos
      * collective step, also while an exception raised on one process only
      * unwinds, and the run would hang there instead of ending.
      */
-    TimerOutput                     timer;
-    Warnings                        warnings;
+    TimerOutput timer;
+    Warnings    warnings;
+    /** The discretization, before the problem that holds on to it. */
+    Model<dim>                      model;
     Problem<dim>                    problem;
     std::unique_ptr<RunOutput<dim>> output;
     /** The checkpoint a restart goes on from. */

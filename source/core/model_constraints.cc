@@ -1,19 +1,16 @@
 /**
- * The linear system of the problem: its constraints (hanging nodes,
- * Dirichlet, symmetry), its sparsity pattern (the bulk and the contact
- * couplings), and the rigid-body modes AMG needs.
+ * The Model's constraints (hanging nodes, Dirichlet, symmetry), the cells'
+ * sparsity pattern, and the rigid-body modes AMG needs.
  */
 
 #include <tribos/base/import_constraints.h>
-#include <tribos/core/problem.h>
+#include <tribos/core/model.h>
 #include <tribos/core/symmetry_constraints.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <algorithm>
 #include <map>
 #include <set>
 
@@ -21,53 +18,13 @@ namespace tribos
 {
   template <int dim>
   void
-  Problem<dim>::make_sparsity()
-  {
-    // Contact couples slave nodes with master faces of other cells, often of
-    // other bodies: those couplings join the bulk pattern, and the pattern
-    // is rebuilt when the search meets a new slave-face pair.
-    DynamicSparsityPattern dsp(system_coupled);
-    if (n_multipliers == 0)
-      DoFTools::make_sparsity_pattern(dof_handler,
-                                      dsp,
-                                      homogeneous_constraints,
-                                      false);
-    else
-    {
-      // The bulk pattern on the dofs alone, copied into the system's.
-      DynamicSparsityPattern bulk(locally_relevant_dofs);
-      DoFTools::make_sparsity_pattern(dof_handler,
-                                      bulk,
-                                      homogeneous_constraints,
-                                      false);
-      for (const auto row : locally_relevant_dofs)
-        for (auto entry = bulk.begin(row); entry != bulk.end(row); ++entry)
-          dsp.add(row, entry->column());
-    }
-    if (contact_handler)
-      contact_handler->add_couplings(dsp, homogeneous_constraints);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               system_owned,
-                                               mpi_communicator,
-                                               system_coupled);
-    // Whatever holds on to the old matrix goes first.
-    if (linear_solver != nullptr)
-      linear_solver->release_matrix();
-    matrix.reinit(system_owned, system_owned, dsp, mpi_communicator);
-    ++sparsity_version;
-  }
-
-
-
-  template <int dim>
-  void
-  Problem<dim>::make_constraints(const double               time,
-                                 const bool                 homogeneous,
-                                 AffineConstraints<double> &constraints) const
+  Model<dim>::make_constraints(const double               time,
+                               const Vector              *ghosted_solution,
+                               AffineConstraints<double> &constraints) const
   {
     constraints.clear();
-    constraints.reinit(system_coupled);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.reinit(layout_.system_coupled);
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
 
     // Dirichlet: du = g(t) - u on the constrained dofs, or du = 0.
     const auto &bc = parameters.boundary_conditions;
@@ -90,25 +47,26 @@ namespace tribos
         };
         VectorFunctionFromScalarFunctionObject<dim> component(scalar, d, dim);
         VectorTools::interpolate_boundary_values(mapping(),
-                                                 dof_handler,
+                                                 dofs,
                                                  c.boundary_id,
                                                  component,
                                                  values,
                                                  mask);
         for (const auto &[dof, value] : values)
-          if (locally_relevant_dofs.is_element(dof) &&
+          if (layout_.locally_relevant_dofs.is_element(dof) &&
               !constraints.is_constrained(dof))
           {
             constraints.add_line(dof);
-            if (!homogeneous)
-              constraints.set_inhomogeneity(dof, value - ghosted_solution[dof]);
+            if (ghosted_solution != nullptr)
+              constraints.set_inhomogeneity(dof,
+                                            value - (*ghosted_solution)[dof]);
           }
       }
     }
 
     if (!bc.symmetry.empty())
     {
-      AffineConstraints<double>          symmetry(system_coupled);
+      AffineConstraints<double>          symmetry(layout_.system_coupled);
       const std::set<types::boundary_id> ids(bc.symmetry.begin(),
                                              bc.symmetry.end());
       // tribos's own constraints, which group the faces' normals by
@@ -116,7 +74,7 @@ namespace tribos
       // compute_no_normal_flux_constraints() leaves the nodes on the edge
       // where two symmetry planes meet free to slide when the cells there
       // are gmsh tetrahedra or curved hexahedra.
-      make_symmetry_constraints(mapping(), dof_handler, ids, symmetry);
+      make_symmetry_constraints(mapping(), dofs, ids, symmetry);
       symmetry.close();
       // Merging substitutes the symmetry lines into the hanging-node lines
       // that refer to them. On a distributed mesh the outer faces of the
@@ -128,9 +86,9 @@ namespace tribos
       // close() resolves the chains.
       if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
       {
-        AffineConstraints<double> own(system_coupled);
+        AffineConstraints<double> own(layout_.system_coupled);
         for (const auto &line : symmetry.get_lines())
-          if (locally_owned_dofs.is_element(line.index))
+          if (layout_.locally_owned_dofs.is_element(line.index))
           {
             own.add_line(line.index);
             own.add_entries(line.index, line.entries);
@@ -148,7 +106,7 @@ namespace tribos
     if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
       import_constraints(constraints,
                          owned_per_process,
-                         coupled_dofs,
+                         layout_.coupled_dofs,
                          mpi_communicator);
     constraints.close();
   }
@@ -156,28 +114,47 @@ namespace tribos
 
 
   template <int dim>
+  void
+  Model<dim>::bulk_sparsity(DynamicSparsityPattern &dsp) const
+  {
+    if (layout_.n_multipliers == 0)
+      DoFTools::make_sparsity_pattern(dofs, dsp, homogeneous, false);
+    else
+    {
+      // The bulk pattern on the dofs alone, copied into the system's.
+      DynamicSparsityPattern bulk(layout_.locally_relevant_dofs);
+      DoFTools::make_sparsity_pattern(dofs, bulk, homogeneous, false);
+      for (const auto row : layout_.locally_relevant_dofs)
+        for (auto entry = bulk.begin(row); entry != bulk.end(row); ++entry)
+          dsp.add(row, entry->column());
+    }
+  }
+
+
+
+  template <int dim>
   std::vector<std::vector<double>>
-  Problem<dim>::rigid_body_modes() const
+  Model<dim>::rigid_body_modes() const
   {
     // The support points of the dofs (reference configuration).
     std::map<types::global_dof_index, Point<dim>> points;
-    DoFTools::map_dofs_to_support_points(mapping(), dof_handler, points);
+    DoFTools::map_dofs_to_support_points(mapping(), dofs, points);
     // About the centroid of all support points (every process the same).
     Tensor<1, dim> sum;
-    for (const auto dof : locally_owned_dofs)
+    for (const auto dof : layout_.locally_owned_dofs)
       sum += points.at(dof);
     const Point<dim>   centre(Utilities::MPI::sum(sum, mpi_communicator) /
-                              double(dof_handler.n_dofs()));
+                              double(dofs.n_dofs()));
     const unsigned int n_modes = dim == 2 ? 3 : 6;
     std::vector<std::vector<double>> modes(
       n_modes,
-      std::vector<double>(system_owned.n_elements(), 0.));
+      std::vector<double>(layout_.system_owned.n_elements(), 0.));
     unsigned int local = 0;
-    for (const auto dof : system_owned)
+    for (const auto dof : layout_.system_owned)
     {
-      if (dof < dof_handler.n_dofs())
+      if (dof < dofs.n_dofs())
       {
-        const unsigned int   c = dof_component[dof];
+        const unsigned int   c = components[dof];
         const Tensor<1, dim> x = points.at(dof) - centre;
         modes[c][local]        = 1; // translations
         // Rotations: about z in 2D (-y, x); about x, y, z in 3D.
@@ -197,6 +174,8 @@ namespace tribos
     return modes;
   }
 
-  template class Problem<2>;
-  template class Problem<3>;
+
+
+  template class Model<2>;
+  template class Model<3>;
 } // namespace tribos

@@ -1,0 +1,170 @@
+#ifndef tribos_core_model_h
+#define tribos_core_model_h
+
+#include <tribos/core/create_mesh.h>
+#include <tribos/core/reference_geometry.h>
+#include <tribos/core/unknowns_layout.h>
+#include <tribos/core/warnings.h>
+#include <tribos/parameters/all_parameters.h>
+#include <tribos/scene/scene.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria_base.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  /**
+   * The discretization of all bodies of a scene: one mesh (parallel::shared
+   * or parallel::fullydistributed, Parallel/Mesh), its reference geometry
+   * (curved cells), the finite element and Gauss rules of its cell kind, one
+   * DoFHandler, who holds which unknowns (UnknownsLayout), the constraints
+   * (hanging nodes, Dirichlet, symmetry) and the dofs of each Dirichlet
+   * condition. It knows nothing of materials, contact or the solver: the
+   * contact's extra unknowns reach it as plain data (ContactUnknowns). This
+   * is where a change of the mesh during a run belongs.
+   *
+   * Built in three steps, in this order: create_mesh(), distribute_dofs(),
+   * set_unknowns(). Others keep references into it (the DoFHandler, the
+   * mapping, the quadrature, the layout): it is not copied.
+   */
+  template <int dim>
+  class Model
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /** @p timer gets the mesh's creation in its section "setup". */
+    Model(const Parameters::AllParameters &parameters,
+          const MPI_Comm                   mpi_communicator,
+          TimerOutput                     &timer,
+          Warnings                        &warnings);
+    Model(const Model &) = delete;
+    Model &
+    operator=(const Model &) = delete;
+
+    /** The mesh of the scene (create_mesh()), partitioned with @p weights
+     * if given. Collective. */
+    void
+    create_mesh(const CellWeights *weights);
+
+    /** The finite element, the Gauss rules, the dofs, the curved geometry
+     * on them and the dofs of each Dirichlet condition. Collective. */
+    void
+    distribute_dofs();
+
+    /** The system's unknowns (with the contact's ghosts and multipliers,
+     * if @p contact is given), the homogeneous constraints, and each dof's
+     * component and body. Collective. */
+    void
+    set_unknowns(const ContactUnknowns *contact);
+
+    /**
+     * Hanging nodes, Dirichlet and symmetry constraints into
+     * @p constraints: du = g(time) - u at the Dirichlet dofs with
+     * @p ghosted_solution u, or du = 0 if it is null (homogeneous).
+     */
+    void
+    make_constraints(const double               time,
+                     const Vector              *ghosted_solution,
+                     AffineConstraints<double> &constraints) const;
+
+    /** Constraints with du = 0 (the Newton corrections after the first). */
+    const AffineConstraints<double> &
+    homogeneous_constraints() const;
+
+    /** The cells' couplings of the dofs into @p dsp (on system_coupled). */
+    void
+    bulk_sparsity(DynamicSparsityPattern &dsp) const;
+
+    const parallel::TriangulationBase<dim> &
+    triangulation() const;
+    const DoFHandler<dim> &
+    dof_handler() const;
+    const FESystem<dim> &
+    fe() const;
+    const Quadrature<dim> &
+    quadrature() const;
+    const Quadrature<dim - 1> &
+    face_quadrature() const;
+
+    /**
+     * The cells' reference geometry, for every evaluation on them: the
+     * curved cells of a second-order mesh with Polynomial degree = 2
+     * (MappingFEField on the dofs' reference positions), else the mesh's
+     * straight cells (the linear mapping of its cell kind).
+     */
+    const Mapping<dim> &
+    mapping() const;
+    /** The curved cells' mapping; null: straight cells. */
+    const Mapping<dim> *
+    curved_mapping() const;
+
+    const UnknownsLayout &
+    layout() const;
+    MPI_Comm
+    communicator() const;
+
+    /** Per Dirichlet condition: all dofs on its boundary, per component. */
+    const std::vector<std::vector<IndexSet>> &
+    reaction_dofs() const;
+    /** Vector component and body of every dof (by global dof number). */
+    const std::vector<unsigned char> &
+    dof_component() const;
+    const std::vector<types::material_id> &
+    dof_body() const;
+
+    /** Per Dirichlet condition and component, the sum of @p residual (and
+     * of @p inertia if given) over its dofs (collective). */
+    std::vector<double>
+    reaction_forces(const Vector &residual, const Vector *inertia) const;
+
+    /** The rigid-body modes (translations, rotations about the centroid)
+     * at the locally owned rows, the near-null space of AMG. */
+    std::vector<std::vector<double>>
+    rigid_body_modes() const;
+
+  private:
+    const Parameters::AllParameters &parameters;
+    MPI_Comm                         mpi_communicator;
+    TimerOutput                     &timer;
+    Warnings                        &warnings;
+
+    /** Declared before what holds on to it (DoFHandler, mapping). */
+    std::unique_ptr<parallel::TriangulationBase<dim>> triangulation_storage;
+    std::unique_ptr<FESystem<dim>>                    fe_storage;
+    DoFHandler<dim>                                   dofs;
+    /** A second-order mesh's curved geometry per active cell (own cells
+     * on a distributed mesh); empty: straight cells. */
+    CurvedCells<dim> curved_cells;
+    /** After the DoFHandler, whose dofs its mapping reads. */
+    ReferenceGeometry<dim> geometry;
+    /** Gauss rules of the mesh's cell kind and of its faces. */
+    Quadrature<dim>     cell_quadrature;
+    Quadrature<dim - 1> cell_face_quadrature;
+
+    UnknownsLayout layout_;
+    /** Every process's locally owned dofs. */
+    std::vector<IndexSet>     owned_per_process;
+    AffineConstraints<double> homogeneous;
+
+    std::vector<std::unique_ptr<FunctionParser<dim>>> dirichlet_functions;
+    std::vector<std::vector<IndexSet>>                dirichlet_dofs;
+    std::vector<unsigned char>                        components;
+    std::vector<types::material_id>                   bodies;
+  };
+} // namespace tribos
+
+#endif
