@@ -11,23 +11,6 @@ namespace tribos
 {
   template <int dim>
   void
-  Problem<dim>::solution_changed()
-  {
-    ghosted_solution = owned_solution;
-    if (layout.n_multipliers == 0)
-      return;
-    // The displacement part for the finite element evaluations.
-    Vector owned(layout.locally_owned_dofs, mpi_communicator);
-    for (const auto i : layout.locally_owned_dofs)
-      owned[i] = owned_solution[i];
-    owned.compress(VectorOperation::insert);
-    ghosted_displacement = owned;
-  }
-
-
-
-  template <int dim>
-  void
   Problem<dim>::begin_increment(const double end_time, const Vector *predictor)
   {
     time            = end_time;
@@ -197,16 +180,6 @@ namespace tribos
 
 
   template <int dim>
-  void
-  Problem<dim>::distribute(Vector &update, const bool first_iteration) const
-  {
-    (first_iteration ? increment_constraints : homogeneous_constraints)
-      .distribute(update);
-  }
-
-
-
-  template <int dim>
   double
   Problem<dim>::step_limit(const Vector &update, const bool first_iteration)
   {
@@ -230,35 +203,6 @@ namespace tribos
     owned_solution     = start;
     solution_changed();
     return limit;
-  }
-
-
-
-  template <int dim>
-  NonlinearProblem::Norms
-  Problem<dim>::norms(const Vector &v) const
-  {
-    if (layout.n_multipliers == 0)
-      return {v.l2_norm(), 0};
-    double                        squared[2] = {0, 0};
-    const types::global_dof_index n_dofs     = model.dof_handler().n_dofs();
-    for (const auto i : layout.system_owned)
-      squared[i < n_dofs ? 0 : 1] += v[i] * v[i];
-    return {std::sqrt(Utilities::MPI::sum(squared[0], mpi_communicator)),
-            std::sqrt(Utilities::MPI::sum(squared[1], mpi_communicator))};
-  }
-
-
-
-  template <int dim>
-  NonlinearProblem::Norms
-  Problem<dim>::change_scale() const
-  {
-    Vector change = owned_solution;
-    change -= increment_start;
-    const Norms of_change = norms(change), of_size = norms(owned_solution);
-    return {std::max(of_change.displacement, of_size.displacement),
-            std::max(of_change.multipliers, of_size.multipliers)};
   }
 
 
@@ -404,6 +348,20 @@ namespace tribos
     // same increment again, until the penetration is below the tolerance.
     return contact_handler &&
            contact_handler->outer_update(counters.n_augmentations);
+  }
+
+
+
+  template <int dim>
+  typename Problem<dim>::State
+  Problem<dim>::state()
+  {
+    return {*material_state,
+            contact_handler.get(),
+            dynamics_state.get(),
+            stabilization_springs,
+            ghosted_solution,
+            time};
   }
 
 

@@ -37,11 +37,11 @@ namespace tribos
                         TimerOutput                     &timer,
                         const std::function<void(const std::string &)> &log,
                         Warnings &warnings)
-    : parameters(parameters)
+    : AlgebraicSystem(model.layout(),
+                      model.homogeneous_constraints(),
+                      model.communicator())
+    , parameters(parameters)
     , model(model)
-    , layout(model.layout())
-    , homogeneous_constraints(model.homogeneous_constraints())
-    , mpi_communicator(model.communicator())
     , timer(timer)
     , log(log)
     , warnings(warnings)
@@ -152,23 +152,6 @@ namespace tribos
   void
   Problem<dim>::setup_vectors()
   {
-    rhs.reinit(layout.system_owned, mpi_communicator);
-    free_residual.reinit(layout.system_owned, mpi_communicator);
-    full_residual.reinit(layout.system_owned, mpi_communicator);
-    contact_force_vector.reinit(layout.system_owned, mpi_communicator);
-    owned_solution.reinit(layout.system_owned, mpi_communicator);
-    increment_start.reinit(layout.system_owned, mpi_communicator);
-    ghosted_solution.reinit(layout.system_owned,
-                            layout.system_relevant,
-                            mpi_communicator);
-    if (layout.n_multipliers > 0)
-      ghosted_displacement.reinit(layout.locally_owned_dofs,
-                                  layout.locally_relevant_dofs,
-                                  mpi_communicator);
-    stabilization_springs.reinit(layout.system_owned,
-                                 layout.system_relevant,
-                                 material_state->n_materials());
-    external_forces.reinit(layout.system_owned, mpi_communicator);
     {
       double        volume = 0, E_max = 0;
       FEValues<dim> fe_values(model.mapping(),
@@ -192,13 +175,18 @@ namespace tribos
       E_max  = Utilities::MPI::max(E_max, mpi_communicator);
       const double exponent =
         parameters.finite_element.axisymmetric ? 2. / 3. : (dim - 1.) / dim;
-      stagnation_bound = 1e-10 * E_max * std::pow(volume, exponent);
-      length_floor =
+      Scales round_off;
+      round_off.stagnation_bound = 1e-10 * E_max * std::pow(volume, exponent);
+      round_off.length_floor =
         1e-14 *
         std::pow(volume,
                  parameters.finite_element.axisymmetric ? 1. / 3. : 1. / dim);
-      traction_floor = 1e-12 * E_max;
+      round_off.traction_floor = 1e-12 * E_max;
+      reinit(round_off);
     }
+    stabilization_springs.reinit(layout.system_owned,
+                                 layout.system_relevant,
+                                 material_state->n_materials());
   }
 
 
@@ -244,7 +232,7 @@ namespace tribos
       contact_handler ? &contact_force_vector : nullptr,
       external_forces,
       homogeneous_constraints,
-      stagnation_bound);
+      scales.stagnation_bound);
     if (!message.empty())
       log(message);
     if (contact_handler)
@@ -271,14 +259,7 @@ namespace tribos
                                                layout.system_owned,
                                                mpi_communicator,
                                                layout.system_coupled);
-    // Whatever holds on to the old matrix goes first.
-    if (linear_solver != nullptr)
-      linear_solver->release_matrix();
-    matrix.reinit(layout.system_owned,
-                  layout.system_owned,
-                  dsp,
-                  mpi_communicator);
-    ++sparsity_version;
+    reinit_matrix(dsp);
   }
 
 

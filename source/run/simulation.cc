@@ -28,6 +28,12 @@ namespace tribos
         timer,
         [this](const std::string &line) { pcout << line << std::endl; },
         warnings)
+    , checkpointer(parameters,
+                   model,
+                   problem,
+                   timer,
+                   [this](const std::string &line)
+                   { pcout << line << std::endl; })
     , last_rebalance(previous)
   {
   }
@@ -44,7 +50,7 @@ namespace tribos
     {
       restart = std::make_unique<Checkpoint>();
       restart->load(parameters.restart_directory);
-      problem.check_checkpoint(*restart);
+      checkpointer.check(*restart);
     }
     output = std::make_unique<RunOutput<dim>>(parameters,
                                               model,
@@ -74,7 +80,7 @@ namespace tribos
     StepperState start;
     if (restart)
     {
-      problem.read_checkpoint(*restart);
+      checkpointer.read(*restart);
       start = restart->stepper;
     }
     else
@@ -99,7 +105,7 @@ namespace tribos
       stepper->run(problem,
                    *this,
                    start,
-                   start.change_increment > 0 ? &problem.restart_change() :
+                   start.change_increment > 0 ? &checkpointer.restart_change() :
                                                 nullptr);
     }
     catch (const Interrupted &signal)
@@ -251,10 +257,10 @@ namespace tribos
   {
     AssertThrow(stepper->state().step == step,
                 ExcInternalError("checkpoint of another step"));
-    problem.write_checkpoint(stepper->state(),
-                             stepper->last_change(),
-                             output->pvd_records(),
-                             directory);
+    checkpointer.write(stepper->state(),
+                       stepper->last_change(),
+                       output->pvd_records(),
+                       directory);
   }
 
 

@@ -63,7 +63,7 @@ namespace tribos
     /** The VTU series written so far (time, file). */
     std::vector<std::pair<double, std::string>> pvd_records;
     /** What the state depends on beyond the sizes above, by name: the
-     * scene, the contact pairs, the materials (Problem::fingerprint()). */
+     * scene, the contact pairs, the materials (Checkpointer::fingerprint()). */
     std::map<std::string, std::string> fingerprint;
     /** Moments of the mesh's vertex coordinates (a moved or reshaped mesh
      * with the same cells and dofs changes them). */

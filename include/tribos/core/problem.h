@@ -2,6 +2,7 @@
 #define tribos_core_problem_h
 
 #include <tribos/contact/contact_handler.h>
+#include <tribos/core/algebraic_system.h>
 #include <tribos/core/bulk_assembler.h>
 #include <tribos/core/checkpoint.h>
 #include <tribos/core/create_mesh.h>
@@ -55,12 +56,12 @@ namespace tribos
    * springs (Stabilization). It holds the system's vectors and matrix and
    * is the IncrementalProblem the generic solvers of solver/ drive. It
    * writes no output: postprocess/ reads it and the Model through const
-   * accessors, run/Simulation drives it. The implementation is split over
-   * source/core/: setup.cc, increment.cc (the solver hooks), restart.cc
-   * (checkpoints).
+   * accessors, run/Simulation drives it, Checkpointer writes and reads its
+   * state (State). The implementation is split over source/core/: setup.cc,
+   * increment.cc (the solver hooks).
    */
   template <int dim>
-  class Problem : public IncrementalProblem
+  class Problem : public AlgebraicSystem
   {
   public:
     /** What history.csv reports of the contact's policies in a converged
@@ -74,8 +75,8 @@ namespace tribos
     };
 
     /**
-     * @p timer gets the sections setup, assembly, contact search, contact
-     * assembly and output (checkpoints); @p log prints a line for the user
+     * @p timer gets the sections setup, assembly, contact search and
+     * contact assembly; @p log prints a line for the user
      * (the first process's); @p warnings gets the warnings about the model.
      */
     Problem(const Parameters::AllParameters                &parameters,
@@ -92,59 +93,14 @@ namespace tribos
     void
     setup(const CellWeights *weights = nullptr);
 
-    /** The linear solver that holds on to the system matrix (released
-     * before the matrix is rebuilt). */
-    void
-    attach(LinearSolver &solver)
-    {
-      linear_solver = &solver;
-    }
-
-    /* IncrementalProblem (increment.cc) */
+    /* IncrementalProblem: the physics (increment.cc; the algebra is
+     * AlgebraicSystem's) */
     void
     begin_increment(const double time, const Vector *predictor) override;
     Residual
     assemble(const bool with_matrix, const bool first_iteration) override;
-    TrilinosWrappers::SparseMatrix &
-    system_matrix() override
-    {
-      return matrix;
-    }
-    Vector &
-    system_rhs() override
-    {
-      return rhs;
-    }
-    unsigned long
-    pattern_version() const override
-    {
-      return sparsity_version;
-    }
-    void
-    distribute(Vector &update, const bool first_iteration) const override;
     double
     step_limit(const Vector &update, const bool first_iteration) override;
-    Vector &
-    solution() override
-    {
-      return owned_solution;
-    }
-    void
-    solution_changed() override;
-    Norms
-    norms(const Vector &v) const override;
-    Norms
-    change_scale() const override;
-    Norms
-    round_off_floor() const override
-    {
-      return {length_floor, traction_floor};
-    }
-    double
-    stagnation_residual_bound() const override
-    {
-      return stagnation_bound;
-    }
     void
     after_assembly(const unsigned int iteration,
                    const double       residual) override;
@@ -159,63 +115,7 @@ namespace tribos
     bool
     outer_update() override;
 
-    /* Checkpoints (restart.cc) */
-    /**
-     * The converged state after nominal step @p stepper.step (the stepper's
-     * state, the change of its last increment @p change, the VTU series
-     * @p pvd_records) into @p directory.
-     */
-    void
-    write_checkpoint(
-      const StepperState                                &stepper,
-      const Vector                                      &change,
-      const std::vector<std::pair<double, std::string>> &pvd_records,
-      const std::string                                 &directory);
-    /** Whether @p checkpoint fits this run (mesh, dofs, pairs, integrator,
-     * steps): a clear error before any output is touched. */
-    void
-    check_checkpoint(const Checkpoint &checkpoint) const;
-    /** What a checkpoint's state depends on beyond the sizes of the
-     * mesh and dofs, by name (scene, pairs, materials), as text. */
-    std::map<std::string, std::string>
-    fingerprint() const;
-    /** Moments of the vertex coordinates of the mesh (collective). */
-    std::map<std::string, double>
-    geometry_moments() const;
-    /** Read @p checkpoint into the state of this (set up) problem. */
-    void
-    read_checkpoint(const Checkpoint &checkpoint);
-    /** A restart's change of the unknowns over its last increment (the
-     * load stepper's extrapolation goes on from it). */
-    const Vector &
-    restart_change() const
-    {
-      return change_of_restart;
-    }
 
-    /**
-     * The displacement with ghost entries: the solution itself, or (with
-     * multipliers, whose unknowns follow the dofs) its first n_dofs
-     * entries, for the finite element evaluations and the output.
-     */
-    const Vector &
-    displacement() const
-    {
-      return layout.n_multipliers == 0 ? ghosted_solution :
-                                         ghosted_displacement;
-    }
-    /** The unknowns (owned entries). */
-    const Vector &
-    unknowns() const
-    {
-      return owned_solution;
-    }
-    /** The contact forces on the nodes at the last assembly. */
-    const Vector &
-    contact_forces() const
-    {
-      return contact_force_vector;
-    }
     /** The contact; null if the scene has none. */
     const ContactHandler<dim> *
     contact() const
@@ -261,18 +161,31 @@ namespace tribos
     std::vector<double>
     reaction_forces() const;
 
+    /** What a restart sets (Checkpointer::read()); what a change of the
+     * mesh will carry over. */
+    struct State
+    {
+      MaterialState<dim>  &materials;
+      ContactHandler<dim> *contact;
+      DynamicsState<dim>  *dynamics;
+      Stabilization<dim>  &stabilization;
+      /** The ghosted unknowns (current after solution_changed()). */
+      const Vector &ghosted_unknowns;
+      /** The end time of the last committed increment. */
+      double &time;
+    };
+    State
+    state();
+
   private:
     /* setup.cc */
-    /** The mesh (create_mesh()), in the setup timer section. */
-    void
-    make_grid(const CellWeights *weights);
     void
     setup_system();
     /** What the contact adds to the unknowns (its ghosts, dofs and
      * multipliers), into extra_unknowns. */
     const ContactUnknowns &
     contact_unknowns();
-    /** The vectors of the system and the round-off floors. */
+    /** The vectors of the system, the round-off scales and the springs. */
     void
     setup_vectors();
     void
@@ -293,69 +206,18 @@ namespace tribos
                     const AffineConstraints<double> &constraints,
                     const double                     time);
 
-    /* restart.cc */
-    /** The values of @p v (dof-sized, owned) per active cell, gathered on
-     * rank 0 in CellId order (the cells' CellIds into @p cells if given). */
-    std::vector<double>
-    cell_values(const Vector                         &v,
-                std::vector<std::array<unsigned, 4>> *cells = nullptr) const;
-    /** Set the owned entries of @p v (dof-sized or the system vector) from
-     * cell_values() of the cells @p cells of a checkpoint. */
-    void
-    set_from_cell_values(const std::vector<std::array<unsigned, 4>> &cells,
-                         const std::vector<double>                  &values,
-                         Vector                                     &v) const;
 
     const Parameters::AllParameters &parameters;
-    /** The discretization (Simulation owns it), its unknowns' layout and
-     * its homogeneous constraints. */
+    /** The discretization (Simulation owns it). */
     Model<dim>                                    &model;
-    const UnknownsLayout                          &layout;
-    const AffineConstraints<double>               &homogeneous_constraints;
-    MPI_Comm                                       mpi_communicator;
     TimerOutput                                   &timer;
     const std::function<void(const std::string &)> log;
     Warnings                                      &warnings;
 
-    TrilinosWrappers::SparseMatrix matrix;
-    /** Counts the rebuilds of the matrix's sparsity pattern. */
-    unsigned long sparsity_version = 0;
-    Vector        rhs;
-    Vector        free_residual;
-    Vector        full_residual;
-    /** The contact forces on the nodes at the last assembly (VTU). */
-    Vector contact_force_vector;
-    /** The unknowns: displacement dofs, then the contact multipliers. */
-    Vector owned_solution;
-    Vector ghosted_solution;
-    /** The displacement part, with ghosts (only with multipliers). */
-    Vector ghosted_displacement;
-    /** The solution at the start of the increment. */
-    Vector increment_start;
-    /** See restart_change(). */
-    Vector change_of_restart;
     /** What the contact adds to the Model's unknowns. */
     ContactUnknowns extra_unknowns;
-    /** The current increment's end time and constraints. */
-    double                    time = 0;
-    AffineConstraints<double> increment_constraints;
-    /** The applied (traction and body) forces of the last assembly, kept
-     * with stabilization and dynamics. */
-    Vector external_forces;
-    /**
-     * Newton's round-off stagnation is accepted only below this residual:
-     * 1e-10 E_max A, the force of a stress of 1e-10 times the largest
-     * Young's modulus on the area scale A = V^((d-1)/d) of the model
-     * (axisymmetric: V with the ring factor, A = V^(2/3)).
-     */
-    double stagnation_bound = 0;
-    /** Displacement corrections below this are round-off (1e-14 of the
-     * model's length scale): the update test's floor, without which an
-     * increment that moves nothing (End time 1e-300) never converged. */
-    double length_floor = 0;
-    /** Tractions below 1e-12 E_max are round-off: the floor of the
-     * multipliers' convergence test. */
-    double traction_floor = 0;
+    /** The current increment's end time. */
+    double time = 0;
     /** The springs (they read the Model's dof maps). */
     Stabilization<dim> stabilization_springs;
     /** The contact's counters of this attempt and of the last committed
@@ -368,9 +230,6 @@ namespace tribos
     std::unique_ptr<ContactHandler<dim>> contact_handler;
     /** Dynamics (null: quasi-static). */
     std::unique_ptr<DynamicsState<dim>> dynamics_state;
-
-    /** The solver holding the matrix (attach()). */
-    LinearSolver *linear_solver = nullptr;
   };
 } // namespace tribos
 

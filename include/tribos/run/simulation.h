@@ -2,6 +2,7 @@
 #define tribos_run_simulation_h
 
 #include <tribos/core/checkpoint.h>
+#include <tribos/core/checkpointer.h>
 #include <tribos/core/problem.h>
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/postprocess/run_output.h>
@@ -124,6 +125,7 @@ namespace tribos
     /** The discretization, before the problem that holds on to it. */
     Model<dim>                      model;
     Problem<dim>                    problem;
+    Checkpointer<dim>               checkpointer;
     std::unique_ptr<RunOutput<dim>> output;
     /** The checkpoint a restart goes on from. */
     std::unique_ptr<Checkpoint>   restart;

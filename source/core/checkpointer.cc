@@ -7,7 +7,7 @@
  */
 
 #include <tribos/base/exceptions.h>
-#include <tribos/core/problem.h>
+#include <tribos/core/checkpointer.h>
 #include <tribos/material/material_model.h>
 
 #include <deal.II/base/mpi.h>
@@ -53,11 +53,40 @@ namespace tribos
 
 
   template <int dim>
-  std::vector<double>
-  Problem<dim>::cell_values(const Vector                         &v,
-                            std::vector<std::array<unsigned, 4>> *cells) const
+  Checkpointer<dim>::Checkpointer(
+    const Parameters::AllParameters                &parameters,
+    const Model<dim>                               &model,
+    Problem<dim>                                   &problem,
+    TimerOutput                                    &timer,
+    const std::function<void(const std::string &)> &log)
+    : parameters(parameters)
+    , model(model)
+    , problem(problem)
+    , timer(timer)
+    , log(log)
+    , mpi_communicator(model.communicator())
   {
-    Vector ghosted(layout.locally_owned_dofs,
+  }
+
+
+
+  template <int dim>
+  const TrilinosWrappers::MPI::Vector &
+  Checkpointer<dim>::restart_change() const
+  {
+    return change_of_restart;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Checkpointer<dim>::cell_values(
+    const Vector                         &v,
+    std::vector<std::array<unsigned, 4>> *cells) const
+  {
+    const auto &layout = model.layout();
+    Vector      ghosted(layout.locally_owned_dofs,
                    layout.locally_relevant_dofs,
                    mpi_communicator);
     ghosted                                = v;
@@ -88,12 +117,13 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::set_from_cell_values(
+  Checkpointer<dim>::set_from_cell_values(
     const std::vector<std::array<unsigned, 4>> &cells,
     const std::vector<double>                  &values,
     Vector                                     &v) const
   {
-    const unsigned int                   n = model.fe().n_dofs_per_cell();
+    const auto                          &layout = model.layout();
+    const unsigned int                   n      = model.fe().n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n);
     AssertThrow(values.size() == cells.size() * n,
                 ExcMessage("The checkpoint's vector does not fit the mesh."));
@@ -128,12 +158,13 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::write_checkpoint(
+  Checkpointer<dim>::write(
     const StepperState                                &stepper,
     const Vector                                      &change,
     const std::vector<std::pair<double, std::string>> &pvd_records,
-    const std::string                                 &directory)
+    const std::string                                 &directory) const
   {
+    const auto        &layout = model.layout();
     TimerOutput::Scope t(timer, "output");
     Checkpoint         c;
     c.dimension      = dim;
@@ -142,7 +173,7 @@ namespace tribos
     c.n_dofs         = model.dof_handler().n_dofs();
     c.n_multipliers  = layout.n_multipliers;
     c.stepper        = stepper;
-    c.largest_stabilization_ratio = stabilization_springs.largest_ratio();
+    c.largest_stabilization_ratio = problem.stabilization().largest_ratio();
 
     // The multipliers of a system vector, each from its owner, summed over
     // the processes (only the owner has a node's multipliers).
@@ -159,10 +190,10 @@ namespace tribos
     // The displacement part of the solution, then the multipliers.
     Vector owned(layout.locally_owned_dofs, mpi_communicator);
     for (const auto i : layout.locally_owned_dofs)
-      owned[i] = owned_solution[i];
+      owned[i] = problem.unknowns()[i];
     owned.compress(VectorOperation::insert);
     c.cell_values["solution"] = cell_values(owned, &c.cells);
-    c.multipliers             = multipliers_of(owned_solution);
+    c.multipliers             = multipliers_of(problem.unknowns());
 
     // The last increment's change, which the next one extrapolates: its
     // displacement part per cell, its multipliers.
@@ -178,19 +209,19 @@ namespace tribos
     // Plastic history of the owned cells, gathered in cell order.
     std::vector<std::pair<CellKey, std::vector<double>>> mine;
     for (const auto &cell : model.triangulation().active_cell_iterators())
-      if (cell->is_locally_owned() && material_state->has_history(cell))
+      if (cell->is_locally_owned() && problem.materials().has_history(cell))
         mine.emplace_back(cell->id().template to_binary<dim>(),
-                          material_state->cell_history(cell));
+                          problem.materials().cell_history(cell));
     c.history = gather_by_cell(mine, mpi_communicator);
 
-    if (contact_handler)
-      c.contact = contact_handler->committed_state();
+    if (const auto *contact = problem.contact())
+      c.contact = contact->committed_state();
 
-    if (dynamics_state)
+    if (const auto *dynamics = problem.dynamics())
     {
-      for (const auto &[name, vector] : dynamics_state->checkpoint_vectors())
+      for (const auto &[name, vector] : dynamics->checkpoint_vectors())
         c.cell_values[name] = cell_values(*vector);
-      c.scalars = dynamics_state->scalars();
+      c.scalars = dynamics->scalars();
     }
     c.pvd_records = pvd_records;
     c.fingerprint = fingerprint();
@@ -205,7 +236,7 @@ namespace tribos
 
   template <int dim>
   std::map<std::string, std::string>
-  Problem<dim>::fingerprint() const
+  Checkpointer<dim>::fingerprint() const
   {
     const auto &m    = parameters.materials;
     const auto  list = [](const auto &values)
@@ -248,7 +279,7 @@ namespace tribos
 
   template <int dim>
   std::map<std::string, double>
-  Problem<dim>::geometry_moments() const
+  Checkpointer<dim>::geometry_moments() const
   {
     // Two sums over the owned cells' vertices: a weighted first moment (an
     // irrational weight per coordinate) and the second moment.
@@ -292,8 +323,9 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::check_checkpoint(const Checkpoint &c) const
+  Checkpointer<dim>::check(const Checkpoint &c) const
   {
+    const auto       &layout = model.layout();
     const std::string where =
       "--restart <" + parameters.restart_directory + ">: ";
     const auto require = [&](const unsigned int stored,
@@ -360,7 +392,8 @@ namespace tribos
                            std::to_string(parameters.time_stepping.n_steps) +
                            " (Time stepping/Number of steps): nothing is "
                            "left to do."));
-    AssertThrow(c.cell_values.count("velocity") == (dynamics_state ? 1 : 0),
+    AssertThrow(c.cell_values.count("velocity") ==
+                  (problem.dynamics() != nullptr ? 1 : 0),
                 ExcMessage(where +
                            "the checkpoint and this run disagree on "
                            "Time stepping/Integrator (static or dynamic)."));
@@ -370,8 +403,11 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::read_checkpoint(const Checkpoint &c)
+  Checkpointer<dim>::read(const Checkpoint &c)
   {
+    const auto       &layout         = model.layout();
+    auto              state          = problem.state();
+    Vector           &owned_solution = problem.solution();
     const std::string where =
       "--restart <" + parameters.restart_directory + ">: ";
     set_from_cell_values(c.cells, c.cell_values.at("solution"), owned_solution);
@@ -379,7 +415,7 @@ namespace tribos
       if (layout.system_owned.is_element(model.dof_handler().n_dofs() + i))
         owned_solution[model.dof_handler().n_dofs() + i] = c.multipliers[i];
     owned_solution.compress(VectorOperation::insert);
-    solution_changed();
+    problem.solution_changed();
     if (c.stepper.change_increment > 0)
     {
       change_of_restart.reinit(layout.system_owned, mpi_communicator);
@@ -398,11 +434,11 @@ namespace tribos
     for (const auto &[cell, values] : c.history)
       by_cell[cell] = &values;
     for (const auto &cell : model.triangulation().active_cell_iterators())
-      if (cell->is_locally_owned() && material_state->has_history(cell))
+      if (cell->is_locally_owned() && state.materials.has_history(cell))
       {
         const auto it = by_cell.find(cell->id().template to_binary<dim>());
         if (it == by_cell.end() ||
-            !material_state->set_cell_history(cell, *it->second))
+            !state.materials.set_cell_history(cell, *it->second))
           ++n_missing;
       }
     AssertThrow(Utilities::MPI::sum(n_missing, mpi_communicator) == 0,
@@ -410,22 +446,22 @@ namespace tribos
                                    "history for a cell that needs one: "
                                    "Materials must be those of the run "
                                    "that wrote it."));
-    material_state->restore();
-    stabilization_springs.set_largest_ratio(c.largest_stabilization_ratio);
+    state.materials.restore();
+    state.stabilization.set_largest_ratio(c.largest_stabilization_ratio);
 
-    time = c.stepper.time;
-    if (contact_handler)
+    state.time = c.stepper.time;
+    if (state.contact != nullptr)
     {
-      contact_handler->update(ghosted_solution, time);
-      contact_handler->load_committed_state(c.contact, time);
+      state.contact->update(state.ghosted_unknowns, state.time);
+      state.contact->load_committed_state(c.contact, state.time);
     }
 
-    if (dynamics_state)
-      dynamics_state->restart(
+    if (state.dynamics != nullptr)
+      state.dynamics->restart(
         [&](const std::string &name, Vector &v)
         { set_from_cell_values(c.cells, c.cell_values.at(name), v); },
         c.scalars,
-        displacement(),
+        problem.displacement(),
         c.stepper.time);
     std::ostringstream line;
     line << "  restarted from " << parameters.restart_directory
@@ -434,6 +470,6 @@ namespace tribos
     log(line.str());
   }
 
-  template class Problem<2>;
-  template class Problem<3>;
+  template class Checkpointer<2>;
+  template class Checkpointer<3>;
 } // namespace tribos
