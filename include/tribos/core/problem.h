@@ -57,8 +57,8 @@ namespace tribos
    * is the IncrementalProblem the generic solvers of solver/ drive. It
    * writes no output: postprocess/ reads it and the Model through const
    * accessors, run/Simulation drives it, Checkpointer writes and reads its
-   * state (State). The implementation is split over source/core/: setup.cc,
-   * increment.cc (the solver hooks).
+   * state (State). The implementation is split over source/core/:
+   * problem_setup.cc, problem_increment.cc (the solver hooks).
    */
   template <int dim>
   class Problem : public AlgebraicSystem
@@ -93,7 +93,7 @@ namespace tribos
     void
     setup(const CellWeights *weights = nullptr);
 
-    /* IncrementalProblem: the physics (increment.cc; the algebra is
+    /* IncrementalProblem: the physics (problem_increment.cc; the algebra is
      * AlgebraicSystem's) */
     void
     begin_increment(const double time, const Vector *predictor) override;
@@ -178,7 +178,7 @@ namespace tribos
     state();
 
   private:
-    /* setup.cc */
+    /* problem_setup.cc */
     void
     setup_system();
     /** What the contact adds to the unknowns (its ghosts, dofs and
@@ -193,7 +193,7 @@ namespace tribos
     void
     make_sparsity();
 
-    /* increment.cc */
+    /* problem_increment.cc */
     /**
      * Assemble at the current iterate: the tangent matrix and right-hand
      * side -R with @p constraints if @p with_matrix, and always the free
