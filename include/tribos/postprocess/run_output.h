@@ -11,6 +11,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <array>
@@ -120,6 +121,46 @@ namespace tribos
      * Exact displacement at @p time. */
     std::pair<double, double>
     displacement_errors(const double time) const;
+
+    /** The figures of summary.txt taken over the processes (min, max and
+     * sum of each process's value). */
+    struct ParallelFigures
+    {
+      /** Each process's own time in assembly and in the contact. */
+      std::vector<std::pair<std::string, Utilities::MPI::MinMaxAvg>> balance;
+      /** The slave nodes each process evaluates. */
+      Utilities::MPI::MinMaxAvg slave_nodes;
+      /** The number of processes. */
+      unsigned int n_ranks = 0;
+      /** The ghost values per update of the ghosted solution, and the
+       * contact's share of them. */
+      Utilities::MPI::MinMaxAvg ghosts, contact_ghosts;
+      /** ContactHandler::process_crossings(). */
+      std::pair<unsigned int, unsigned int> crossings;
+      /** The master exchange of the contact search: the most values one
+       * search brought to a process, and the mean per search. */
+      Utilities::MPI::MinMaxAvg exchange_largest, exchange_mean;
+      /** The peak resident memory in MB. */
+      Utilities::MPI::MinMaxAvg peak_memory;
+    };
+
+    /**
+     * Gather the ParallelFigures for write_summary(). Collective: every
+     * process calls it, with the same reductions in the same order; kept
+     * apart from the text, which the first process alone writes.
+     */
+    ParallelFigures
+    measure_parallel_figures() const;
+
+    /**
+     * Write the lines of summary.txt on the processes' memory, load
+     * balance and communication (and the contact cell weight that would
+     * balance the work) from @p figures: a section of write_summary() of
+     * its own, the only one that reads the ParallelFigures.
+     */
+    void
+    write_parallel_figures(std::ostream          &out,
+                           const ParallelFigures &figures) const;
 
     const Model<dim>                    &model;
     const Problem<dim>                  &problem;
