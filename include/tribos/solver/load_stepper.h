@@ -133,6 +133,58 @@ namespace tribos
                     const double                    time,
                     const NonlinearProblem::Vector *guess);
 
+    /**
+     * What run() carries from one increment to the next, over the nominal
+     * steps (advance_step() reads and updates it).
+     */
+    struct Stepping
+    {
+      /** Copies @p solution as the converged state the stepping starts
+       * from. */
+      explicit Stepping(const NonlinearProblem::Vector &solution)
+        : converged(solution)
+      {
+      }
+
+      /** Time stepping's nominal step, and the smallest increment (1e-12
+       * of the end time). */
+      double nominal_step = 0;
+      double epsilon      = 0;
+      /** Time stepping/Extrapolation (not in a dynamic run). */
+      bool extrapolate = false;
+      /** The time reached and the size of the next increment. */
+      double time      = 0;
+      double increment = 0;
+      /** The unknowns at time, to which a failed attempt returns. */
+      NonlinearProblem::Vector converged;
+      /** The size of the last converged increment, whose change
+       * (LoadStepper::change) guesses the next increment's first iterate
+       * (in predictor); 0: none. */
+      double                   change_increment = 0;
+      NonlinearProblem::Vector predictor;
+      /** Set when an extrapolated attempt failed: the increment is tried
+       * again from the converged state, and so are its cutbacks. */
+      bool plain_start = false;
+      /** Converged increments since the last growth or cutback, and the
+       * linear solves when the last increment was accepted. */
+      unsigned int converged_in_row = 0;
+      unsigned int solves_accepted  = 0;
+    };
+
+    /**
+     * Reach nominal step @p step from @p s.time by increments: each
+     * attempt, its acceptance (the increment's growth) or failure (the
+     * retry without extrapolation, the cutback, or the end of the run:
+     * NonConvergence). Returns the step's counts in a StepRecord whose
+     * other fields run() fills. Separate from run(), which sets the
+     * stepping up and completes each step, so that each reads on its own.
+     */
+    StepRecord
+    advance_step(IncrementalProblem &problem,
+                 SolverObserver     &observer,
+                 const unsigned int  step,
+                 Stepping           &s);
+
     const Parameters::TimeStepping &parameters;
     NewtonSolver                   &newton;
     StepperTotals                   sums;
