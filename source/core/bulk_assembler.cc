@@ -174,6 +174,74 @@ namespace tribos
 
 
     /**
+     * The material part of @p cell's assembly at the displacement @p u
+     * (ghosted) into @p copy, which it first zeroes: the internal forces,
+     * the body force @p body_force (null: none) and, if @p with_matrix,
+     * the tangent at the @p n_q quadrature points, the applied forces
+     * alone too if @p track_external; with a symmetric tangent the upper
+     * triangle, copied to the lower. Separate from the boundary loads,
+     * springs and inertia the worker adds after it (add_tractions(),
+     * add_springs(), DynamicsState::add_inertia()).
+     */
+    template <int dim>
+    void
+    add_material_terms(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const TrilinosWrappers::MPI::Vector                  &u,
+      MaterialState<dim>                                   &materials,
+      const FunctionParser<dim>                            *body_force,
+      const unsigned int                                    n_q,
+      const bool                                            with_matrix,
+      const bool                                            track_external,
+      AssemblyScratch<dim>                                 &scratch,
+      AssemblyCopy                                         &copy)
+    {
+      Kinematics<dim>   &kinematics    = *scratch.kinematics;
+      auto              &force         = scratch.force;
+      auto              &cell_matrix   = copy.cell_matrix;
+      auto              &cell_rhs      = copy.cell_rhs;
+      const unsigned int dofs_per_cell = copy.dof_indices.size();
+
+      kinematics.reinit(cell, u);
+      const FEValues<dim> &fe_values = kinematics.values();
+      cell->get_dof_indices(copy.dof_indices);
+      cell_matrix = 0;
+      cell_rhs    = 0;
+      if (track_external)
+        copy.cell_external = 0;
+
+      // A symmetric material tangent gives a symmetric cell matrix where
+      // the kinematics keep it (not F-bar's coupling through the centre):
+      // then the upper triangle only.
+      const types::material_id body = cell->material_id();
+      const bool upper_only = with_matrix && kinematics.keeps_symmetry() &&
+                              materials.material(body).has_symmetric_tangent();
+      CellTerms terms{cell_rhs,
+                      cell_matrix,
+                      track_external ? &copy.cell_external : nullptr,
+                      with_matrix,
+                      upper_only};
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        if (body_force)
+          body_force->vector_value(fe_values.quadrature_point(q), force);
+        kinematics.add_point(q,
+                             {materials,
+                              body,
+                              materials.old_history(cell, q),
+                              materials.new_history(cell, q),
+                              body_force ? &force : nullptr},
+                             terms);
+      }
+      if (upper_only)
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j < i; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
+    }
+
+
+
+    /**
      * Add one cell's @p copy to the system and the force vectors of
      * @p targets (the matrix and right-hand side with @p constraints, the
      * free residual with @p homogeneous; the static forces alone in the
@@ -208,6 +276,26 @@ namespace tribos
                                                copy.dof_indices,
                                                *targets.matrix,
                                                *targets.rhs);
+    }
+    /**
+     * Throw InvertedElement on every process if a cell was inverted on
+     * any: @p failure is this process's message (empty: none), the first
+     * process's with one is thrown. Collective. Every process throws, or
+     * none: a process that left here alone would leave the others waiting
+     * in the next collective step (two processes, a cell inverted on one
+     * of them: the run hung).
+     */
+    void
+    throw_if_inverted_anywhere(const std::string &failure,
+                               const MPI_Comm     mpi_communicator)
+    {
+      if (Utilities::MPI::max(failure.empty() ? 0 : 1, mpi_communicator) > 0)
+      {
+        for (const auto &message :
+             Utilities::MPI::all_gather(mpi_communicator, failure))
+          if (!message.empty())
+            throw InvertedElement(message);
+      }
     }
   } // namespace
 
@@ -275,47 +363,18 @@ namespace tribos
                                    AssemblyScratch<dim> &scratch,
                                    AssemblyCopy         &copy)
     {
-      Kinematics<dim> &kinematics  = *scratch.kinematics;
-      auto            &force       = scratch.force;
-      auto            &cell_matrix = copy.cell_matrix;
-      auto            &cell_rhs    = copy.cell_rhs;
-      auto            &dof_indices = copy.dof_indices;
-
-      kinematics.reinit(cell, u);
-      const FEValues<dim> &fe_values = kinematics.values();
-      cell->get_dof_indices(dof_indices);
-      cell_matrix = 0;
-      cell_rhs    = 0;
-      if (track_external)
-        copy.cell_external = 0;
-
-      // A symmetric material tangent gives a symmetric cell matrix where
-      // the kinematics keep it (not F-bar's coupling through the centre):
-      // then the upper triangle only.
-      const types::material_id body = cell->material_id();
-      const bool upper_only = with_matrix && kinematics.keeps_symmetry() &&
-                              materials.material(body).has_symmetric_tangent();
-      CellTerms terms{cell_rhs,
-                      cell_matrix,
-                      track_external ? &copy.cell_external : nullptr,
-                      with_matrix,
-                      upper_only};
-      for (unsigned int q = 0; q < n_q; ++q)
-      {
-        if (body_force)
-          body_force->vector_value(fe_values.quadrature_point(q), force);
-        kinematics.add_point(q,
-                             {materials,
-                              body,
-                              materials.old_history(cell, q),
-                              materials.new_history(cell, q),
-                              body_force ? &force : nullptr},
-                             terms);
-      }
-      if (upper_only)
-        for (unsigned int i = 0; i < dofs_per_cell; ++i)
-          for (unsigned int j = 0; j < i; ++j)
-            cell_matrix(i, j) = cell_matrix(j, i);
+      add_material_terms<dim>(cell,
+                              u,
+                              materials,
+                              body_force.get(),
+                              n_q,
+                              with_matrix,
+                              track_external,
+                              scratch,
+                              copy);
+      const Kinematics<dim>   &kinematics = *scratch.kinematics;
+      const FEValues<dim>     &fe_values  = kinematics.values();
+      const types::material_id body       = cell->material_id();
 
       if (!neumann_functions.empty())
         add_tractions<dim>(cell,
@@ -338,13 +397,13 @@ namespace tribos
 
       if (dynamic)
         dynamics->add_inertia(fe_values,
-                              dof_indices,
+                              copy.dof_indices,
                               component,
                               body,
                               u,
                               with_matrix,
-                              cell_rhs,
-                              cell_matrix,
+                              copy.cell_rhs,
+                              copy.cell_matrix,
                               copy.cell_static,
                               copy.cell_inertia,
                               scratch.inertia);
@@ -396,16 +455,7 @@ namespace tribos
       AssemblyScratch<dim>(*kinematics, face_quadrature),
       AssemblyCopy(dofs_per_cell, stabilization > 0, track_external, dynamic));
     own_seconds += seconds_since(start);
-    // Every process throws, or none: a process that left here alone
-    // would leave the others waiting in the next collective step (two
-    // processes, a cell inverted on one of them: the run hung).
-    if (Utilities::MPI::max(failure.empty() ? 0 : 1, mpi_communicator) > 0)
-    {
-      for (const auto &message :
-           Utilities::MPI::all_gather(mpi_communicator, failure))
-        if (!message.empty())
-          throw InvertedElement(message);
-    }
+    throw_if_inverted_anywhere(failure, mpi_communicator);
   }
 
 
