@@ -1,6 +1,7 @@
 #include <tribos/contact/element/mortar_element.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -164,6 +165,128 @@ namespace tribos
       for (unsigned int k = 0; k < 3; ++k)
         row[k] = cof[j][k] / det;
     }
+
+    /** The unit vector out of the plane: ez x a segment's chord is its
+     * normal. */
+    const Vec3<double> ez{{0., 0., 1.}};
+
+    /** A master segment's overlap with a slave segment. */
+    struct Overlap
+    {
+      unsigned int m;
+      /** The overlap in the slave segment's coordinate. */
+      AD lo, hi;
+    };
+
+    /**
+     * The overlap @p o of master segment @p m of @p input (its nodes'
+     * positions @p xm in AD numbers) with the slave segment through @p x
+     * (@p x_ad in AD numbers, its chord @p chord and the chord's normal
+     * @p n_s): the closest-point projections of the master's ends onto the
+     * slave curve, clipped to the segment. False if there is none (the
+     * master faces the same way, or the overlap is empty). One master
+     * segment at a time, apart from integrate_quadratic()'s loop over them
+     * that adds up the covered fraction.
+     */
+    bool
+    master_overlap(const MortarInput         &input,
+                   const Vec3<AD>            *xm,
+                   const unsigned int         m,
+                   const Vec3<double> *const *x,
+                   const Vec3<AD> *const     *x_ad,
+                   const Vec3<double>        &chord,
+                   const Vec3<double>        &n_s,
+                   Overlap                   &o)
+    {
+      const auto         &ms   = input.master_segment[m];
+      const Vec3<double> *y[3] = {&input.xm[ms[0]],
+                                  &input.xm[ms[1]],
+                                  &input.xm[ms[2]]};
+      if (dot(cross(ez, *y[1] - *y[0]), n_s) >= 0)
+        return false;
+      o.m = m;
+      // The master's ends on the slave curve: in double, then one
+      // Newton step in AD numbers for the derivatives.
+      double          ends[2];
+      AD              ends_ad[2];
+      const Vec3<AD> *y_ad[2] = {&xm[ms[0]], &xm[ms[1]]};
+      for (unsigned int e = 0; e < 2; ++e)
+      {
+        ends[e] = 2. * dot(*y[e] - *x[0], chord) / dot(chord, chord) - 1.;
+        double    slope;
+        const int where = closest_point(x, *y[e], ends[e], slope);
+        if (where != 0)
+        {
+          // Before or beyond the segment: clipped, no derivative.
+          ends[e]    = 2. * where;
+          ends_ad[e] = ends[e];
+          continue;
+        }
+        Vec3<AD> p_ad, t_ad;
+        curve(x_ad, AD(ends[e]), p_ad, t_ad);
+        ends_ad[e] = ends[e] - dot(*y_ad[e] - p_ad, t_ad) / slope;
+      }
+      if (std::abs(ends[0] - ends[1]) < 1e-12)
+        return false;
+      const bool c_low = ends[0] < ends[1];
+      const AD  &low   = c_low ? ends_ad[0] : ends_ad[1];
+      const AD  &high  = c_low ? ends_ad[1] : ends_ad[0];
+      o.lo             = low.val() > -1. ? low : AD(-1.);
+      o.hi             = high.val() < 1. ? high : AD(1.);
+      if (o.hi.val() <= o.lo.val())
+        return false;
+      return true;
+    }
+
+    /**
+     * The coefficients c_k of the dual function Phi_j = sum_k c_k N_k of
+     * node j (@p j_local in the segment) on the slave segment through
+     * @p x_ad, of which the master covers the fraction @p covered. Apart
+     * from the overlaps: it needs only the segment and the covered
+     * fraction.
+     */
+    std::array<AD, 3>
+    dual_coefficients(const MortarInput     &input,
+                      const Vec3<AD> *const *x_ad,
+                      const unsigned int     j_local,
+                      const AD              &covered)
+    {
+      const AD zero(0.);
+
+      // The dual functions of the segment as on Q1 (blended towards the
+      // standard ones where the master covers it in part): Phi_j = sum_k
+      // c_k N_k.
+      const AD          theta = internal::dual_weight(input.dual, covered);
+      std::array<AD, 3> c     = {{zero, zero, zero}};
+      c[j_local]              = 1.;
+      if (theta.val() > 0)
+      {
+        AD mass[3][3];
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int k = 0; k < 3; ++k)
+            mass[i][k] = zero;
+        for (unsigned int q = 0; q < n_gauss; ++q)
+        {
+          const double xi = gauss_x[q];
+          double       N[3], dN[3];
+          quadratic_segment_shape(xi, N, dN);
+          Vec3<AD> p, t;
+          curve(x_ad, AD(xi), p, t);
+          AD weight = gauss_w[q] * norm(t);
+          if (input.axisymmetric)
+            weight *= p[0];
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int k = 0; k < 3; ++k)
+              mass[i][k] += weight * N[i] * N[k];
+        }
+        AD inverse[3];
+        inverse_row(mass, j_local, inverse);
+        const AD d_j = mass[j_local][0] + mass[j_local][1] + mass[j_local][2];
+        for (unsigned int k = 0; k < 3; ++k)
+          c[k] = theta * d_j * inverse[k] + (1. - theta) * c[k];
+      }
+      return c;
+    }
   } // namespace
 
 
@@ -178,16 +301,9 @@ namespace tribos
                         ContactAD             *M,
                         Vec3<ContactAD>       &normal_j)
     {
-      const Vec3<double> ez{{0., 0., 1.}};
-      const Vec3<AD>     ez_ad = to<AD>(ez);
-      const AD           zero(0.);
+      const Vec3<AD> ez_ad = to<AD>(ez);
+      const AD       zero(0.);
 
-      struct Overlap
-      {
-        unsigned int m;
-        /** The overlap in the slave segment's coordinate. */
-        AD lo, hi;
-      };
       for (unsigned int s = 0; s < input.n_slave_segments; ++s)
       {
         const unsigned int *segment = input.slave_segment[s];
@@ -208,80 +324,15 @@ namespace tribos
         AD           covered    = zero;
         for (unsigned int m = 0; m < input.n_master_segments; ++m)
         {
-          const auto         &ms   = input.master_segment[m];
-          const Vec3<double> *y[3] = {&input.xm[ms[0]],
-                                      &input.xm[ms[1]],
-                                      &input.xm[ms[2]]};
-          if (dot(cross(ez, *y[1] - *y[0]), n_s) >= 0)
-            continue;
           Overlap o;
-          o.m = m;
-          // The master's ends on the slave curve: in double, then one
-          // Newton step in AD numbers for the derivatives.
-          double          ends[2];
-          AD              ends_ad[2];
-          const Vec3<AD> *y_ad[2] = {&xm[ms[0]], &xm[ms[1]]};
-          for (unsigned int e = 0; e < 2; ++e)
-          {
-            ends[e] = 2. * dot(*y[e] - *x[0], chord) / dot(chord, chord) - 1.;
-            double    slope;
-            const int where = closest_point(x, *y[e], ends[e], slope);
-            if (where != 0)
-            {
-              // Before or beyond the segment: clipped, no derivative.
-              ends[e]    = 2. * where;
-              ends_ad[e] = ends[e];
-              continue;
-            }
-            Vec3<AD> p_ad, t_ad;
-            curve(x_ad, AD(ends[e]), p_ad, t_ad);
-            ends_ad[e] = ends[e] - dot(*y_ad[e] - p_ad, t_ad) / slope;
-          }
-          if (std::abs(ends[0] - ends[1]) < 1e-12)
-            continue;
-          const bool c_low = ends[0] < ends[1];
-          const AD  &low   = c_low ? ends_ad[0] : ends_ad[1];
-          const AD  &high  = c_low ? ends_ad[1] : ends_ad[0];
-          o.lo             = low.val() > -1. ? low : AD(-1.);
-          o.hi             = high.val() < 1. ? high : AD(1.);
-          if (o.hi.val() <= o.lo.val())
+          if (!master_overlap(input, xm, m, x, x_ad, chord, n_s, o))
             continue;
           covered += 0.5 * (o.hi - o.lo);
           overlaps[n_overlaps++] = o;
         }
 
-        // The dual functions of the segment as on Q1 (blended towards the
-        // standard ones where the master covers it in part): Phi_j = sum_k
-        // c_k N_k.
-        const AD theta = dual_weight(input.dual, covered);
-        AD       c[3]  = {zero, zero, zero};
-        c[j_local]     = 1.;
-        if (theta.val() > 0)
-        {
-          AD mass[3][3];
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int k = 0; k < 3; ++k)
-              mass[i][k] = zero;
-          for (unsigned int q = 0; q < n_gauss; ++q)
-          {
-            const double xi = gauss_x[q];
-            double       N[3], dN[3];
-            quadratic_segment_shape(xi, N, dN);
-            Vec3<AD> p, t;
-            curve(x_ad, AD(xi), p, t);
-            AD weight = gauss_w[q] * norm(t);
-            if (input.axisymmetric)
-              weight *= p[0];
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int k = 0; k < 3; ++k)
-                mass[i][k] += weight * N[i] * N[k];
-          }
-          AD inverse[3];
-          inverse_row(mass, j_local, inverse);
-          const AD d_j = mass[j_local][0] + mass[j_local][1] + mass[j_local][2];
-          for (unsigned int k = 0; k < 3; ++k)
-            c[k] = theta * d_j * inverse[k] + (1. - theta) * c[k];
-        }
+        const std::array<AD, 3> c =
+          dual_coefficients(input, x_ad, j_local, covered);
 
         for (unsigned int i = 0; i < n_overlaps; ++i)
         {
