@@ -35,7 +35,7 @@ namespace tribos
       for (std::size_t start = 0;;)
       {
         const std::size_t comma = line.find(',', start);
-        tokens.push_back(inp_trim(std::string_view(line).substr(
+        tokens.push_back(ReaderText::trim(std::string_view(line).substr(
           start,
           comma == std::string::npos ? comma : comma - start)));
         if (comma == std::string::npos)
@@ -56,7 +56,7 @@ namespace tribos
         std::from_chars(token.data(), token.data() + token.size(), value);
       if (r.ec != std::errc() || r.ptr != token.data() + token.size() ||
           value == 0)
-        fail(inp_quote(token) + " where " + what +
+        fail(ReaderText::quote(token) + " where " + what +
              " is expected (an integer from 1 to " + str(UINT64_MAX) + ")");
       return value;
     }
@@ -125,8 +125,9 @@ namespace tribos
       MshFile::Node node{label(tokens[0], "a node label"), {{0, 0, 0}}, 0};
       node.line = at.line;
       for (std::size_t k = 1; k < tokens.size(); ++k)
-        if (!tokens[k].empty() && !inp_parse_finite(tokens[k], node.x[k - 1]))
-          fail(inp_quote(tokens[k]) +
+        if (!tokens[k].empty() &&
+            !ReaderText::parse_finite(tokens[k], node.x[k - 1]))
+          fail(ReaderText::quote(tokens[k]) +
                " where a coordinate is expected (a finite number)");
       const auto [it, inserted] =
         node_of.emplace(node.tag, deck.mesh.nodes.size());
@@ -257,7 +258,7 @@ namespace tribos
             const auto &index = nodes ? deck.nset_of : deck.elset_of;
             const auto  it    = index.find(inp_key(t));
             if (it == index.end())
-              fail(inp_quote(t) + " is no " +
+              fail(ReaderText::quote(t) + " is no " +
                    (nodes ? "node set" : "element set") +
                    " defined above (a set lists labels and the names of "
                    "sets defined before it)");
@@ -278,15 +279,16 @@ namespace tribos
       if (s.of_nodes)
       {
         double weight = 0;
-        if (tokens.size() > 2 ||
-            (tokens.size() == 2 && !inp_parse_finite(tokens[1], weight)))
+        if (tokens.size() > 2 || (tokens.size() == 2 &&
+                                  !ReaderText::parse_finite(tokens[1], weight)))
           fail("a TYPE=NODE surface's data line is 'node or node set[, "
                "area]'");
         if (is_name(tokens[0]))
         {
           const auto it = deck.nset_of.find(inp_key(tokens[0]));
           if (it == deck.nset_of.end())
-            fail(inp_quote(tokens[0]) + " is no node set defined above");
+            fail(ReaderText::quote(tokens[0]) +
+                 " is no node set defined above");
           add(s.nodes, deck.nsets[it->second].members);
         }
         else
@@ -306,14 +308,16 @@ namespace tribos
           std::from_chars(face.data() + 1, face.data() + face.size(), f).ptr !=
             face.data() + face.size() ||
           f == 0 || f > 6)
-        fail(inp_quote(tokens[1]) + " where a face identifier S1 to S6 is "
-                                    "expected");
+        fail(ReaderText::quote(tokens[1]) +
+             " where a face identifier S1 to S6 is "
+             "expected");
       std::vector<std::size_t> elements;
       if (is_name(tokens[0]))
       {
         const auto it = deck.elset_of.find(inp_key(tokens[0]));
         if (it == deck.elset_of.end())
-          fail(inp_quote(tokens[0]) + " is no element set defined above");
+          fail(ReaderText::quote(tokens[0]) +
+               " is no element set defined above");
         add(elements, deck.elsets[it->second].members);
       }
       else

@@ -20,6 +20,8 @@
 #include <utility>
 #include <vector>
 
+#include "reader_text.h"
+
 namespace tribos
 {
   namespace internal
@@ -217,23 +219,10 @@ namespace tribos
 
 
 
-    /** @p s without surrounding blanks. */
-    std::string_view
-    inp_trim(std::string_view s);
-
-    /** Whether @p s is a finite double, into @p value (a leading '+'
-     * allowed, as strtod has it). */
-    bool
-    inp_parse_finite(std::string_view s, double &value);
-
     /** @p s in upper case without blanks: how Abaqus compares keywords,
      * parameters and names. */
     std::string
     inp_key(std::string_view s);
-
-    /** @p s quoted for a message: its start, non-printing bytes as '?'. */
-    std::string
-    inp_quote(std::string_view s);
 
     /** A message's list of the names of @p sets (at most 12): of sets
      * and surfaces, or of (id, name) pairs. */

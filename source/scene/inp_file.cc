@@ -29,12 +29,6 @@ namespace tribos
       constexpr std::size_t max_line_length = std::size_t(1) << 20;
       /** Deeper *INCLUDE nesting is a runaway, not a deck. */
       constexpr std::size_t max_include_depth = 16;
-
-      bool
-      is_space(const char c)
-      {
-        return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-      }
     } // namespace
 
 
@@ -61,7 +55,7 @@ namespace tribos
       ++at.line;
       if (at.line == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
         line.erase(0, 3); // a UTF-8 byte order mark
-      line = std::string(inp_trim(line));
+      line = std::string(ReaderText::trim(line));
       return true;
     }
 
@@ -77,7 +71,7 @@ namespace tribos
       for (std::size_t i = 0; i < reading.size(); ++i)
         if (reading[i] == path)
           deck.fail(from,
-                    "*INCLUDE of " + inp_quote(name) +
+                    "*INCLUDE of " + ReaderText::quote(name) +
                       ", which is being "
                       "read already (" +
                       (i == 0 ? "the deck itself" : "an including file") +
@@ -90,12 +84,13 @@ namespace tribos
         deck.fail(from,
                   from.line == 0 ?
                     "no such file (or not a regular file)" :
-                    "the included file " + inp_quote(name) +
+                    "the included file " + ReaderText::quote(name) +
                       " does not exist (or is not a regular file); "
                       "INPUT= is relative to the including file's folder");
       std::ifstream input(name, std::ios::binary);
       if (!input)
-        deck.fail(from, "the file " + inp_quote(name) + " cannot be opened");
+        deck.fail(from,
+                  "the file " + ReaderText::quote(name) + " cannot be opened");
       deck.files.push_back(name);
       reading.push_back(path);
       const InpWhere outer = at;
@@ -107,8 +102,9 @@ namespace tribos
         if (line[0] == '*')
           keyword();
         else if (block == InpBlock::none)
-          fail(inp_quote(line) + " before any keyword line: a deck starts "
-                                 "with a keyword such as *HEADING or *NODE");
+          fail(ReaderText::quote(line) +
+               " before any keyword line: a deck starts "
+               "with a keyword such as *HEADING or *NODE");
         else if (block == InpBlock::node)
           node_line();
         else if (block == InpBlock::element)
@@ -142,7 +138,7 @@ namespace tribos
       for (std::size_t start = 1;;)
       {
         const std::size_t comma = line.find(',', start);
-        fields.push_back(inp_trim(std::string_view(line).substr(
+        fields.push_back(ReaderText::trim(std::string_view(line).substr(
           start,
           comma == std::string::npos ? comma : comma - start)));
         if (comma == std::string::npos)
@@ -151,15 +147,17 @@ namespace tribos
       }
       const std::string name = inp_key(fields[0]);
       if (name.empty())
-        fail(inp_quote(line) + " where a keyword line (*NODE, *ELEMENT, "
-                               "...) is expected");
+        fail(ReaderText::quote(line) +
+             " where a keyword line (*NODE, *ELEMENT, "
+             "...) is expected");
       parameters.clear();
       for (std::size_t i = 1; i < fields.size(); ++i)
       {
         const std::size_t equal = fields[i].find('=');
-        std::string_view  value = equal == std::string::npos ?
-                                    "" :
-                                    inp_trim(fields[i].substr(equal + 1));
+        std::string_view  value =
+          equal == std::string::npos ?
+             "" :
+             ReaderText::trim(fields[i].substr(equal + 1));
         if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
           value = value.substr(1, value.size() - 2);
         if (!fields[i].empty())
@@ -262,7 +260,7 @@ namespace tribos
         type_name = inp_key(name_parameter(name, "TYPE"));
         type      = inp_element_type(type_name);
         if (type == nullptr)
-          fail("element type " + inp_quote(type_name) +
+          fail("element type " + ReaderText::quote(type_name) +
                " is not one tribos reads" +
                (type_name.compare(0, 5, "C3D27") == 0 ?
                   " (C3D27, whose mid-face nodes may be omitted, is "
@@ -300,7 +298,8 @@ namespace tribos
         const auto [it, inserted] =
           deck.surface_of.emplace(inp_key(surface), deck.surfaces.size());
         if (!inserted)
-          fail("surface " + inp_quote(surface) + " is defined twice: at " +
+          fail("surface " + ReaderText::quote(surface) +
+               " is defined twice: at " +
                where(deck.surfaces[it->second].where) + " and here");
         deck.surfaces.push_back(
           {surface, at, n_definitions++, k == "NODE", {}, {}});
@@ -346,64 +345,14 @@ namespace tribos
 
 
 
-    std::string_view
-    inp_trim(std::string_view s)
-    {
-      while (!s.empty() && is_space(s.back()))
-        s.remove_suffix(1);
-      while (!s.empty() && is_space(s.front()))
-        s.remove_prefix(1);
-      return s;
-    }
-
-
-
-    bool
-    inp_parse_finite(std::string_view s, double &value)
-    {
-      if (s.size() > 1 && s[0] == '+' && s[1] != '-' && s[1] != '+')
-        s.remove_prefix(1);
-#if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
-      const char *end = s.data() + s.size();
-      const auto  r   = std::from_chars(s.data(), end, value);
-      if (r.ptr != end)
-        return false;
-      if (r.ec == std::errc::result_out_of_range) // 1e999 refused, 1e-400 0
-        value = std::strtod(std::string(s).c_str(), nullptr);
-      else if (r.ec != std::errc())
-        return false;
-#else
-      const std::string copy(s);
-      char             *end = nullptr;
-      value                 = std::strtod(copy.c_str(), &end);
-      if (copy.empty() || end != copy.c_str() + copy.size() ||
-          copy.find_first_of("xXnN") != std::string::npos)
-        return false;
-#endif
-      return std::isfinite(value);
-    }
-
-
-
     std::string
     inp_key(const std::string_view s)
     {
       std::string k;
       for (const char c : s)
-        if (!is_space(c))
+        if (!ReaderText::is_space(c))
           k += (c >= 'a' && c <= 'z') ? char(c - 'a' + 'A') : c;
       return k;
-    }
-
-
-
-    std::string
-    inp_quote(const std::string_view s)
-    {
-      std::string q = "'";
-      for (std::size_t i = 0; i < s.size() && i < 40; ++i)
-        q += (s[i] < 32 || s[i] > 126) ? '?' : s[i];
-      return q + (s.size() > 40 ? "...'" : "'");
     }
 
 

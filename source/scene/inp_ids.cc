@@ -116,7 +116,8 @@ namespace tribos
           if (id < 0)
             fail_ids({0, 0},
                      boundaries,
-                     "id " + std::to_string(id) + " for " + inp_quote(name) +
+                     "id " + std::to_string(id) + " for " +
+                       ReaderText::quote(name) +
                        ": ids are integers from 0 to " +
                        std::to_string(INT_MAX));
         }
@@ -283,19 +284,19 @@ namespace tribos
             if (it == deck.elset_of.end())
               fail_ids({0, 0},
                        false,
-                       "body set " + inp_quote(name) +
+                       "body set " + ReaderText::quote(name) +
                          " is no element set of the deck (its element sets: " +
                          inp_names(deck.elsets) + ")");
             for (const auto &b : bodies)
               if (b.first == it->second)
                 fail_ids({0, 0},
                          false,
-                         "element set " + inp_quote(name) +
+                         "element set " + ReaderText::quote(name) +
                            " is given two body ids");
             if (deck.elsets[it->second].members.empty())
               fail_ids(deck.elsets[it->second].where,
                        false,
-                       "element set " + inp_quote(name) +
+                       "element set " + ReaderText::quote(name) +
                          ", a body set, has no elements");
             bodies.emplace_back(it->second, id);
           }
@@ -389,7 +390,7 @@ namespace tribos
           if (is_s && is_n)
             fail_ids({0, 0},
                      true,
-                     "boundary set " + inp_quote(given) +
+                     "boundary set " + ReaderText::quote(given) +
                        " is both a surface (" +
                        deck.place(deck.surfaces[s->second].where) +
                        ") and a node set (" +
@@ -398,7 +399,7 @@ namespace tribos
           if (!is_s && !is_n)
             fail_ids({0, 0},
                      true,
-                     "boundary set " + inp_quote(given) +
+                     "boundary set " + ReaderText::quote(given) +
                        " is no surface or node set of the deck (its "
                        "surfaces: " +
                        inp_names(deck.surfaces) +
@@ -408,7 +409,7 @@ namespace tribos
             if (d.surface == c.surface && d.index == c.index)
               fail_ids({0, 0},
                        true,
-                       "boundary set " + inp_quote(given) +
+                       "boundary set " + ReaderText::quote(given) +
                          " is given two boundary ids");
           candidates.push_back(c);
         }
@@ -497,7 +498,7 @@ namespace tribos
           if (faces.empty() && !ids.boundaries.empty())
             fail_ids(where_of(c),
                      true,
-                     kind + inp_quote(name_of(c)) +
+                     kind + ReaderText::quote(name_of(c)) +
                        ", a boundary set, holds no face of the mesh "
                        "boundary" +
                        (c.surface ? "" :

@@ -24,10 +24,17 @@
 #include <utility>
 #include <vector>
 
+#include "reader_text.h"
+
 namespace tribos
 {
   namespace internal::MshFileImplementation
   {
+    using ReaderText::is_space;
+    using ReaderText::parse_finite;
+    using ReaderText::quote;
+    using ReaderText::trim;
+
     // The lines of the format, in gmsh's words, for the messages.
     const char *const version_line = "'version file-type data-size'";
     const char *const point_line =
@@ -54,32 +61,7 @@ namespace tribos
     /** More numbers than any gmsh line has (an entity's bounding list). */
     constexpr std::size_t max_tokens = std::size_t(1) << 16;
 
-    inline bool
-    is_space(const char c)
-    {
-      return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-    }
 
-    inline std::string_view
-    trim(std::string_view s)
-    {
-      while (!s.empty() && is_space(s.back()))
-        s.remove_suffix(1);
-      while (!s.empty() && is_space(s.front()))
-        s.remove_prefix(1);
-      return s;
-    }
-
-    /** @p s quoted for a message: its start, with non-printing bytes as
-     * '?', since the file may be binary. */
-    inline std::string
-    quote(const std::string_view s)
-    {
-      std::string q = "'";
-      for (std::size_t i = 0; i < s.size() && i < 40; ++i)
-        q += (s[i] < 32 || s[i] > 126) ? '?' : s[i];
-      return q + (s.size() > 40 ? "...'" : "'");
-    }
 
     inline std::string
     str(const std::uint64_t n)
@@ -96,31 +78,6 @@ namespace tribos
       return r.ec == std::errc() && r.ptr == s.data() + s.size();
     }
 
-    /** A finite double (a leading '+' allowed, as strtod has it). */
-    inline bool
-    parse_finite(std::string_view s, double &value)
-    {
-      if (s.size() > 1 && s[0] == '+' && s[1] != '-' && s[1] != '+')
-        s.remove_prefix(1);
-#if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
-      const char *end = s.data() + s.size();
-      const auto  r   = std::from_chars(s.data(), end, value);
-      if (r.ptr != end)
-        return false;
-      if (r.ec == std::errc::result_out_of_range) // 1e999 refused, 1e-400 0
-        value = std::strtod(std::string(s).c_str(), nullptr);
-      else if (r.ec != std::errc())
-        return false;
-#else
-      const std::string copy(s);
-      char             *end = nullptr;
-      value                 = std::strtod(copy.c_str(), &end);
-      if (copy.empty() || end != copy.c_str() + copy.size() ||
-          copy.find_first_of("xXnN") != std::string::npos)
-        return false;
-#endif
-      return std::isfinite(value);
-    }
 
     struct Section
     {
