@@ -107,7 +107,13 @@ namespace tribos
         warnings.warn(w);
     }
 
-    model.set_unknowns(contact_handler ? &contact_unknowns() : nullptr);
+    if (contact_handler)
+    {
+      const ContactUnknowns extra = contact_unknowns();
+      model.set_unknowns(&extra);
+    }
+    else
+      model.set_unknowns(nullptr);
     make_sparsity();
     setup_vectors();
   }
@@ -115,8 +121,8 @@ namespace tribos
 
 
   template <int dim>
-  const ContactUnknowns &
-  Problem<dim>::contact_unknowns()
+  ContactUnknowns
+  Problem<dim>::contact_unknowns() const
   {
     // Contact couples this process's slave nodes to master nodes anywhere:
     // the constraints and the pattern know every contact dof. The solution
@@ -124,7 +130,7 @@ namespace tribos
     // positions come with the search (on a shared mesh, whose constraints
     // come from the cells alone, every contact dof is ghosted).
     const types::global_dof_index n_dofs = model.dof_handler().n_dofs();
-    ContactUnknowns              &c      = extra_unknowns;
+    ContactUnknowns               c;
     c.ghost_dofs =
       parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed ?
         contact_handler->ghost_dofs() :

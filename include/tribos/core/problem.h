@@ -182,9 +182,9 @@ namespace tribos
     void
     setup_system();
     /** What the contact adds to the unknowns (its ghosts, dofs and
-     * multipliers), into extra_unknowns. */
-    const ContactUnknowns &
-    contact_unknowns();
+     * multipliers), for Model::set_unknowns(). */
+    ContactUnknowns
+    contact_unknowns() const;
     /** The vectors of the system, the round-off scales and the springs. */
     void
     setup_vectors();
@@ -214,8 +214,6 @@ namespace tribos
     const std::function<void(const std::string &)> log;
     Warnings                                      &warnings;
 
-    /** What the contact adds to the Model's unknowns. */
-    ContactUnknowns extra_unknowns;
     /** The current increment's end time. */
     double time = 0;
     /** The springs (they read the Model's dof maps). */
