@@ -8,6 +8,7 @@
  */
 
 #include <tribos/base/exceptions.h>
+#include <tribos/base/fork_server.h>
 #include <tribos/base/interruption.h>
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/run/simulation.h>
@@ -287,6 +288,17 @@ int
 main(int argc, char **argv)
 {
   using namespace dealii;
+  // The test drivers' server of short runs (base/fork_server.h): the
+  // server ends here; each of its children goes on with its run's
+  // command line.
+  if (argc == 2 && std::string(argv[1]) == "--fork-server")
+  {
+    static auto served = tribos::ForkServer::serve(argv[0]);
+    if (!served)
+      return 0;
+    argc = static_cast<int>(served->size()) - 1;
+    argv = served->data();
+  }
   configure_singleton_mpi();
   // Threads for the assembly: the node's cores divided among its MPI
   // processes (DEAL_II_NUM_THREADS sets fewer).

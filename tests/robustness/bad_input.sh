@@ -25,6 +25,36 @@ core=" unknown_entry wrong_type missing_file missing_mesh negative_youngs_modulu
   set_unknown_entry unknown_boundary contact_unknown_master
   contact_q2_node_to_segment dynamics_no_density gmsh_garbage "
 
+# Serial runs forked from one loaded tribos when ctest asks for it
+# (TRIBOS_TEST_FORK_SERVER=1, include/tribos/base/fork_server.h): the same
+# runs without loading deal.II's libraries each time.
+if [ "${TRIBOS_TEST_FORK_SERVER:-}" = 1 ] && [ "$case" != mpi ]; then
+  coproc SERVER { exec "$tribos" --fork-server; }
+fi
+run_tribos() { # stdout file, stderr file, command... (its exit status)
+  local stdout=$1 stderr=$2 variable variables=()
+  shift 2
+  if [ -n "${SERVER_PID:-}" ] && [ "$1" = "$tribos" ]; then
+    while IFS= read -r -d '' variable; do
+      variables+=("$variable")
+    done < <(env -0)
+    local line
+    for line in "${variables[@]}" "$@"; do
+      [[ $line == *$'\n'* ]] && { "$@" > "$stdout" 2> "$stderr"; return; }
+    done
+    printf '%s\n' "run $(($# - 1))" "$PWD" "$stdout" "$stderr" \
+      "${#variables[@]}" "${variables[@]}" "${@:2}" >&"${SERVER[1]}"
+    local how status
+    read -r how status <&"${SERVER[0]}"
+    case $how in
+      exit) return "$status" ;;
+      signal) return $((128 + status)) ;;
+      *) echo "FAILED  tribos --fork-server answered <$how $status>"; return 125 ;;
+    esac
+  fi
+  "$@" > "$stdout" 2> "$stderr"
+}
+
 expect() { # name, expected substring, command...
   local name=$1 pattern=$2 part=more
   shift 2
@@ -32,7 +62,8 @@ expect() { # name, expected substring, command...
   [[ $name == mpi_* ]] && part=mpi
   [ "$case" = all ] || [ "$case" = "$part" ] || return 0
   local dir="$out/$name"
-  "$@" --set "Output/Directory=$dir" > "$out/$name.stdout" 2> "$out/$name.stderr"
+  run_tribos "$out/$name.stdout" "$out/$name.stderr" "$@" \
+    --set "Output/Directory=$dir"
   local status=$?
   if [ $status -ne 1 ]; then
     echo "FAILED  $name: exit status $status, expected 1"; failed=1

@@ -9,6 +9,7 @@ PYTHONPATH; to run a driver by hand:
         tests/verification/hertz.py build/tribos tests/data /tmp/hertz"""
 
 from . import analytic
+import atexit
 import csv
 import math
 import os
@@ -16,6 +17,8 @@ import shutil
 import signal
 import subprocess
 import sys
+import tempfile
+import time
 
 #: The repository's folders the drivers read beside tests/data.
 REPOSITORY = os.path.dirname(os.path.dirname(os.path.dirname(
@@ -45,13 +48,91 @@ def run(tribos, prm, out, sets=(), mpi_ranks=0, expect_success=True,
     if mpi_ranks:
         command = [os.environ.get("MPIEXEC", "mpirun"), "-np",
                    str(mpi_ranks)] + command
-    result = subprocess.run(command, capture_output=True, text=True)
+        result = _timed(lambda: subprocess.run(command, capture_output=True,
+                                               text=True), command, "mpirun")
+    else:
+        result = _served(command)
     if expect_success and result.returncode != 0:
         print(result.stdout)
         print(result.stderr)
         raise SystemExit("tribos failed with exit code %d: %s"
                          % (result.returncode, " ".join(command)))
     return result
+
+
+_servers = {}
+
+
+def _served(command):
+    """subprocess.run(command, capture_output=True, text=True) for a
+    serial run of tribos, by a child of `tribos --fork-server` (see
+    include/tribos/base/fork_server.h): the same program and command line
+    in a process of its own, but without the half second the dynamic
+    linker takes to load deal.II's libraries each time. The server is
+    started at the first run of each executable and ends with the driver.
+    Only with TRIBOS_TEST_FORK_SERVER=1 (ctest sets it: the test suite);
+    otherwise, and for the benchmarks, whose peak memory must count the
+    libraries, every run starts from scratch."""
+    environment = ["%s=%s" % item for item in os.environ.items()]
+    lines = [os.getcwd()] + environment + command[1:]
+    if os.environ.get("TRIBOS_TEST_FORK_SERVER") != "1" or \
+            any("\n" in line for line in lines):
+        return _timed(lambda: subprocess.run(command, capture_output=True,
+                                             text=True), command, "process")
+    return _timed(lambda: _fork(command, environment), command, "forked")
+
+
+def _fork(command, environment):
+    """The run of command as a child of this executable's server."""
+    server = _servers.get(command[0])
+    if server is None or server.poll() is not None:
+        server = subprocess.Popen([command[0], "--fork-server"],
+                                  stdin=subprocess.PIPE,
+                                  stdout=subprocess.PIPE, text=True)
+        _servers[command[0]] = server
+    with tempfile.TemporaryDirectory() as folder:
+        out, err = folder + "/stdout", folder + "/stderr"
+        request = ["run %d" % (len(command) - 1), os.getcwd(), out, err,
+                   str(len(environment))] + environment + command[1:]
+        server.stdin.write("\n".join(request) + "\n")
+        server.stdin.flush()
+        status = server.stdout.readline().split()
+        if len(status) != 2 or status[0] not in ("exit", "signal"):
+            raise SystemExit("FAILED  tribos --fork-server answered %r to %s"
+                             % (" ".join(status), " ".join(command)))
+        code = int(status[1]) if status[0] == "exit" else -int(status[1])
+        with open(out, errors="replace") as f:
+            stdout = f.read()
+        with open(err, errors="replace") as f:
+            stderr = f.read()
+    return subprocess.CompletedProcess(command, code, stdout, stderr)
+
+
+def _timed(launch, command, how):
+    """launch() (a run of command, started as @p how says: "process",
+    "forked" or "mpirun"); with $TRIBOS_TEST_RUN_LOG set, append to that
+    CSV file the driver, its case, how, the run's wall seconds and the
+    command: where a test's time goes."""
+    log = os.environ.get("TRIBOS_TEST_RUN_LOG")
+    if not log:
+        return launch()
+    start = time.perf_counter()
+    result = launch()
+    wall = time.perf_counter() - start
+    driver = os.path.splitext(os.path.basename(sys.argv[0]))[0]
+    case = sys.argv[4] if len(sys.argv) > 4 else ""
+    with open(log, "a") as f:
+        f.write("%s,%s,%s,%.3f,\"%s\"\n" % (
+            driver, case, how, wall, " ".join(command).replace('"', "'")))
+    return result
+
+
+@atexit.register
+def _stop_servers():
+    """End the fork servers (their input closed) with the driver."""
+    for server in _servers.values():
+        server.stdin.close()
+        server.wait()
 
 
 def run_or_hang(tribos, prm, out, sets=(), mpi_ranks=0, timeout=120):
