@@ -13,7 +13,7 @@ namespace tribos
     {
       Vec3<AD> result;
       for (unsigned int d = 0; d < 3; ++d)
-        result[d] = (d < dim ? AD(n, first + d, x[d]) : AD(x[d]));
+        result[d] = (d < dim && n > 0 ? AD(n, first + d, x[d]) : AD(x[d]));
       return result;
     }
 
@@ -75,7 +75,8 @@ namespace tribos
       const unsigned int n_out      = n_displacements + n_unknowns;
       Vec3<AD>           unknowns, force, constraint;
       if (n_unknowns > 0)
-        unknowns = seed<dim>(*slave.unknowns, n_displacements, n_out);
+        unknowns =
+          seed<dim>(*slave.unknowns, n_displacements, K != nullptr ? n_out : 0);
       enforcement.local_law(kinematics,
                             slave.law,
                             n_unknowns > 0 ? &unknowns : nullptr,

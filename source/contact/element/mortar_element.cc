@@ -267,7 +267,9 @@ namespace tribos
                      Vec3<double>         &weighted_point)
   {
     MortarIntegrals<2> &integrals =
-      MortarIntegrals<2>::for_element(input, enforcement.n_node_unknowns());
+      MortarIntegrals<2>::for_element(input,
+                                      enforcement.n_node_unknowns(),
+                                      K != nullptr);
     if (input.n_segment_nodes == 3)
       internal::integrate_quadratic(input,
                                     integrals.xs,

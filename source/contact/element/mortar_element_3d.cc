@@ -268,8 +268,8 @@ namespace tribos
           const MortarFace3D       &c,
           const Piece              &pm)
     {
-      AD y(integrals.n_out, x.val());
-      if (x.size() > 0)
+      AD y(integrals.derivatives ? integrals.n_out : 0, x.val());
+      if (integrals.derivatives && x.size() > 0)
       {
         for (unsigned int t = 0; t < 3 * ps.n; ++t)
           y.fastAccessDx(3 * q[ps.node[t / 3]] + t % 3) = x.dx(t);
@@ -324,7 +324,9 @@ namespace tribos
             MortarOverlapCache::Entry  own;
             MortarOverlapCache::Entry *entry    = &own;
             bool                       computed = false;
-            if (input.cache != nullptr)
+            // (A residual only is not kept: its numbers have no
+            // derivatives.)
+            if (input.cache != nullptr && integrals.derivatives)
             {
               const std::uint64_t key =
                 (std::uint64_t(4 * input.slave_face_id[f] + s) << 32) |
@@ -348,13 +350,17 @@ namespace tribos
                   for (unsigned int k = 0; k < ps.n; ++k)
                     for (unsigned int d = 0; d < 3; ++d)
                       X_face[k][d] =
-                        FaceAD(24, 3 * k + d, input.xs[q[ps.node[k]]][d]);
+                        integrals.derivatives ?
+                          FaceAD(24, 3 * k + d, input.xs[q[ps.node[k]]][d]) :
+                          FaceAD(input.xs[q[ps.node[k]]][d]);
                   plane_face = internal::auxiliary_plane(X_face, ps.n);
                 }
                 Vec3<FaceAD> Y[4];
                 for (unsigned int k = 0; k < pm.n; ++k)
                   for (unsigned int d = 0; d < 3; ++d)
-                    Y[k][d] = FaceAD(24, 12 + 3 * k + d, Y_value[k][d]);
+                    Y[k][d] = integrals.derivatives ?
+                                FaceAD(24, 12 + 3 * k + d, Y_value[k][d]) :
+                                FaceAD(Y_value[k][d]);
                 entry->overlaps =
                   overlap_integrals(*plane_face, ps, q.n, Y, pm, c.n, *entry);
               }
@@ -411,7 +417,9 @@ namespace tribos
                      Vec3<double>         &weighted_point)
   {
     MortarIntegrals<3> &integrals =
-      MortarIntegrals<3>::for_element(input, enforcement.n_node_unknowns());
+      MortarIntegrals<3>::for_element(input,
+                                      enforcement.n_node_unknowns(),
+                                      K != nullptr);
     const AD                                 zero(0.);
     static thread_local std::vector<Overlap> overlaps;
     unsigned int                             n_overlaps = 0;

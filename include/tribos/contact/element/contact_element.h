@@ -93,7 +93,8 @@ namespace tribos
     }
 
     /** @p n entries (dim of them from @p first on) of @p x seeded as
-     * independent AD variables. */
+     * independent AD variables (constants if @p n is 0: a residual
+     * only). */
     template <int dim>
     Vec3<ContactAD>
     seed(const Vec3<double> &x, const unsigned int first, const unsigned int n);

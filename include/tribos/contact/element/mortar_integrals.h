@@ -31,20 +31,27 @@ namespace tribos
      * use are set: an element keeps one object per thread (the arrays
      * hold some 600 AD numbers, whose construction zeroes 2 MB; once per
      * element evaluation that was a third of the 3D mortar's time).
+     * Without @p with_derivatives the numbers are constants: an
+     * evaluation of the residual only (no K) computes the same values
+     * without the derivatives' work.
      */
     void
-    reset(const Input &element_input, const unsigned int n_unknowns)
+    reset(const Input       &element_input,
+          const unsigned int n_unknowns,
+          const bool         with_derivatives)
     {
-      input           = &element_input;
-      n_s             = element_input.n_slave_nodes;
-      n_m             = element_input.n_master_nodes;
-      n_displacements = dim * (n_s + n_m);
-      n_out           = n_displacements + n_unknowns;
+      input                       = &element_input;
+      derivatives                 = with_derivatives;
+      n_s                         = element_input.n_slave_nodes;
+      n_m                         = element_input.n_master_nodes;
+      n_displacements             = dim * (n_s + n_m);
+      n_out                       = n_displacements + n_unknowns;
+      const unsigned int n_seeded = derivatives ? n_out : 0;
       for (unsigned int i = 0; i < n_s; ++i)
-        xs[i] = internal::seed<dim>(element_input.xs[i], dim * i, n_out);
+        xs[i] = internal::seed<dim>(element_input.xs[i], dim * i, n_seeded);
       for (unsigned int l = 0; l < n_m; ++l)
         xm[l] =
-          internal::seed<dim>(element_input.xm[l], dim * (n_s + l), n_out);
+          internal::seed<dim>(element_input.xm[l], dim * (n_s + l), n_seeded);
       const ContactAD zero(0.);
       for (unsigned int i = 0; i < n_s; ++i)
         D[i] = zero;
@@ -55,14 +62,18 @@ namespace tribos
 
     /** This thread's object, reset() for @p element_input. */
     static MortarIntegrals &
-    for_element(const Input &element_input, const unsigned int n_unknowns)
+    for_element(const Input       &element_input,
+                const unsigned int n_unknowns,
+                const bool         with_derivatives)
     {
       static thread_local MortarIntegrals integrals;
-      integrals.reset(element_input, n_unknowns);
+      integrals.reset(element_input, n_unknowns, with_derivatives);
       return integrals;
     }
 
-    const Input    *input = nullptr;
+    const Input *input = nullptr;
+    /** Whether the numbers carry derivatives (see reset()). */
+    bool            derivatives = true;
     unsigned int    n_s = 0, n_m = 0, n_displacements = 0, n_out = 0;
     Vec3<ContactAD> xs[max_slave_nodes], xm[max_master_nodes];
     ContactAD       D[max_slave_nodes], M[max_master_nodes];
