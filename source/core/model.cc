@@ -88,6 +88,7 @@ namespace tribos
                    curved_cells,
                    parameters.finite_element.degree,
                    warnings,
+                   parameters.scene.geometry->mesh_source(),
                    mpi_communicator);
 
     const auto &bc = parameters.boundary_conditions;

@@ -169,9 +169,10 @@ namespace tribos
                       Warnings                        &warnings)
   {
     AssertThrow(triangulation.all_reference_cells_are_simplex(),
-                ExcMessage("Parameter <Scene/Mesh file>: the mesh mixes "
-                           "simplices with quadrilaterals or hexahedra; "
-                           "tribos takes one kind of cell per mesh."));
+                ExcMessage(parameters.scene.geometry->mesh_source() +
+                           ": the mesh mixes simplices with quadrilaterals "
+                           "or hexahedra; tribos takes one kind of cell per "
+                           "mesh."));
     AssertThrow(!parameters.finite_element.f_bar,
                 ExcMessage("Parameter <Finite element/F-bar> = true: F-bar "
                            "is the remedy of Q1 cells. On triangles and "

@@ -24,6 +24,7 @@ namespace tribos
                                 CurvedCells<dim>      &curved_cells,
                                 const unsigned int     degree,
                                 Warnings              &warnings,
+                                const std::string     &mesh_source,
                                 const MPI_Comm         mpi_communicator)
   {
     mapping.reset();
@@ -67,7 +68,11 @@ namespace tribos
     mapping =
       std::make_unique<MappingFEField<dim, dim, Vector>>(dof_handler,
                                                          reference_positions);
-    check_curved_cells(dof_handler, fe, quadrature, mpi_communicator);
+    check_curved_cells(dof_handler,
+                       fe,
+                       quadrature,
+                       mesh_source,
+                       mpi_communicator);
   }
 
 
@@ -78,6 +83,7 @@ namespace tribos
     const DoFHandler<dim> &dof_handler,
     const FESystem<dim>   &fe,
     const Quadrature<dim> &quadrature,
+    const std::string     &mesh_source,
     const MPI_Comm         mpi_communicator) const
   {
     // The Jacobian of the curved map at the quadrature points and at the
@@ -109,7 +115,7 @@ namespace tribos
     for (const auto &message :
          Utilities::MPI::all_gather(mpi_communicator, folded))
       AssertThrow(message.empty(),
-                  ExcMessage("Parameter <Scene/Mesh file>: " + message +
+                  ExcMessage(mesh_source + ": " + message +
                              ": a mid-side node lies too far from the middle "
                              "of its edge. Mesh again (in gmsh, "
                              "'Mesh.HighOrderOptimize = 2;' untangles "

@@ -162,6 +162,12 @@ namespace tribos
       std::vector<std::string>
       describe() const override;
 
+      std::string
+      mesh_source() const override
+      {
+        return deck_name();
+      }
+
       /** What the messages about the deck start with. */
       std::string
       deck_name() const

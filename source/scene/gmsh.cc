@@ -83,6 +83,12 @@ namespace tribos
                           GmshSecondOrder::order<3>(mesh_file);
       }
 
+      std::string
+      mesh_source() const override
+      {
+        return "Parameter <Scene/Mesh file> = <" + mesh_file + ">";
+      }
+
       std::string mesh_file;
     };
 

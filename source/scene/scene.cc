@@ -47,6 +47,14 @@ namespace tribos
 
 
 
+  std::string
+  SceneGeometry::mesh_source() const
+  {
+    return "Parameter <Scene/Name> = <" + name + ">";
+  }
+
+
+
   void
   SceneGeometry::create_curved(const unsigned int refinement,
                                Triangulation<2>  &triangulation,

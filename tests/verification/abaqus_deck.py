@@ -203,13 +203,15 @@ equilibrium("3D deck", solid, 3, 9)
 # (d) Bad input.
 def refused(name, sets, expected):
     """A run with the --set overrides sets: exit 1, every string of expected
-    in the message, no history.csv."""
+    in the message, no history.csv (and no mention of the gmsh scene's
+    Scene/Mesh file)."""
     folder = out + "/" + name
     result = run(tribos, prm_2d, folder, sets, expect_success=False)
     text = result.stdout + result.stderr
     lines = result.stderr.strip().splitlines() or ["(no message)"]
     check(result.returncode == 1 and all(e in text for e in expected)
           and "unknown exception" not in text
+          and "Scene/Mesh file" not in text
           and not os.path.exists(folder + "/history.csv"),
           "%s: exit %d, %s" % (name, result.returncode, lines[-1][-200:]))
 
@@ -290,4 +292,17 @@ for dim, prm, h in ((2, prm_2d, 0.2), (3, prm_3d, 0.1)):
                                         "area" if dim == 2 else "volume",
                                         measure, exact,
                                         abs(measure / exact - 1)))
+
+# A folded second-order cell (the CPE8's top middle node pulled down
+# below its bottom edge, to y = -0.6): refused, the message naming the deck's parameter and file (it
+# named Parameter <Scene/Mesh file>, the gmsh scene's, before).
+folded = out + "/folded.inp"
+curved_deck(folded, 2, -1.6)
+refused("folded_cell",
+        ["Scene/Input deck=" + folded, "Contact/Pairs=",
+         "Boundary conditions/Dirichlet=1 : xy : 0, 0",
+         "Boundary conditions/Body force=0, -100",
+         "Time stepping/Number of steps=1"],
+        ["Parameter <Scene/Input deck> = <%s>: the curved cell" % folded,
+         "is folded"])
 finish()

@@ -33,7 +33,9 @@ namespace tribos
      * Set the geometry of @p curved (own cells) on the dofs of
      * @p dof_handler with Polynomial degree = 2; with degree 1 warn and
      * clear @p curved (the cells stay straight). Refuses a folded cell
-     * (checked at the points of @p quadrature and the nodes). Collective.
+     * (checked at the points of @p quadrature and the nodes), the message
+     * starting with @p mesh_source (SceneGeometry::mesh_source()).
+     * Collective.
      */
     void
     setup(const DoFHandler<dim> &dof_handler,
@@ -44,6 +46,7 @@ namespace tribos
           CurvedCells<dim>      &curved,
           const unsigned int     degree,
           Warnings              &warnings,
+          const std::string     &mesh_source,
           const MPI_Comm         communicator);
 
     /** The mapping of the curved cells; null: straight cells. */
@@ -57,6 +60,7 @@ namespace tribos
     check_curved_cells(const DoFHandler<dim> &dof_handler,
                        const FESystem<dim>   &fe,
                        const Quadrature<dim> &quadrature,
+                       const std::string     &mesh_source,
                        const MPI_Comm         communicator) const;
 
     /** Declared before the mapping, which reads it. */

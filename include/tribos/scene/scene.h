@@ -103,6 +103,15 @@ namespace tribos
     virtual std::vector<std::string>
     describe() const;
 
+    /**
+     * What a message about the mesh the scene made starts with: the
+     * parameter of the file it read (the gmsh scene's "Parameter
+     * <Scene/Mesh file>", the Abaqus deck's "Parameter <Scene/Input deck>
+     * = <file>"); the default names the generated scene by Scene/Name.
+     */
+    virtual std::string
+    mesh_source() const;
+
     /** The scene's Scene/Name. */
     std::string name;
   };
