@@ -31,6 +31,11 @@ namespace tribos
    *   <NAME=value> x M   its whole environment
    *   <argument> x N     its arguments (without the program's name)
    *
+   * The server itself runs nothing but this loop: no MPI, no threads of
+   * its own. The one thread a library starts as it loads (OpenBLAS's
+   * pool) is stopped before each fork by the library's pthread_atfork
+   * handler and started again in the child at its first use.
+   *
    * For each, the server waits for the child and answers on standard
    * output with one line, "exit <status>" or "signal <number>". It ends at
    * the end of its input. Used by the test drivers
