@@ -109,7 +109,7 @@ def _fork(command, environment):
 
 
 def _timed(launch, command, how):
-    """launch() (a run of command, started as @p how says: "process",
+    """launch() (a run of command, started as how says: "process",
     "forked" or "mpirun"); with $TRIBOS_TEST_RUN_LOG set, append to that
     CSV file the driver, its case, how, the run's wall seconds and the
     command: where a test's time goes."""
