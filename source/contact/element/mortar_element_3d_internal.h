@@ -8,6 +8,7 @@
  */
 
 #include <tribos/contact/element/mortar_integrals.h>
+#include <tribos/contact/surface/face_kinds.h>
 
 #include <array>
 
@@ -36,30 +37,13 @@ namespace tribos
                Number (*dN)[2])
     {
       if (n == 3)
-        TriangleFace::shape(xi, N, dN);
+        Triangle3::shape(xi, N, dN);
       else if (n == 4)
-        MasterFace<3>::shape(xi, N, dN);
+        Quadrilateral4::shape(xi, N, dN);
       else if (n == 9)
-      {
-        // The 1D functions of the nodes at -1, 1 and 0, in each direction;
-        // node i sits at (at_1[i], at_2[i]).
-        Number l[2][3], dl[3];
-        for (unsigned int d = 0; d < 2; ++d)
-          quadratic_segment_shape(xi[d], l[d], dl);
-        constexpr unsigned int at_1[9] = {0, 1, 0, 1, 2, 2, 0, 1, 2},
-                               at_2[9] = {0, 0, 1, 1, 0, 1, 2, 2, 2};
-        for (unsigned int i = 0; i < 9; ++i)
-          N[i] = l[0][at_1[i]] * l[1][at_2[i]];
-      }
+        Quadrilateral9::values(xi, N);
       else
-      {
-        const Number l[3] = {1. - xi[0] - xi[1], xi[0], xi[1]};
-        for (unsigned int v = 0; v < 3; ++v)
-        {
-          N[v]     = l[v] * (2. * l[v] - 1.);
-          N[3 + v] = 4. * l[v] * l[(v + 1) % 3];
-        }
-      }
+        Triangle6::values(xi, N);
     }
 
     /**

@@ -1,7 +1,6 @@
 #include <tribos/contact/surface/contact_surface.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/grid/cell_id.h>
 
 #include <algorithm>
@@ -16,29 +15,19 @@ namespace tribos
     const bool                          axisymmetric,
     const Mapping<dim>                 *curved_geometry)
     : ids(boundary_ids)
+    , face_shape(FaceShape::for_cells(
+        dim,
+        dof_handler.get_triangulation().all_reference_cells_are_hyper_cube(),
+        dof_handler.get_fe().degree))
+    , is_curved(curved_geometry != nullptr)
   {
     // Each process orients the faces of its own cells (the normal of
     // MasterFace must point out of the cell) and every process gathers all
     // of them, in the order of their cells (CellId, the same whatever the
     // partition): the surface is small against the mesh, and the search
     // needs every master face.
-    const auto        &fe     = dof_handler.get_fe();
-    const unsigned int degree = fe.degree;
-    AssertThrow(degree == 1 || degree == 2,
-                ExcMessage("Contact surfaces are built for Finite element/"
-                           "Polynomial degree = 1 or 2; this mesh has "
-                           "degree " +
-                           std::to_string(degree) + "."));
-    is_quadratic = (degree == 2);
-    is_quadratic_quads =
-      is_quadratic && dim == 3 &&
-      dof_handler.get_triangulation().all_reference_cells_are_hyper_cube();
-    is_curved = (curved_geometry != nullptr);
     number_nodes(gather_faces(dof_handler, curved_geometry));
-    if (is_curved || is_quadratic_quads)
-      integrate_quadratic_areas(axisymmetric);
-    else
-      integrate_areas(axisymmetric);
+    integrate_areas(axisymmetric);
     find_neighbours();
   }
 
@@ -60,6 +49,8 @@ namespace tribos
 
           // A tetrahedron's faces are triangles (TriangleFace).
           const unsigned int n_vertices = face->n_vertices();
+          AssertThrow(n_vertices == face_shape.n_vertices(),
+                      ExcInternalError());
           std::array<unsigned int, n_face_nodes> order;
           for (unsigned int v = 0; v < n_face_nodes; ++v)
             order[v] = v;
@@ -70,26 +61,19 @@ namespace tribos
             for (unsigned int d = 0; d < dim; ++d)
               x[v][d] = face->vertex(v)[d];
           }
-          Vec3<double> xbar, a[2], normal, outward{{0, 0, 0}};
-          if (n_vertices == 3)
-          {
-            const double xi[2] = {1. / 3, 1. / 3};
-            TriangleFace::geometry(x, xi, xbar, a, normal);
-          }
-          else
-          {
-            const double xi[2] = {0, 0};
-            MasterFace<dim>::geometry(x, xi, xbar, a, normal);
-          }
+          // The normal at the face's centre, of its linear face.
+          Vec3<double> outward{{0, 0, 0}};
           for (unsigned int d = 0; d < dim; ++d)
             outward[d] = face->center()[d] - cell->center()[d];
-          if (dot(normal, outward) < 0)
-          {
-            if (dim == 2)
-              std::swap(order[0], order[1]);
-            else
-              std::swap(order[1], order[2]);
-          }
+          face_shape.template visit<dim>(
+            [&](auto kind)
+            {
+              using Linear = typename decltype(kind)::Linear;
+              Vec3<double> xbar, a[2], normal;
+              Linear::geometry(x, Linear::centre, xbar, a, normal);
+              if (dot(normal, outward) < 0)
+                std::swap(order[Linear::flip[0]], order[Linear::flip[1]]);
+            });
 
           FaceRecord record;
           record.cell       = cell->id().template to_binary<dim>();
@@ -103,7 +87,7 @@ namespace tribos
               record.dofs[v * dim + d] = face->vertex_dof_index(order[v], d);
               record.x[v * dim + d]    = face->vertex(order[v])[d];
             }
-          if (is_quadratic)
+          if (face_shape.n_middles() > 0)
             gather_middles(cell, f, order, curved_geometry, record);
           own.push_back(record);
         }
@@ -158,42 +142,41 @@ namespace tribos
         record.middle_x[m * dim + d]    = x[d];
       }
     };
-    if constexpr (dim == 2)
-    {
-      // The segment's middle: its line's dofs.
-      record.n_middles = 1;
-      set(0, face, n_v + f, face->center());
-      return;
-    }
-    // The middles of the face's edges a-b (oriented order): the six-node
-    // triangle's 0-1, 1-2, 2-0; the nine-node quadrilateral's (lexicographic
-    // like MasterFace) 0-1, 2-3, 0-2, 1-3, then its centre.
-    const bool         triangle    = face->n_vertices() == 3;
-    const unsigned int edges[4][2] = {{0, 1},
-                                      {triangle ? 1u : 2u, triangle ? 2u : 3u},
-                                      {triangle ? 2u : 0u, triangle ? 0u : 2u},
-                                      {1, 3}};
-    const unsigned int n_edges     = triangle ? 3 : 4;
-    record.n_middles               = triangle ? 3 : 5;
-    for (unsigned int e = 0; e < n_edges; ++e)
-    {
-      const unsigned int a = face->vertex_index(order[edges[e][0]]),
-                         b = face->vertex_index(order[edges[e][1]]);
-      bool found           = false;
-      for (unsigned int l = 0; l < cell->n_lines() && !found; ++l)
+    // The middles of the face's edges a-b (oriented order; in 2D the face
+    // is the cell's line), then the nine-node quadrilateral's centre.
+    face_shape.template visit<dim>(
+      [&](auto kind)
       {
-        const auto line = cell->line(l);
-        if ((line->vertex_index(0) == a && line->vertex_index(1) == b) ||
-            (line->vertex_index(0) == b && line->vertex_index(1) == a))
+        using Kind = decltype(kind);
+        if constexpr (Kind::n_middles > 0)
         {
-          set(e, line, n_v + l, line->center());
-          found = true;
+          record.n_middles = Kind::n_middles;
+          for (unsigned int e = 0; e < std::size(Kind::middle_edges); ++e)
+          {
+            const unsigned int a = face->vertex_index(
+                                 order[Kind::middle_edges[e][0]]),
+                               b = face->vertex_index(
+                                 order[Kind::middle_edges[e][1]]);
+            bool found = false;
+            for (unsigned int l = 0; l < cell->n_lines() && !found; ++l)
+            {
+              const auto line = cell->line(l);
+              if ((line->vertex_index(0) == a && line->vertex_index(1) == b) ||
+                  (line->vertex_index(0) == b && line->vertex_index(1) == a))
+              {
+                set(e, line, n_v + l, line->center());
+                found = true;
+              }
+            }
+            AssertThrow(found, ExcInternalError());
+          }
+          if constexpr (Kind::has_centre)
+            set(std::size(Kind::middle_edges),
+                face,
+                n_v + cell->n_lines() + f,
+                face->center());
         }
-      }
-      AssertThrow(found, ExcInternalError());
-    }
-    if (!triangle)
-      set(4, face, n_v + cell->n_lines() + f, face->center());
+      });
   }
 
 
@@ -242,10 +225,18 @@ namespace tribos
         const unsigned int n =
           node_of(&record.middle_dofs[e * dim], &record.middle_x[e * dim]);
         contact_face.middles[e] = n;
-        if (dim == 3 && record.n_vertices == 3)
-          node_list[n].edge = {
-            {static_cast<int>(contact_face.nodes[e]),
-             static_cast<int>(contact_face.nodes[(e + 1) % 3])}};
+        face_shape.template visit<dim>(
+          [&](auto kind)
+          {
+            using Kind = decltype(kind);
+            if constexpr (Kind::n_middles > 0)
+              if constexpr (Kind::middles_as_virtual_points)
+                node_list[n].edge = {
+                  {static_cast<int>(
+                     contact_face.nodes[Kind::middle_edges[e][0]]),
+                   static_cast<int>(
+                     contact_face.nodes[Kind::middle_edges[e][1]])}};
+          });
       }
       face_list.push_back(contact_face);
     }
@@ -257,62 +248,29 @@ namespace tribos
   void
   ContactSurface<dim>::integrate_areas(const bool axisymmetric)
   {
-    // Adjacency and tributary areas (of the faces' shape functions, the
-    // quadratic ones on Q2: h/6, 2h/3, h/6 on a straight face).
-    const QGauss<dim - 1> quadrature(is_quadratic ? 3 : 2);
+    // Adjacency and tributary areas: the integrals of the faces' functions
+    // (e.g. h/6, 2h/3, h/6 on a straight quadratic segment).
     for (unsigned int f = 0; f < face_list.size(); ++f)
     {
       const auto  &face = face_list[f];
-      Vec3<double> x[4];
+      Vec3<double> x[FaceShape::max_nodes];
       for (unsigned int v = 0; v < face.n_nodes(); ++v)
+      {
         node_list[face.node(v)].faces.push_back(f);
-      for (unsigned int v = 0; v < face.n_vertices; ++v)
-        x[v] = node_list[face.nodes[v]].reference;
-      if (face.triangle())
-      {
-        // A flat triangle: each vertex's shape function integrates to a
-        // third of its area. On the six-node triangle the vertex functions
-        // integrate to zero: the areas are those of the modified basis of
-        // the mortar element (Mortar3D), 2 A / 15 and A / 5.
-        const double area  = 0.5 * norm(cross(x[1] - x[0], x[2] - x[0]));
-        const double alpha = TriangleFace::modified_basis_alpha;
-        for (unsigned int v = 0; v < face.n_nodes(); ++v)
-        {
-          const double share = face.n_middles == 0 ? 1. / 3. :
-                               v < 3               ? 2. * alpha / 3. :
-                                                     (1. - 2. * alpha) / 3.;
-          node_list[face.node(v)].area += share * area;
-          node_list[face.node(v)].size += area;
-        }
-        continue;
+        x[v] = node_list[face.node(v)].reference;
       }
-      for (unsigned int q = 0; q < quadrature.size(); ++q)
-      {
-        double xi[2] = {0, 0};
-        for (unsigned int c = 0; c < dim - 1; ++c)
-          xi[c] = 2 * quadrature.point(q)[c] - 1;
-        double N[4] = {}, dN[4][2] = {};
-        MasterFace<dim>::shape(xi, N, dN);
-        if (is_quadratic)
-        {
-          N[0] = 0.5 * xi[0] * (xi[0] - 1.);
-          N[1] = 0.5 * xi[0] * (xi[0] + 1.);
-          N[2] = 1. - xi[0] * xi[0];
-        }
-        Vec3<double> xbar, a[2], normal;
-        MasterFace<dim>::geometry(x, xi, xbar, a, normal);
-        const double jacobian =
-          (dim == 2 ? norm(a[0]) : norm(cross(a[0], a[1])));
-        // Weights of [0,1]^(dim-1) times 2^(dim-1) for [-1,1].
-        const double weight = quadrature.weight(q) * (dim == 2 ? 2. : 4.);
-        const double ring   = axisymmetric ? 2 * numbers::PI * xbar[0] : 1.;
-        for (unsigned int v = 0; v < face.n_nodes(); ++v)
-        {
-          node_list[face.node(v)].area += N[v] * jacobian * weight * ring;
-          // The face's measure (without the ring), shared by its nodes.
-          node_list[face.node(v)].size += jacobian * weight;
-        }
-      }
+      face_shape.integrate(x,
+                           axisymmetric,
+                           is_curved,
+                           [&](const unsigned int v,
+                               const double       area,
+                               const double       measure)
+                           {
+                             node_list[face.node(v)].area += area;
+                             // The face's measure (without the ring),
+                             // shared by its nodes.
+                             node_list[face.node(v)].size += measure;
+                           });
     }
     // Element size at a node: the mean measure of its faces (length in 2D,
     // the square root of the area in 3D). Inside a uniform surface it is
@@ -330,181 +288,24 @@ namespace tribos
 
 
 
-  namespace
-  {
-    const QGauss<1> &
-    line_rule()
-    {
-      static const QGauss<1> rule(4);
-      return rule;
-    }
-
-    const QGauss<2> &
-    square_rule()
-    {
-      static const QGauss<2> rule(4);
-      return rule;
-    }
-
-    const QGaussSimplex<2> &
-    triangle_rule()
-    {
-      static const QGaussSimplex<2> rule(4);
-      return rule;
-    }
-
-    /** The number of points of quadratic_face_point()'s rule. */
-    unsigned int
-    n_quadratic_face_points(const unsigned int n_nodes)
-    {
-      return n_nodes == 3 ? line_rule().size() :
-             n_nodes == 6 ? triangle_rule().size() :
-                            square_rule().size();
-    }
-
-    /**
-     * At point @p q of the reference face of @p n_nodes nodes (3: the
-     * segment through nodes 0, middle, 1; 6: the six-node triangle; 9: the
-     * nine-node quadrilateral), the nodes' functions @p N (the six-node
-     * triangle's modified basis), the position @p xq on the face through
-     * @p x and the measure of the face there times the rule's weight
-     * (returned). Rules: 4-point Gauss on segments and per direction on
-     * quadrilaterals, the 4-point-per-direction simplex rule on triangles.
-     */
-    double
-    quadratic_face_point(const unsigned int  n_nodes,
-                         const Vec3<double> *x,
-                         const unsigned int  q,
-                         double             *N,
-                         Vec3<double>       &xq)
-    {
-      double dN[9][2]     = {};
-      xq                  = {{0, 0, 0}};
-      Vec3<double> a[2]   = {{{0, 0, 0}}, {{0, 0, 0}}};
-      double       weight = 0;
-      if (n_nodes == 3)
-      {
-        double dL[3];
-        quadratic_segment_shape(2 * line_rule().point(q)[0] - 1, N, dL);
-        for (unsigned int i = 0; i < 3; ++i)
-          dN[i][0] = dL[i];
-        weight = 2 * line_rule().weight(q);
-      }
-      else if (n_nodes == 6)
-      {
-        const Point<2> &p        = triangle_rule().point(q);
-        const double    L[3]     = {1 - p[0] - p[1], p[0], p[1]};
-        const double    dL[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
-        for (unsigned int v = 0; v < 3; ++v)
-        {
-          const unsigned int w = (v + 1) % 3;
-          N[v]                 = L[v] * (2 * L[v] - 1);
-          N[3 + v]             = 4 * L[v] * L[w];
-          for (unsigned int k = 0; k < 2; ++k)
-          {
-            dN[v][k]     = (4 * L[v] - 1) * dL[v][k];
-            dN[3 + v][k] = 4 * (dL[v][k] * L[w] + L[v] * dL[w][k]);
-          }
-        }
-        weight = triangle_rule().weight(q);
-      }
-      else
-      {
-        // Node i is the product of the 1D functions a(i) in xi_1 and b(i)
-        // in xi_2 (0: -1, 1: +1, 2: middle): vertices (lexicographic),
-        // middles of 0-1, 2-3, 0-2, 1-3, centre.
-        const unsigned int a_of[9] = {0, 1, 0, 1, 2, 2, 0, 1, 2};
-        const unsigned int b_of[9] = {0, 0, 1, 1, 0, 1, 2, 2, 2};
-        double             L1[3], dL1[3], L2[3], dL2[3];
-        quadratic_segment_shape(2 * square_rule().point(q)[0] - 1, L1, dL1);
-        quadratic_segment_shape(2 * square_rule().point(q)[1] - 1, L2, dL2);
-        for (unsigned int i = 0; i < 9; ++i)
-        {
-          N[i]     = L1[a_of[i]] * L2[b_of[i]];
-          dN[i][0] = dL1[a_of[i]] * L2[b_of[i]];
-          dN[i][1] = L1[a_of[i]] * dL2[b_of[i]];
-        }
-        weight = 4 * square_rule().weight(q);
-      }
-      for (unsigned int i = 0; i < n_nodes; ++i)
-      {
-        xq = xq + scale(N[i], x[i]);
-        for (unsigned int k = 0; k < 2; ++k)
-          a[k] = a[k] + scale(dN[i][k], x[i]);
-      }
-      if (n_nodes == 6)
-      {
-        // The modified basis: a vertex takes alpha of both its edges'
-        // middle functions.
-        const double alpha = TriangleFace::modified_basis_alpha;
-        double       P2[6];
-        std::copy(N, N + 6, P2);
-        for (unsigned int v = 0; v < 3; ++v)
-          N[v] = P2[v] + alpha * (P2[3 + v] + P2[3 + (v + 2) % 3]);
-        for (unsigned int e = 0; e < 3; ++e)
-          N[3 + e] = (1 - 2 * alpha) * P2[3 + e];
-      }
-      return weight * (n_nodes == 3 ? norm(a[0]) : norm(cross(a[0], a[1])));
-    }
-  } // namespace
-
-
-
-  template <int dim>
-  void
-  ContactSurface<dim>::integrate_quadratic_areas(const bool axisymmetric)
-  {
-    // Quadratic faces only (the constructor builds no other curved ones,
-    // and nine-node quadrilaterals have no other path).
-    for (unsigned int f = 0; f < face_list.size(); ++f)
-    {
-      const auto        &face    = face_list[f];
-      const unsigned int n_nodes = face.n_nodes();
-      Vec3<double>       x[9];
-      for (unsigned int v = 0; v < n_nodes; ++v)
-      {
-        node_list[face.node(v)].faces.push_back(f);
-        x[v] = node_list[face.node(v)].reference;
-      }
-      const unsigned int n_points = n_quadratic_face_points(n_nodes);
-      for (unsigned int q = 0; q < n_points; ++q)
-      {
-        double       N[9];
-        Vec3<double> xq;
-        const double weight = quadratic_face_point(n_nodes, x, q, N, xq);
-        const double ring   = axisymmetric ? 2 * numbers::PI * xq[0] : 1.;
-        for (unsigned int v = 0; v < n_nodes; ++v)
-        {
-          node_list[face.node(v)].area += N[v] * weight * ring;
-          node_list[face.node(v)].size += weight;
-        }
-      }
-    }
-    for (auto &node : node_list)
-    {
-      node.size /= node.faces.size();
-      if (dim == 3)
-        node.size = std::sqrt(node.size);
-    }
-  }
-
-
-
   template <int dim>
   void
   ContactSurface<dim>::find_neighbours()
   {
-    // Local node numbers along each edge: 2D ends; 3D edges of xi_1 = -+1
-    // (nodes 0,2 / 1,3) and xi_2 = -+1 (nodes 0,1 / 2,3); triangles: xi_1 =
-    // 0 (nodes 0,2), xi_2 = 0 (nodes 0,1), xi_1 + xi_2 = 1 (nodes 1,2).
-    using Edges                   = std::vector<std::vector<unsigned int>>;
-    const Edges edge_nodes[3]     = {(dim == 2 ? Edges{{0}, {1}} :
-                                                 Edges{{0, 2}, {1, 3}}),
-                                     Edges{{0, 1}, {2, 3}},
-                                     Edges{}};
-    const Edges triangle_edges[3] = {Edges{{0, 2}, {}},
-                                     Edges{{0, 1}, {}},
-                                     Edges{{}, {1, 2}}};
+    // The vertices on each edge of the linear face, per local coordinate
+    // and side (-1 where there are none).
+    int          edges[3][2][2] = {};
+    unsigned int n_c            = 0;
+    face_shape.template visit<dim>(
+      [&](auto kind)
+      {
+        using Linear = typename decltype(kind)::Linear;
+        n_c          = Linear::n_edge_coordinates;
+        for (unsigned int c = 0; c < n_c; ++c)
+          for (unsigned int side = 0; side < 2; ++side)
+            for (unsigned int i = 0; i < 2; ++i)
+              edges[c][side][i] = Linear::edge_nodes[c][side][i];
+      });
     for (unsigned int f = 0; f < face_list.size(); ++f)
     {
       auto                  &face = face_list[f];
@@ -515,20 +316,20 @@ namespace tribos
             neighbours.insert(g);
       face.neighbours.assign(neighbours.begin(), neighbours.end());
 
-      const Edges       *edges = face.triangle() ? triangle_edges : edge_nodes;
-      const unsigned int n_c   = face.triangle() ? 3 : dim - 1;
       for (unsigned int c = 0; c < n_c; ++c)
         for (unsigned int side = 0; side < 2; ++side)
         {
-          if (side >= edges[c].size() || edges[c][side].empty())
+          if (edges[c][side][0] < 0)
             continue;
           // Another face contains every node of this edge.
           for (const unsigned int g : face.neighbours)
           {
             bool        shares_all = true;
             const auto &other      = face_list[g];
-            for (const unsigned int local : edges[c][side])
+            for (const int local : edges[c][side])
             {
+              if (local < 0)
+                continue;
               const unsigned int n = face.nodes[local];
               shares_all =
                 shares_all &&

@@ -1,6 +1,7 @@
 #ifndef tribos_contact_contact_surface_h
 #define tribos_contact_contact_surface_h
 
+#include <tribos/contact/surface/face_shape.h>
 #include <tribos/contact/surface/master_face.h>
 #include <tribos/contact/surface/vec3.h>
 
@@ -19,7 +20,7 @@ namespace tribos
 
   /**
    * The faces and nodes of a boundary part (one or more boundary ids) of a
-   * Q1 or P1 mesh, or of a Q2 or P2 mesh in 2D, as seen by contact: as a slave,
+   * Q1, P1, Q2 or P2 mesh, as seen by contact: as a slave,
    * its nodes with their tributary areas; as a master, its faces (vertex order
    * such that the normal of MasterFace points out of the body) with their
    * neighbours. Built once from the reference configuration; positions are
@@ -155,27 +156,35 @@ namespace tribos
       return face_list;
     }
 
+    /** The kind of the surface's faces, one for all of them. */
+    const FaceShape &
+    shape() const
+    {
+      return face_shape;
+    }
+
     /** Whether the faces are six-node triangles (Node::edge is set at
      * their middles). */
     bool
     quadratic_triangles() const
     {
-      return is_quadratic && dim == 3 && !is_quadratic_quads;
+      return face_shape == FaceShape::of<Triangle6>();
     }
 
     /** Whether the faces are nine-node quadrilaterals (Q2 hexahedra). */
     bool
     quadratic_quadrilaterals() const
     {
-      return is_quadratic_quads;
+      return face_shape == FaceShape::of<Quadrilateral9>();
     }
 
     /** Whether the faces are quadratic (Face::middles are set). */
     bool
     quadratic() const
     {
-      return is_quadratic;
+      return face_shape.degree() == 2;
     }
+
     /** Body ids of the cells adjacent to this surface. */
     const std::set<types::material_id> &
     bodies() const
@@ -241,15 +250,10 @@ namespace tribos
     number_nodes(const std::vector<FaceRecord> &records);
 
     /** The nodes' faces, tributary areas (@p axisymmetric: of the surface
-     * of revolution) and element sizes. */
+     * of revolution; curved faces on their own geometry: FaceShape::
+     * integrate()) and element sizes. */
     void
     integrate_areas(const bool axisymmetric);
-
-    /** integrate_areas() on curved quadratic faces and on nine-node
-     * quadrilaterals: the integrals of the faces' functions (the six-node
-     * triangle's modified basis) over the faces' own quadratic geometry. */
-    void
-    integrate_quadratic_areas(const bool axisymmetric);
 
     /** The faces' neighbours, the edges where the surface continues, and
      * (2D) the nodes beyond a face's ends. */
@@ -257,12 +261,11 @@ namespace tribos
     find_neighbours();
 
     std::set<types::boundary_id> ids;
+    FaceShape                    face_shape;
     std::vector<Node>            node_list;
     std::vector<Face>            face_list;
     std::set<types::material_id> body_ids;
-    bool                         is_quadratic       = false;
-    bool                         is_quadratic_quads = false;
-    bool                         is_curved          = false;
+    bool                         is_curved = false;
   };
 } // namespace tribos
 
