@@ -85,7 +85,8 @@ segment_element(const Vec3<double> &x,
   }
   face.projection = projection;
   face.same_face  = same_face;
-  face.triangle   = triangle;
+  face.shape =
+    triangle ? FaceShape::of<Triangle3>() : FaceShape::of<LinearFace<dim>>();
   return NodeToSegment<dim>::evaluate(
     slave_input(x, committed, law, area, consistent, unknowns),
     face,

@@ -74,7 +74,7 @@ random_input(std::mt19937                           &random,
   };
   if (quadratic)
   {
-    input.n_segment_nodes   = 3;
+    input.shape             = FaceShape::of<Segment3>();
     const unsigned int kind = (sample / 4) % 3;
     if (kind == 0 && !one_segment)
     {

@@ -328,13 +328,14 @@ namespace
     const auto faceted_forces = [&](const Setup &setup)
     {
       FaceInput<3> input;
-      input.triangle = setup.shape.triangle();
+      input.shape = setup.shape.triangle() ? FaceShape::of<Triangle3>() :
+                                             FaceShape::of<Quadrilateral4>();
       for (unsigned int v = 0; v < setup.shape.n_vertices; ++v)
       {
         input.x[v]     = surface.x[setup.stencil[v]];
         input.x_old[v] = input.x[v];
       }
-      input.projection = input.triangle ?
+      input.projection = setup.shape.triangle() ?
                            project_triangle(slave, input.x, false) :
                            project<3>(slave, input.x, false);
       SlaveInput si;

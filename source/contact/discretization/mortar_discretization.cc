@@ -333,11 +333,12 @@ namespace tribos
     const auto local = internal::local_number;
     slave_stencil(pair, k, slave_nodes);
     // 2 nodes per segment on Q1, 3 (the ends, then the middle) on Q2.
-    input.n_segment_nodes = pair.slave->quadratic() ? 3 : 2;
+    input.shape                        = pair.slave->shape();
+    const unsigned int n_segment_nodes = input.shape.n_nodes();
     for (const unsigned int f : pair.slave->nodes()[k].faces)
     {
       auto &segment = input.slave_segment[input.n_slave_segments++];
-      for (unsigned int v = 0; v < input.n_segment_nodes; ++v)
+      for (unsigned int v = 0; v < n_segment_nodes; ++v)
         segment[v] = local(slave_nodes, pair.slave->faces()[f].node(v));
     }
     // More master nodes than the element holds: refused, with the reason.
@@ -359,7 +360,7 @@ namespace tribos
     for (const unsigned int f : faces_of_node[k])
     {
       std::array<unsigned int, 3> segment{};
-      for (unsigned int v = 0; v < input.n_segment_nodes; ++v)
+      for (unsigned int v = 0; v < n_segment_nodes; ++v)
         segment[v] = local(master_nodes, pair.master->faces()[f].node(v));
       if (too_many())
         return false;

@@ -55,14 +55,13 @@ namespace tribos
       Vec3<double> xm[4];
       for (unsigned int v = 0; v < faces[f].n_vertices; ++v)
         xm[v] = pair.master_positions[faces[f].nodes[v]];
-      if (faces[f].triangle())
-        return project_triangle(x, xm, clamp);
-      return project<dim>(x, xm, clamp);
+      return pair.master->shape().template visit_linear<dim>(
+        [&](auto kind) { return decltype(kind)::project(x, xm, clamp); });
     };
-    const auto within_band = [&](const unsigned int f, const Projection &p)
+    const auto within_band = [&](const unsigned int, const Projection &p)
     {
-      return faces[f].triangle() ? TriangleFace::within(p.xi, edge_band) :
-                                   MasterFace<dim>::within(p.xi, edge_band);
+      return pair.master->shape().template visit_linear<dim>(
+        [&](auto kind) { return decltype(kind)::within(p.xi, edge_band); });
     };
 
     // Keep the face of the last evaluation while the node projects onto it
@@ -168,7 +167,7 @@ namespace tribos
     const int      face  = state.face;
     FaceInput<dim> input;
     const auto    &nodes = pair.master->faces()[face].nodes;
-    input.triangle       = pair.master->faces()[face].triangle();
+    input.shape          = pair.master->shape();
     for (unsigned int v = 0; v < pair.master->faces()[face].n_vertices; ++v)
     {
       input.x[v]     = pair.master_positions[nodes[v]];

@@ -195,8 +195,8 @@ namespace tribos
 
   namespace
   {
-    /** NodeToSegment::evaluate() on a master face of shape @p Face
-     * (MasterFace<dim> or TriangleFace). */
+    /** NodeToSegment::evaluate() on a master face of the linear kind
+     * @p Face (face_kinds.h). */
     template <int dim, class Face>
     ContactPointResult
     evaluate_on_face(const SlaveInput       &slave,
@@ -346,18 +346,15 @@ namespace tribos
                                double                 *R,
                                double                 *K)
   {
-    if constexpr (dim == 3)
-      if (face.triangle)
-        return evaluate_on_face<3, TriangleFace>(slave,
-                                                 face,
-                                                 enforcement,
-                                                 R,
-                                                 K);
-    return evaluate_on_face<dim, MasterFace<dim>>(slave,
-                                                  face,
-                                                  enforcement,
-                                                  R,
-                                                  K);
+    return face.shape.template visit_linear<dim>(
+      [&](auto kind)
+      {
+        return evaluate_on_face<dim, decltype(kind)>(slave,
+                                                     face,
+                                                     enforcement,
+                                                     R,
+                                                     K);
+      });
   }
 
 

@@ -114,15 +114,15 @@ namespace tribos
         x_committed[v] = xm[input.committed_vertices[v]];
       const auto rotate = [&](const Vec3<double> &w)
       {
-        if (input.n_committed_vertices == 3)
-          return rotate_with_face<TriangleFace>(input.committed_old,
-                                                x_committed,
-                                                committed.result.xi,
-                                                to<AD>(w));
-        return rotate_with_face<MasterFace<3>>(input.committed_old,
-                                               x_committed,
-                                               committed.result.xi,
-                                               to<AD>(w));
+        // The committed face is of the surface's one kind.
+        return input.face.kind.visit_linear<3>(
+          [&](auto kind)
+          {
+            return rotate_with_face<decltype(kind)>(input.committed_old,
+                                                    x_committed,
+                                                    committed.result.xi,
+                                                    to<AD>(w));
+          });
       };
       kinematics.committed = turn(rotate(committed.result.normal),
                                   normal,

@@ -270,20 +270,24 @@ namespace tribos
       MortarIntegrals<2>::for_element(input,
                                       enforcement.n_node_unknowns(),
                                       K != nullptr);
-    if (input.n_segment_nodes == 3)
-      internal::integrate_quadratic(input,
-                                    integrals.xs,
-                                    integrals.xm,
-                                    integrals.D,
-                                    integrals.M,
-                                    integrals.normal_j);
-    else
-      integrate_linear(input,
-                       integrals.xs,
-                       integrals.xm,
-                       integrals.D,
-                       integrals.M,
-                       integrals.normal_j);
+    input.shape.visit<2>(
+      [&](auto kind)
+      {
+        if constexpr (std::is_same_v<decltype(kind), Segment3>)
+          internal::integrate_quadratic(input,
+                                        integrals.xs,
+                                        integrals.xm,
+                                        integrals.D,
+                                        integrals.M,
+                                        integrals.normal_j);
+        else
+          integrate_linear(input,
+                           integrals.xs,
+                           integrals.xm,
+                           integrals.D,
+                           integrals.M,
+                           integrals.normal_j);
+      });
     return internal::finish_mortar<2>(slave,
                                       enforcement,
                                       integrals,

@@ -89,27 +89,25 @@ namespace tribos
     elements.clear();
     owner.clear();
     elements.reserve(faces.size() * Primitives<dim>::per_face);
-    for (const unsigned int f : faces)
-    {
-      const auto &n = surface.faces()[f].nodes;
-      if constexpr (dim == 2)
-        elements.emplace_back(point(positions[n[0]]), point(positions[n[1]]));
-      else if (surface.faces()[f].triangle())
-        elements.emplace_back(point(positions[n[0]]),
-                              point(positions[n[1]]),
-                              point(positions[n[2]]));
-      else
+    // A face by its vertices: a segment, or its linear face's triangles.
+    surface.shape().template visit<dim>(
+      [&](auto kind)
       {
-        // Lexicographic quad 0 1 / 2 3 as triangles (0,1,3), (0,3,2).
-        elements.emplace_back(point(positions[n[0]]),
-                              point(positions[n[1]]),
-                              point(positions[n[3]]));
-        elements.emplace_back(point(positions[n[0]]),
-                              point(positions[n[3]]),
-                              point(positions[n[2]]));
-      }
-      owner.resize(elements.size(), f);
-    }
+        using Linear = typename decltype(kind)::Linear;
+        for (const unsigned int f : faces)
+        {
+          const auto &n = surface.faces()[f].nodes;
+          if constexpr (dim == 2)
+            elements.emplace_back(point(positions[n[0]]),
+                                  point(positions[n[1]]));
+          else
+            for (const auto &t : Linear::search_triangles)
+              elements.emplace_back(point(positions[n[t[0]]]),
+                                    point(positions[n[t[1]]]),
+                                    point(positions[n[t[2]]]));
+          owner.resize(elements.size(), f);
+        }
+      });
     tree->tree.clear();
     tree->tree.insert(elements.cbegin(), elements.cend());
     tree->tree.build();

@@ -3,6 +3,7 @@
 
 #include <tribos/contact/enforcement/enforcement.h>
 #include <tribos/contact/state/node_state.h>
+#include <tribos/contact/surface/face_shape.h>
 #include <tribos/contact/surface/master_face.h>
 #include <tribos/contact/surface/rigid_surface.h>
 #include <tribos/contact/surface/smoothed_face.h>
@@ -153,9 +154,8 @@ namespace tribos
     Vec3<double> x[4], x_old[4];
     Projection   projection;
     bool         same_face = false;
-    /** 3D: the face is a triangle (TriangleFace, nodes x[0..2]), else a
-     * MasterFace. */
-    bool triangle = false;
+    /** The face's kind, a linear one (nodes x[0..n_vertices)). */
+    FaceShape shape = FaceShape::of<LinearFace<dim>>();
   };
 
   /** A segment of a smoothed 2D master: x_0, x_1, the node before, the

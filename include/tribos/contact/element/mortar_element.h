@@ -35,9 +35,9 @@ namespace tribos
     unsigned int n_master_segments = 0;
     std::array<unsigned int, 3> master_segment[max_mortar_master_nodes];
 
-    /** Nodes per segment, slave and master: 2 (straight, Q1) or 3
-     * (quadratic, Q2: the ends, then the middle). */
-    unsigned int n_segment_nodes = 2;
+    /** The segments' kind, slave and master: Segment2 (Q1, P1) or
+     * Segment3 (Q2, P2: the ends, then the middle). */
+    FaceShape shape = FaceShape::of<Segment2>();
 
     /** Mortar basis = dual (else standard). */
     bool dual = true;
@@ -170,7 +170,7 @@ namespace tribos
 
     /**
      * The integrals of Mortar2D::evaluate() on quadratic segments (Q2,
-     * input.n_segment_nodes = 3): the node's weights @p D on the slave
+     * input.shape Segment3): the node's weights @p D on the slave
      * nodes and @p M on the master nodes and its unnormalized normal
      * @p normal_j, from the positions @p xs, @p xm (seeded AD numbers;
      * D, M and normal_j start at zero). Slave and master are the curves x(xi) =

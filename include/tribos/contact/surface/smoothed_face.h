@@ -1,6 +1,7 @@
 #ifndef tribos_contact_smoothed_face_h
 #define tribos_contact_smoothed_face_h
 
+#include <tribos/contact/surface/face_shape.h>
 #include <tribos/contact/surface/master_face.h>
 #include <tribos/contact/surface/vec3.h>
 
@@ -55,6 +56,8 @@ namespace tribos
       unsigned int corner     = 0;
     };
 
+    /** The face's kind: Quadrilateral4 or Triangle3. */
+    FaceShape    kind       = FaceShape::of<Quadrilateral4>();
     unsigned int n_vertices = 4;
     unsigned int n_nodes    = 4;
     Corner       fan[4][max_fan];
@@ -86,6 +89,8 @@ namespace tribos
       for (unsigned int i = 0; i < stencil.size(); ++i)
         local[stencil[i]] = i;
       shape.n_vertices = vertices.size();
+      shape.kind       = shape.n_vertices == 3 ? FaceShape::of<Triangle3>() :
+                                                 FaceShape::of<Quadrilateral4>();
       shape.n_nodes    = stencil.size();
       for (unsigned int a = 0; a < vertices.size(); ++a)
       {
@@ -113,7 +118,7 @@ namespace tribos
     bool
     triangle() const
     {
-      return n_vertices == 3;
+      return kind.triangle();
     }
 
     /**
@@ -162,10 +167,7 @@ namespace tribos
     void
     shape(const Number *xi, Number *N, Number (*dN)[2]) const
     {
-      if (triangle())
-        TriangleFace::shape(xi, N, dN);
-      else
-        MasterFace<3>::shape(xi, N, dN);
+      kind.visit_linear<3>([&](auto k) { decltype(k)::shape(xi, N, dN); });
     }
 
     /**
@@ -252,10 +254,10 @@ namespace tribos
     {
       Vec3<double> nodal[4];
       nodal_normals(x, nodal);
-      const Projection start = triangle() ? project_triangle(point, x, false) :
-                                            tribos::project<3>(point, x, false);
-      xi[0]                  = start.xi[0];
-      xi[1]                  = start.xi[1];
+      const Projection start = kind.visit_linear<3>(
+        [&](auto k) { return decltype(k)::project(point, x, false); });
+      xi[0] = start.xi[0];
+      xi[1] = start.xi[1];
       Vec3<double> xbar, a[2], n, dn[2];
       field(x, nodal, xi, xbar, a, n, dn);
       g = dot(point - xbar, n) / dot(n, n);
@@ -304,8 +306,8 @@ namespace tribos
     bool
     within(const double *xi, const double band) const
     {
-      return triangle() ? TriangleFace::within(xi, band) :
-                          MasterFace<3>::within(xi, band);
+      return kind.visit_linear<3>([&](auto k)
+                                  { return decltype(k)::within(xi, band); });
     }
 
     /** How far @p xi lies outside the face (0 inside), in the units of
@@ -313,9 +315,8 @@ namespace tribos
     double
     outside(const double *xi) const
     {
-      if (triangle())
-        return 2 * std::max({0., -xi[0], -xi[1], xi[0] + xi[1] - 1.});
-      return std::max({0., std::abs(xi[0]) - 1., std::abs(xi[1]) - 1.});
+      return kind.visit_linear<3>([&](auto k)
+                                  { return decltype(k)::outside(xi); });
     }
   };
 } // namespace tribos
