@@ -229,6 +229,10 @@ namespace tribos
      * a corner two entries are set.
      */
     int clamped[3] = {0, 0, 0};
+    /** Explicit, so that every byte of a Projection is defined: a
+     * NodeState, which holds one, is written to checkpoints as bytes, and
+     * the compiler's padding here would carry whatever a copy left. */
+    int padding = 0;
     /** Distance between the point and xbar(xi). */
     double distance = 0;
     bool
@@ -258,6 +262,8 @@ namespace tribos
       return true;
     }
   };
+  static_assert(sizeof(Projection) == 40,
+                "Projection has no padding (it is written to checkpoints)");
 
 
 
