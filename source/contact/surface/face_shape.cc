@@ -64,14 +64,8 @@ namespace tribos
         double xi[2] = {0, 0};
         for (unsigned int c = 0; c < n_coords; ++c)
           xi[c] = 2 * quadrature.point(q)[c] - 1;
-        double N[4] = {}, dN[4][2] = {};
-        Linear::shape(xi, N, dN);
-        if constexpr (K::degree == 2)
-        {
-          N[0] = 0.5 * xi[0] * (xi[0] - 1.);
-          N[1] = 0.5 * xi[0] * (xi[0] + 1.);
-          N[2] = 1. - xi[0] * xi[0];
-        }
+        double N[K::n_nodes];
+        K::values(xi, N);
         Vec3<double> xbar, a[2], normal;
         Linear::geometry(x, xi, xbar, a, normal);
         const double jacobian =

@@ -65,12 +65,6 @@ namespace tribos
       /** The number of vertices: n_face_nodes, or 3 for the triangle face
        * of a tetrahedron (TriangleFace; nodes[3] is then not used). */
       unsigned int n_vertices = n_face_nodes;
-      /** Whether the face is a triangle (TriangleFace). */
-      bool
-      triangle() const
-      {
-        return n_vertices == 3;
-      }
       /**
        * Quadratic faces: the nodes at the middles of its edges, -1 on
        * linear faces. 2D Q2 or P2: one, the face is the quadratic segment
@@ -161,14 +155,6 @@ namespace tribos
     shape() const
     {
       return face_shape;
-    }
-
-    /** Whether the faces are six-node triangles (Node::edge is set at
-     * their middles). */
-    bool
-    quadratic_triangles() const
-    {
-      return face_shape == FaceShape::of<Triangle6>();
     }
 
     /** Whether the faces are nine-node quadrilaterals (Q2 hexahedra). */
