@@ -159,6 +159,22 @@ namespace tribos
 
   template <int dim>
   void
+  ContactHandler<dim>::start_at(const TrilinosWrappers::MPI::Vector &solution,
+                                const double                         time)
+  {
+    update(solution, time);
+    for (auto &pair : contact_pairs)
+    {
+      pair.old_slave_positions  = pair.slave_positions;
+      pair.old_master_positions = pair.master_positions;
+    }
+    committed_time = time;
+  }
+
+
+
+  template <int dim>
+  void
   ContactHandler<dim>::begin_increment()
   {
     monitor.begin_increment(contact_pairs);

@@ -13,6 +13,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/distributed/shared_tria.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
@@ -266,6 +267,74 @@ namespace tribos
                               triangulation,
                               curved_cells);
     }
+
+
+    /**
+     * Adaptivity/Enable: the scene built on every process (a coarse scene
+     * is small and its generator deterministic) and its cells made the
+     * coarse cells of the p4est mesh @p triangulation, with the scene's
+     * manifolds (new vertices of a refined curved surface lie on it).
+     */
+    template <int dim>
+    void
+    create_adaptive_scene(const Parameters::AllParameters  &parameters,
+                          parallel::TriangulationBase<dim> &triangulation)
+    {
+      const MPI_Comm     mpi_communicator = triangulation.get_communicator();
+      const double       memory           = machines_memory(mpi_communicator);
+      Triangulation<dim> serial;
+      CurvedCells<dim>   curved;
+      create_scene(parameters,
+                   serial,
+                   curved,
+                   [&](const unsigned int n)
+                   { check_mesh_size<dim>(parameters, n, memory); });
+      const std::string refused =
+        "Parameter <Adaptivity/Enable> = true: the scene's cells become the "
+        "coarse cells of a p4est mesh, ";
+      AssertThrow(serial.all_reference_cells_are_hyper_cube(),
+                  ExcMessage(refused +
+                             "which must be quadrilaterals or hexahedra "
+                             "(deal.II 9.4 has no hanging nodes on "
+                             "triangles and tetrahedra); the mesh of the "
+                             "scene has simplices."));
+      AssertThrow(curved.empty(),
+                  ExcMessage(refused +
+                             "whose geometry is their vertices and the "
+                             "scene's manifolds; a second-order mesh file's "
+                             "curved cells are not carried over a "
+                             "refinement yet. Use a first-order mesh."));
+      AssertThrow(!serial.has_hanging_nodes(),
+                  ExcMessage(refused + "which must be conforming; the scene <" +
+                             parameters.scene.name +
+                             "> refines locally (hanging nodes): set its "
+                             "local refinement to 0 (e.g. Contact "
+                             "refinements, Box refinements) and let the "
+                             "adaptation refine."));
+      GridGenerator::flatten_triangulation(serial, triangulation);
+      for (const auto id : serial.get_manifold_ids())
+        if (id != numbers::flat_manifold_id)
+          triangulation.set_manifold(id, serial.get_manifold(id));
+
+      // A cell with a slave face weighs more in p4est's partition (as in
+      // METIS', Parallel/Contact cell weight).
+      const unsigned int weight = parameters.parallel.contact_cell_weight;
+      if (weight > 1)
+      {
+        const auto slave_ids = parameters.contact.slave_boundary_ids();
+        triangulation.signals.weight.connect(
+          [weight, slave_ids](
+            const typename Triangulation<dim>::cell_iterator &cell,
+            const typename Triangulation<dim>::CellStatus) -> unsigned int
+          {
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() &&
+                  slave_ids.count(face->boundary_id()) == 1)
+                return weight;
+            return 1;
+          });
+      }
+    }
   } // namespace
 
 
@@ -275,6 +344,10 @@ namespace tribos
   make_triangulation(const Parameters::AllParameters &parameters,
                      const MPI_Comm                   mpi_communicator)
   {
+    if (parameters.adaptivity.enable)
+      return std::make_unique<parallel::distributed::Triangulation<dim>>(
+        mpi_communicator,
+        Triangulation<dim>::limit_level_difference_at_vertices);
     if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
       return std::make_unique<parallel::shared::Triangulation<dim>>(
         mpi_communicator);
@@ -294,7 +367,9 @@ namespace tribos
   {
     const MPI_Comm mpi_communicator = triangulation.get_communicator();
     curved_cells                    = {};
-    if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
+    if (parameters.adaptivity.enable)
+      create_adaptive_scene(parameters, triangulation);
+    else if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
     {
       const double memory = machines_memory(mpi_communicator);
       create_scene(parameters,

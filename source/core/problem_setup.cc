@@ -76,7 +76,15 @@ namespace tribos
   {
     TimerOutput::Scope t(timer, "setup");
     model.distribute_dofs();
+    setup_physics();
+  }
 
+
+
+  template <int dim>
+  void
+  Problem<dim>::setup_physics()
+  {
     material_state =
       std::make_unique<MaterialState<dim>>(parameters,
                                            model.triangulation(),

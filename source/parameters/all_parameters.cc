@@ -31,6 +31,7 @@ namespace tribos
       Output::declare_parameters(prm);
       Parallel::declare_parameters(prm);
       Verification::declare_parameters(prm);
+      Adaptivity::declare_parameters(prm);
     }
 
 
@@ -90,6 +91,57 @@ namespace tribos
                   dealii::ExcMessage(
                     "Parameter <Verification/Exact displacement> needs " +
                     std::to_string(dimension) + " expressions or none."));
+      adaptivity.parse_parameters(prm);
+      if (adaptivity.enable)
+        check_adaptivity();
+    }
+
+
+
+    void
+    AllParameters::check_adaptivity() const
+    {
+      // What an adaptive run does not carry over a change of the mesh yet
+      // is refused, not lost.
+      const auto refuse = [](const bool ok, const std::string &what)
+      {
+        AssertThrow(ok,
+                    dealii::ExcMessage(
+                      "Parameter <Adaptivity/Enable> = true: " + what));
+      };
+      refuse(!time_stepping.dynamic(),
+             "quasi-static runs only (the velocity and acceleration are not "
+             "carried over a change of the mesh); set Time stepping/"
+             "Integrator = static.");
+      refuse(parallel.mesh == Parallel::Mesh::distributed,
+             "the mesh is a p4est mesh, distributed; Parallel/Mesh = shared "
+             "is not allowed.");
+      refuse(parallel.rebalance_threshold == 0,
+             "an adaptation partitions the mesh again itself; Parallel/"
+             "Rebalance threshold must be 0.");
+      refuse(!finite_element.split_into_simplices,
+             "deal.II 9.4 has no hanging nodes on triangles and tetrahedra; "
+             "Finite element/Cells must be as meshed, on quadrilaterals or "
+             "hexahedra.");
+      refuse(output.checkpoint_every == 0,
+             "checkpoints of an adapted mesh are not written yet; set "
+             "Output/Checkpoint every = 0.");
+      for (const auto &pair : contact.pairs)
+      {
+        refuse(pair.friction_coefficient == 0,
+               "the pair <" + pair.text +
+                 "> has friction, whose stick points are not carried over a "
+                 "change of the mesh yet; frictionless pairs only.");
+        refuse(pair.method == "penalty" || pair.method == "lagrange multiplier",
+               "the pair <" + pair.text + "> uses <" + pair.method +
+                 ">, whose multipliers are not carried over a change of the "
+                 "mesh yet; penalty or lagrange multiplier.");
+        refuse(dimension == 2 || pair.master_boundary.empty(),
+               "the pair <" + pair.text +
+                 "> has a deformable master in 3D, whose faces would get "
+                 "hanging nodes the master surface does not join yet; a "
+                 "rigid master in 3D.");
+      }
     }
 
 

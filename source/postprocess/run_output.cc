@@ -105,6 +105,16 @@ namespace tribos
 
   template <int dim>
   void
+  RunOutput<dim>::mesh_changed()
+  {
+    if (problem.contact() != nullptr)
+      contact_output = std::make_unique<ContactOutput<dim>>(*problem.contact());
+  }
+
+
+
+  template <int dim>
+  void
   RunOutput<dim>::print(const std::string &line)
   {
     pcout << line << std::endl;

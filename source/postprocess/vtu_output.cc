@@ -246,6 +246,11 @@ namespace tribos
     if (problem.materials().any_history())
       data_out.add_data_vector(cells.plastic_strain, "PEEQ");
     data_out.add_data_vector(cells.body_id, "body_id");
+    // Adaptivity: the indicator that decided the mesh change after this
+    // output (when one was computed on this mesh).
+    if (problem.error_indicator().size() ==
+        model.triangulation().n_active_cells())
+      data_out.add_data_vector(problem.error_indicator(), "error_indicator");
     ContactFields<dim> contact_fields(model.triangulation(), model.fe());
     if (contact_output)
       add_contact_fields(model,

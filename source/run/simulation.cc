@@ -46,6 +46,11 @@ namespace tribos
   {
     run_clock.restart();
     problem.setup(last_rebalance.count > 0 ? &last_rebalance.weights : nullptr);
+    AssertThrow(!parameters.adaptivity.enable ||
+                  parameters.restart_directory.empty(),
+                ExcMessage("--restart with Adaptivity/Enable = true: "
+                           "checkpoints of an adapted mesh are not written "
+                           "yet, so there is none to go on from."));
     if (!parameters.restart_directory.empty())
     {
       restart = std::make_unique<Checkpoint>();
@@ -173,6 +178,7 @@ namespace tribos
     t.linear_solver               = linear_solver.get();
     t.largest_stabilization_ratio = problem.stabilization().largest_ratio();
     t.n_rebalances                = last_rebalance.count;
+    t.n_adaptations               = n_adaptations;
     t.rebalance_step              = last_rebalance.step;
     t.imbalance                   = last_rebalance.imbalance;
     return t;
@@ -226,6 +232,10 @@ namespace tribos
     output->step_completed(record);
     const unsigned int step    = record.step;
     const unsigned int n_steps = parameters.time_stepping.n_steps;
+    // The indicator that decides the adaptation after the step goes into
+    // its output.
+    if (adapts_after(step))
+      problem.estimate_error();
     if (parameters.output.is_output_step(step, n_steps))
       output->write_step(step, record.time);
     const unsigned int every = parameters.output.checkpoint_every;

@@ -65,6 +65,17 @@ namespace tribos
         }
         IncrementReport report =
           solve_increment(problem, observer, next, guess);
+        if (observer.redo_increment(step, sums.n_increments + 1, next))
+        {
+          // Back to the committed state, which the new discretization
+          // takes over; the increment again on it, without a guess.
+          problem.solution() = s.converged;
+          problem.solution_changed();
+          problem.restore();
+          observer.change_discretization(s.time);
+          discretization_changed(problem, s);
+          continue;
+        }
         problem.commit(next);
         s.plain_start = false;
         // Every linear solve since the last accepted increment: this
@@ -201,6 +212,23 @@ namespace tribos
       record.elapsed     = elapsed;
       record.eta = elapsed / (s.time - start.time) * (ts.end_time - s.time);
       observer.step_completed(record);
+      if (observer.change_after_step(step))
+      {
+        observer.change_discretization(s.time);
+        discretization_changed(problem, s);
+      }
     }
+  }
+
+
+
+  void
+  LoadStepper::discretization_changed(IncrementalProblem &problem, Stepping &s)
+  {
+    // The unknowns are others: no change to extrapolate from.
+    s.converged               = problem.solution();
+    s.change_increment        = 0;
+    s.plain_start             = false;
+    progress.change_increment = 0;
   }
 } // namespace tribos

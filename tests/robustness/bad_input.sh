@@ -303,6 +303,25 @@ expect gmsh_boundary_ids "boundary ids are 0, 1, 2 (a gmsh mesh's" "$tribos" \
 # faces of a process's ghost layer are boundary faces with id 0, and -np 2
 # accepted a condition on boundary 0 of a mesh whose sides are tagged 1-4
 # (it constrained nothing).
+# Adaptivity (issue 58): what an adaptive run cannot carry over is refused.
+adaptive=(--set "Adaptivity/Enable=true")
+expect adaptivity_local_refinement "refines locally (hanging nodes)" \
+  "$tribos" "$parameters/hertz_2d.prm" "${adaptive[@]}"
+expect adaptivity_simplices "no hanging nodes on triangles and tetrahedra" \
+  "$tribos" "$good" "${adaptive[@]}" --set "Finite element/Cells=simplices"
+expect adaptivity_friction "has friction, whose stick points" \
+  "$tribos" "$tests/sliding_block.prm" "${adaptive[@]}"
+expect adaptivity_dynamics "quasi-static runs only" \
+  "$tribos" "$parameters/bar_impact.prm" "${adaptive[@]}"
+expect adaptivity_shared "Parallel/Mesh = shared" \
+  "$tribos" "$good" "${adaptive[@]}" --set "Parallel/Mesh=shared"
+expect adaptivity_gmsh_triangles "must be quadrilaterals or hexahedra" \
+  "$tribos" "$tests/gmsh_import.prm" "${adaptive[@]}" \
+  --set "Scene/Mesh file=$tests/triangles.msh"
+expect adaptivity_levels "<Adaptivity/Minimum level> = 3" \
+  "$tribos" "$good" "${adaptive[@]}" --set "Adaptivity/Minimum level=3" \
+  --set "Adaptivity/Maximum level=2"
+
 mpirun=${MPIEXEC:-mpirun}
 if command -v "$mpirun" > /dev/null; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

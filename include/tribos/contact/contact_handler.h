@@ -191,6 +191,11 @@ namespace tribos
     void
     load_committed_state(const std::vector<char> &state, const double time);
 
+    /** Start from @p solution at @p time with the pairs' initial state (a
+     * new mesh: the search pairs the nodes again from the geometry). */
+    void
+    start_at(const TrilinosWrappers::MPI::Vector &solution, const double time);
+
     /** Start an increment (the chattering remedy's counts). */
     void
     begin_increment();

@@ -11,6 +11,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/distributed/tria_base.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -18,6 +19,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <memory>
 #include <vector>
@@ -28,7 +30,8 @@ namespace tribos
 
   /**
    * The discretization of all bodies of a scene: one mesh (parallel::shared
-   * or parallel::fullydistributed, Parallel/Mesh), its reference geometry
+   * or parallel::fullydistributed, Parallel/Mesh; a p4est
+   * parallel::distributed one that adapts, Adaptivity), its reference geometry
    * (curved cells), the finite element and Gauss rules of its cell kind, one
    * DoFHandler, who holds which unknowns (UnknownsLayout), the constraints
    * (hanging nodes, Dirichlet, symmetry) and the dofs of each Dirichlet
@@ -136,7 +139,33 @@ namespace tribos
     std::vector<std::vector<double>>
     rigid_body_modes() const;
 
+    /**
+     * Adaptivity: flag the cells by @p indicator (per active cell) with
+     * the strategy, the levels and the dof budget of the subsection
+     * Adaptivity. True if some cell is flagged. Collective.
+     */
+    bool
+    mark(const dealii::Vector<float> &indicator);
+
+    /**
+     * Refine and coarsen the flagged cells (p4est partitions the mesh
+     * again) and distribute the dofs on them (distribute_dofs()). The
+     * ghosted dof vectors @p fields are interpolated to the new dofs and
+     * returned (owned entries; hanging nodes interpolated); @p cell_data
+     * (per active cell, a cell's quadrature-point values, [point][value])
+     * is replaced by the new cells': a child's point takes the parent's
+     * nearest point, a parent's point its child's nearest (copies, so a
+     * homogeneous state stays homogeneous). Collective.
+     */
+    std::vector<Vector>
+    adapt(const std::vector<const Vector *> &fields,
+          std::vector<std::vector<double>>  &cell_data);
+
   private:
+    /** The p4est mesh of Adaptivity/Enable. */
+    parallel::distributed::Triangulation<dim> &
+    adaptive_triangulation();
+
     const Parameters::AllParameters &parameters;
     MPI_Comm                         mpi_communicator;
     TimerOutput                     &timer;

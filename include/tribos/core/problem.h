@@ -161,6 +161,32 @@ namespace tribos
     std::vector<double>
     reaction_forces() const;
 
+    /**
+     * Adaptivity: the error indicator of the current state (per active
+     * cell, error_indicator()), kept for the output. Collective.
+     */
+    const dealii::Vector<float> &
+    estimate_error();
+    /** The last estimate_error() (empty before one). */
+    const dealii::Vector<float> &
+    error_indicator() const
+    {
+      return indicator;
+    }
+    /** Adaptivity: flag the cells by the last estimate_error()
+     * (Model::mark()); true if some cell is flagged. Collective. */
+    bool
+    mark_cells();
+    /**
+     * Adaptivity: refine and coarsen the flagged cells and carry the state
+     * over: the solution, which must be the committed one at @p time, and
+     * the converged plastic history. The contact pairs are built again on
+     * the new surfaces and pair their nodes again from the geometry; the
+     * contact multipliers start from zero. Collective.
+     */
+    void
+    adapt(const double time);
+
     /** What a restart sets (Checkpointer::read()); what a change of the
      * mesh will carry over. */
     struct State
@@ -181,6 +207,10 @@ namespace tribos
     /* problem_setup.cc */
     void
     setup_system();
+    /** The materials, bulk terms, contact, unknowns, sparsity and vectors
+     * on the Model's dofs (after distribute_dofs(), or an adaptation). */
+    void
+    setup_physics();
     /** What the contact adds to the unknowns (its ghosts, dofs and
      * multipliers), for Model::set_unknowns(). */
     ContactUnknowns
@@ -228,6 +258,8 @@ namespace tribos
     std::unique_ptr<ContactHandler<dim>> contact_handler;
     /** Dynamics (null: quasi-static). */
     std::unique_ptr<DynamicsState<dim>> dynamics_state;
+    /** The last error indicator (Adaptivity). */
+    dealii::Vector<float> indicator;
   };
 } // namespace tribos
 

@@ -1,6 +1,7 @@
 #ifndef tribos_parameters_all_parameters_h
 #define tribos_parameters_all_parameters_h
 
+#include <tribos/parameters/adaptivity.h>
 #include <tribos/parameters/boundary_conditions.h>
 #include <tribos/parameters/contact.h>
 #include <tribos/parameters/finite_element.h>
@@ -42,6 +43,7 @@ namespace tribos
       Output             output;
       Parallel           parallel;
       Verification       verification;
+      Adaptivity         adaptivity;
 
       /** Warnings about the input itself (e.g. a file that sets nothing),
        * reported by the run with its own. */
@@ -53,6 +55,11 @@ namespace tribos
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+    private:
+      /** Refuse what an adaptive run cannot do (Adaptivity/Enable). */
+      void
+      check_adaptivity() const;
     };
 
     /**

@@ -37,7 +37,9 @@ namespace tribos
     double largest_stabilization_ratio = 0;
     /** Rebalances so far, the step of the last and its contact time's
      * max/min over the processes. */
-    unsigned int n_rebalances   = 0;
+    unsigned int n_rebalances = 0;
+    /** Changes of the mesh (Adaptivity). */
+    unsigned int n_adaptations  = 0;
     unsigned int rebalance_step = 0;
     double       imbalance      = 0;
   };
@@ -81,6 +83,10 @@ namespace tribos
     /** Print @p line on the console (first process). */
     void
     print(const std::string &line);
+
+    /** The mesh changed (Adaptivity): the contact pairs are new. */
+    void
+    mesh_changed();
 
     /** Write contact-NNNNN.csv and the VTU of nominal step @p step at
      * @p time (Output/Write VTU). */

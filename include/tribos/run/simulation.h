@@ -90,8 +90,22 @@ namespace tribos
     message(const std::string &text) override;
     void
     failed(const std::string &reason) override;
+    /* SolverObserver: Adaptivity (adaptation.cc) */
+    bool
+    redo_increment(const unsigned int step,
+                   const unsigned int increment,
+                   const double       time) override;
+    bool
+    change_after_step(const unsigned int step) override;
+    void
+    change_discretization(const double time) override;
 
   private:
+    /** Whether the mesh adapts at the end of nominal step @p step
+     * (Adaptivity/Every; not after the last). */
+    bool
+    adapts_after(const unsigned int step) const;
+
     /** The solvers of the run (AMG gets the rigid-body modes as its
      * near-null space). */
     void
@@ -135,8 +149,11 @@ namespace tribos
     /** The rebalance this run goes on from (count 0: none), whether it may
      * rebalance, and the own times and the wall clock at the last step's
      * end. */
-    Rebalance     last_rebalance;
-    bool          may_rebalance        = true;
+    Rebalance last_rebalance;
+    bool      may_rebalance = true;
+    /** Adaptivity: the first increment's solves so far that changed the
+     * mesh (Initial cycles), and the changes of the mesh in all. */
+    unsigned int  n_initial_cycles = 0, n_adaptations = 0;
     double        contact_time_at_step = 0, assembly_time_at_step = 0;
     dealii::Timer step_clock, run_clock;
   };

@@ -185,6 +185,11 @@ namespace tribos
                  const unsigned int  step,
                  Stepping           &s);
 
+    /** The problem's unknowns were replaced (another discretization):
+     * the stepping goes on from them, without extrapolation. */
+    void
+    discretization_changed(IncrementalProblem &problem, Stepping &s);
+
     const Parameters::TimeStepping &parameters;
     NewtonSolver                   &newton;
     StepperTotals                   sums;

@@ -102,6 +102,40 @@ namespace tribos
     {
     }
 
+    /**
+     * Increment @p increment of nominal step @p step, ending at @p time,
+     * converged and is not yet committed: true to solve it again on
+     * another discretization, which the observer has chosen (from this
+     * solution) and change_discretization() makes once the problem is
+     * back at its committed state.
+     */
+    virtual bool
+    redo_increment(const unsigned int /*step*/,
+                   const unsigned int /*increment*/,
+                   const double /*time*/)
+    {
+      return false;
+    }
+
+    /** After step_completed() of nominal step @p step: true to change the
+     * discretization now (change_discretization()). */
+    virtual bool
+    change_after_step(const unsigned int /*step*/)
+    {
+      return false;
+    }
+
+    /**
+     * Make the change of discretization that redo_increment() or
+     * change_after_step() chose: the problem's unknowns, at its committed
+     * state at @p time, are replaced by those of the new one (another
+     * size).
+     */
+    virtual void
+    change_discretization(const double /*time*/)
+    {
+    }
+
     /** Something for the user (a cutback, the linear solver's name). */
     virtual void
     message(const std::string & /*text*/)

@@ -1,0 +1,174 @@
+#include <tribos/core/error_indicator.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace tribos
+{
+  namespace
+  {
+    /** Per pair and slave node: pressure, gap and whether closed, from the
+     * process that owns the node (every process gets all of them). */
+    template <int dim>
+    std::vector<std::array<double, 3>>
+    node_values(const ContactPair<dim> &pair, const MPI_Comm communicator)
+    {
+      std::vector<std::array<double, 4>> mine;
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        if (pair.owned[k])
+        {
+          const auto  &state = pair.current[k];
+          const double gap   = std::isfinite(state.distance) ?
+                                 state.distance :
+                                 std::numeric_limits<double>::max();
+          mine.push_back({{static_cast<double>(k),
+                           state.closed() ? state.result.pressure : 0.,
+                           state.closed() ? state.result.gap : gap,
+                           state.closed() ? 1. : 0.}});
+        }
+      std::vector<std::array<double, 3>> values(
+        pair.n_nodes(),
+        {{0, std::numeric_limits<double>::max(), 0}});
+      for (const auto &part : Utilities::MPI::all_gather(communicator, mine))
+        for (const auto &v : part)
+          values[static_cast<unsigned int>(v[0])] = {{v[1], v[2], v[3]}};
+      return values;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  dealii::Vector<float>
+  error_indicator(const Parameters::Adaptivity        &parameters,
+                  const Model<dim>                    &model,
+                  const TrilinosWrappers::MPI::Vector &displacement,
+                  const MaterialState<dim>            &materials,
+                  const ContactHandler<dim>           *contact)
+  {
+    const auto    &tria         = model.triangulation();
+    const MPI_Comm communicator = model.communicator();
+    const auto     scaled       = [&](dealii::Vector<float> &eta)
+    {
+      const double largest =
+        Utilities::MPI::max(eta.linfty_norm(), communicator);
+      if (largest > 0)
+        eta /= largest;
+    };
+
+    dealii::Vector<float> bulk(tria.n_active_cells());
+    if (parameters.kelly)
+    {
+      KellyErrorEstimator<dim>::estimate(model.mapping(),
+                                         model.dof_handler(),
+                                         model.face_quadrature(),
+                                         {},
+                                         displacement,
+                                         bulk,
+                                         ComponentMask(),
+                                         nullptr,
+                                         numbers::invalid_unsigned_int,
+                                         tria.locally_owned_subdomain());
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          bulk[cell->active_cell_index()] *=
+            materials.youngs_modulus(cell->material_id());
+      scaled(bulk);
+    }
+
+    // The contact indicator per cell (by CellId: a master face's cell may
+    // be another process's).
+    std::map<CellId, float> per_cell;
+    if (contact != nullptr && parameters.contact_weight > 0)
+      for (const auto &pair : contact->pairs())
+      {
+        const auto  values  = node_values(pair, communicator);
+        const auto &surface = *pair.slave;
+        double      p_max   = 0;
+        for (const auto &v : values)
+          p_max = std::max(p_max, std::abs(v[0]));
+        std::vector<float> at_node(pair.n_nodes(), 0);
+        for (const auto &face : surface.faces())
+        {
+          double       p_low  = std::numeric_limits<double>::max();
+          double       p_high = -p_low, size = 0;
+          unsigned int n_closed = 0;
+          bool         closing  = false;
+          for (unsigned int i = 0; i < face.n_nodes(); ++i)
+          {
+            const auto &v = values[face.node(i)];
+            p_low         = std::min(p_low, v[0]);
+            p_high        = std::max(p_high, v[0]);
+            n_closed += v[2] > 0 ? 1 : 0;
+            size = std::max(size, surface.nodes()[face.node(i)].size);
+          }
+          for (unsigned int i = 0; i < face.n_nodes(); ++i)
+          {
+            const auto &v = values[face.node(i)];
+            if (v[2] == 0 && v[1] < parameters.closing_gap_factor * size)
+              closing = true;
+          }
+          const float eta =
+            (p_max > 0 ? (p_high - p_low) / p_max : 0.) +
+            (n_closed > 0 && n_closed < face.n_nodes() ? 1. : 0.) +
+            (closing ? 1. : 0.);
+          auto &cell = per_cell[CellId(face.cell)];
+          cell       = std::max(cell, eta);
+          for (unsigned int i = 0; i < face.n_nodes(); ++i)
+            at_node[face.node(i)] = std::max(at_node[face.node(i)], eta);
+        }
+        // The master faces the owned nodes are paired with.
+        if (pair.master)
+        {
+          std::vector<std::pair<CellId::binary_type, float>> mine;
+          for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+            if (pair.owned[k] && pair.current[k].paired &&
+                pair.current[k].face >= 0 && at_node[k] > 0)
+              mine.emplace_back(pair.master->faces()[pair.current[k].face].cell,
+                                at_node[k]);
+          for (const auto &part :
+               Utilities::MPI::all_gather(communicator, mine))
+            for (const auto &[id, eta] : part)
+            {
+              auto &cell = per_cell[CellId(id)];
+              cell       = std::max(cell, eta);
+            }
+        }
+      }
+    dealii::Vector<float> on_contact(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const auto found = per_cell.find(cell->id());
+        if (found != per_cell.end())
+          on_contact[cell->active_cell_index()] = found->second;
+      }
+    scaled(on_contact);
+
+    const double          a = parameters.kelly ? parameters.contact_weight : 1;
+    dealii::Vector<float> eta(tria.n_active_cells());
+    for (unsigned int i = 0; i < eta.size(); ++i)
+      eta[i] = (1 - a) * bulk[i] + a * on_contact[i];
+    return eta;
+  }
+
+
+
+  template dealii::Vector<float>
+  error_indicator<2>(const Parameters::Adaptivity &,
+                     const Model<2> &,
+                     const TrilinosWrappers::MPI::Vector &,
+                     const MaterialState<2> &,
+                     const ContactHandler<2> *);
+  template dealii::Vector<float>
+  error_indicator<3>(const Parameters::Adaptivity &,
+                     const Model<3> &,
+                     const TrilinosWrappers::MPI::Vector &,
+                     const MaterialState<3> &,
+                     const ContactHandler<3> *);
+} // namespace tribos

@@ -1,0 +1,252 @@
+/**
+ * The Model's adaptation (Adaptivity): flag the cells by an error
+ * indicator, refine and coarsen the p4est mesh, and carry dof vectors and
+ * quadrature-point data over to the new cells.
+ */
+
+#include <tribos/core/model.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/cell_data_transfer.templates.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/distributed/tria.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace tribos
+{
+  namespace
+  {
+    /**
+     * For each point of @p to (points of a cell's quadrature mapped into
+     * one reference cell), the index of the nearest point of @p from.
+     */
+    template <int dim>
+    std::vector<unsigned int>
+    nearest_points(const std::vector<Point<dim>> &from,
+                   const std::vector<Point<dim>> &to)
+    {
+      std::vector<unsigned int> nearest(to.size());
+      for (unsigned int i = 0; i < to.size(); ++i)
+      {
+        double best = std::numeric_limits<double>::max();
+        for (unsigned int j = 0; j < from.size(); ++j)
+          if (to[i].distance_square(from[j]) < best - 1e-14)
+          {
+            best       = to[i].distance_square(from[j]);
+            nearest[i] = j;
+          }
+      }
+      return nearest;
+    }
+
+    /** Quadrature point @p x of child @p child (isotropic refinement of a
+     * quadrilateral or hexahedron) in its parent's reference cell. */
+    template <int dim>
+    Point<dim>
+    in_parent(const Point<dim> &x, const unsigned int child)
+    {
+      Point<dim> y;
+      for (unsigned int d = 0; d < dim; ++d)
+        y[d] = 0.5 * (x[d] + ((child >> d) & 1));
+      return y;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  parallel::distributed::Triangulation<dim> &
+  Model<dim>::adaptive_triangulation()
+  {
+    auto *tria = dynamic_cast<parallel::distributed::Triangulation<dim> *>(
+      triangulation_storage.get());
+    AssertThrow(tria != nullptr,
+                ExcInternalError("adaptation needs Adaptivity/Enable"));
+    return *tria;
+  }
+
+
+
+  template <int dim>
+  bool
+  Model<dim>::mark(const dealii::Vector<float> &indicator)
+  {
+    auto       &tria        = adaptive_triangulation();
+    const auto &a           = parameters.adaptivity;
+    using Strategy          = Parameters::Adaptivity::Strategy;
+    namespace refinement    = parallel::distributed::GridRefinement;
+    const auto apply_levels = [&]()
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          if (cell->level() >= static_cast<int>(a.maximum_level))
+            cell->clear_refine_flag();
+          if (cell->level() <= static_cast<int>(a.minimum_level))
+            cell->clear_coarsen_flag();
+        }
+    };
+    if (a.strategy == Strategy::fixed_fraction)
+      refinement::refine_and_coarsen_fixed_fraction(tria,
+                                                    indicator,
+                                                    a.refine_fraction,
+                                                    a.coarsen_fraction);
+    else
+      refinement::refine_and_coarsen_fixed_number(tria,
+                                                  indicator,
+                                                  a.refine_fraction,
+                                                  a.coarsen_fraction);
+    apply_levels();
+
+    // Counted as p4est will carry them out (a cell is coarsened only with
+    // all its siblings, and the levels of neighbours differ by one).
+    const auto count = [&]()
+    {
+      tria.prepare_coarsening_and_refinement();
+      unsigned long refine = 0, coarsen = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          refine += cell->refine_flag_set() ? 1 : 0;
+          coarsen += cell->coarsen_flag_set() ? 1 : 0;
+        }
+      return std::make_pair(Utilities::MPI::sum(refine, mpi_communicator),
+                            Utilities::MPI::sum(coarsen, mpi_communicator));
+    };
+    auto [n_refine, n_coarsen] = count();
+
+    // The dof budget: dofs grow about as the cells do.
+    const double n_cells    = tria.n_global_active_cells();
+    const double n_children = GeometryInfo<dim>::max_children_per_cell;
+    if (a.maximum_dofs > 0)
+    {
+      const double per_cell = dofs.n_dofs() / n_cells;
+      const double expected =
+        per_cell * (n_cells + n_refine * (n_children - 1) -
+                    n_coarsen * (1 - 1 / n_children));
+      if (expected > a.maximum_dofs)
+      {
+        const double room = a.maximum_dofs / per_cell - n_cells +
+                            n_coarsen * (1 - 1 / n_children);
+        const double fraction = std::max(0., room / (n_children - 1)) / n_cells;
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+          {
+            cell->clear_refine_flag();
+            cell->clear_coarsen_flag();
+          }
+        refinement::refine_and_coarsen_fixed_number(tria,
+                                                    indicator,
+                                                    std::min(fraction,
+                                                             a.refine_fraction),
+                                                    n_coarsen / n_cells);
+        apply_levels();
+        std::tie(n_refine, n_coarsen) = count();
+      }
+    }
+    return n_refine + n_coarsen > 0;
+  }
+
+
+
+  template <int dim>
+  std::vector<TrilinosWrappers::MPI::Vector>
+  Model<dim>::adapt(const std::vector<const Vector *> &fields,
+                    std::vector<std::vector<double>>  &cell_data)
+  {
+    auto &tria = adaptive_triangulation();
+
+    // Quadrature-point data: a child's point takes the value of the
+    // parent's point nearest to it, a parent's point that of the nearest
+    // point of the child it lies in. Copies, not averages: a homogeneous
+    // state stays exactly homogeneous, and a plastic state stays on its
+    // manifold (det C_p = 1), which an average would leave.
+    const std::vector<Point<dim>> &points = cell_quadrature.get_points();
+    const unsigned int             n_q    = points.size();
+    const unsigned int n_children = GeometryInfo<dim>::max_children_per_cell;
+    std::vector<std::vector<unsigned int>>             from_parent(n_children);
+    std::vector<std::pair<unsigned int, unsigned int>> from_children(n_q);
+    for (unsigned int c = 0; c < n_children; ++c)
+    {
+      std::vector<Point<dim>> mapped;
+      for (const auto &x : points)
+        mapped.push_back(in_parent(x, c));
+      from_parent[c] = nearest_points(points, mapped);
+    }
+    for (unsigned int q = 0; q < n_q; ++q)
+    {
+      unsigned int child = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        child |= (points[q][d] >= 0.5 ? 1u : 0u) << d;
+      std::vector<Point<dim>> mapped;
+      for (const auto &x : points)
+        mapped.push_back(in_parent(x, child));
+      from_children[q] = {child, nearest_points(mapped, {points[q]})[0]};
+    }
+    using Data = std::vector<double>;
+    const auto refine =
+      [&](const typename Triangulation<dim>::cell_iterator &, const Data parent)
+    {
+      std::vector<Data> children(n_children);
+      if (parent.empty())
+        return children;
+      const unsigned int n = parent.size() / n_q;
+      for (unsigned int c = 0; c < n_children; ++c)
+        for (unsigned int q = 0; q < n_q; ++q)
+          children[c].insert(children[c].end(),
+                             parent.begin() + from_parent[c][q] * n,
+                             parent.begin() + (from_parent[c][q] + 1) * n);
+      return children;
+    };
+    const auto coarsen = [&](const typename Triangulation<dim>::cell_iterator &,
+                             const std::vector<Data> &children)
+    {
+      Data parent;
+      if (children[0].empty())
+        return parent;
+      const unsigned int n = children[0].size() / n_q;
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const auto &[c, p] = from_children[q];
+        AssertThrow(children[c].size() == n * n_q,
+                    ExcInternalError("cells of one parent with different "
+                                     "materials"));
+        parent.insert(parent.end(),
+                      children[c].begin() + p * n,
+                      children[c].begin() + (p + 1) * n);
+      }
+      return parent;
+    };
+
+    tria.prepare_coarsening_and_refinement();
+    parallel::distributed::SolutionTransfer<dim, Vector> transfer(dofs);
+    transfer.prepare_for_coarsening_and_refinement(fields);
+    parallel::distributed::
+      CellDataTransfer<dim, dim, std::vector<std::vector<double>>>
+        data_transfer(tria, true, refine, coarsen);
+    data_transfer.prepare_for_coarsening_and_refinement(cell_data);
+
+    tria.execute_coarsening_and_refinement();
+    distribute_dofs();
+
+    std::vector<Vector>   result(fields.size());
+    std::vector<Vector *> out;
+    for (auto &v : result)
+    {
+      v.reinit(layout_.locally_owned_dofs, mpi_communicator);
+      out.push_back(&v);
+    }
+    transfer.interpolate(out);
+    cell_data.assign(tria.n_active_cells(), {});
+    data_transfer.unpack(cell_data);
+    return result;
+  }
+
+
+
+  template class Model<2>;
+  template class Model<3>;
+} // namespace tribos

@@ -1,0 +1,83 @@
+/**
+ * Problem's adaptation (Adaptivity): the error indicator of the current
+ * state, and the change of the mesh with the state carried over.
+ */
+
+#include <tribos/core/error_indicator.h>
+#include <tribos/core/problem.h>
+
+#include <deal.II/base/mpi.h>
+
+namespace tribos
+{
+  template <int dim>
+  const dealii::Vector<float> &
+  Problem<dim>::estimate_error()
+  {
+    TimerOutput::Scope t(timer, "adaptation");
+    indicator = tribos::error_indicator(parameters.adaptivity,
+                                        model,
+                                        displacement(),
+                                        *material_state,
+                                        contact_handler.get());
+    return indicator;
+  }
+
+
+
+  template <int dim>
+  bool
+  Problem<dim>::mark_cells()
+  {
+    TimerOutput::Scope t(timer, "adaptation");
+    AssertThrow(indicator.size() == model.triangulation().n_active_cells(),
+                ExcInternalError("marking without a current indicator"));
+    return model.mark(indicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::adapt(const double committed_time)
+  {
+    TimerOutput::Scope t(timer, "adaptation");
+
+    // The converged plastic history of the own cells.
+    const auto                      &tria = model.triangulation();
+    std::vector<std::vector<double>> history(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned() && material_state->has_history(cell))
+        history[cell->active_cell_index()] = material_state->cell_history(cell);
+
+    const std::vector<Vector> fields = model.adapt({&displacement()}, history);
+    indicator.reinit(0);
+    {
+      TimerOutput::Scope t_setup(timer, "setup");
+      setup_physics();
+    }
+
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned() && material_state->has_history(cell))
+        AssertThrow(
+          material_state->set_cell_history(cell,
+                                           history[cell->active_cell_index()]),
+          ExcInternalError("history of another size"));
+    material_state->restore();
+
+    // The displacement on the new dofs; the contact multipliers (unknowns
+    // after the dofs) start from zero.
+    owned_solution = 0;
+    for (const auto dof : model.layout().locally_owned_dofs)
+      owned_solution[dof] = fields[0][dof];
+    owned_solution.compress(VectorOperation::insert);
+    solution_changed();
+    if (contact_handler)
+      contact_handler->start_at(ghosted_solution, committed_time);
+  }
+
+
+
+  template class Problem<2>;
+  template class Problem<3>;
+} // namespace tribos

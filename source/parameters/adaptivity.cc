@@ -1,0 +1,141 @@
+#include <tribos/base/text.h>
+#include <tribos/parameters/adaptivity.h>
+
+#include <string>
+
+namespace tribos
+{
+  namespace Parameters
+  {
+    void
+    Adaptivity::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Adaptivity");
+      prm.declare_entry(
+        "Enable",
+        "false",
+        dealii::Patterns::Bool(),
+        "Refine the mesh where the error indicator is large and coarsen it "
+        "where it has become small, during the run. The mesh is then a "
+        "p4est mesh (also in serial) whose coarse cells are the scene's "
+        "cells: start from a coarse uniform scene (no local refinement), "
+        "quadrilaterals or hexahedra. Quasi-static runs; frictionless "
+        "contact by penalty or Lagrange multipliers.");
+      prm.declare_entry(
+        "Initial cycles",
+        "2",
+        dealii::Patterns::Integer(0, 20),
+        "The first increment is solved, the mesh adapted to its solution's "
+        "indicator and the increment solved again from the start on the new "
+        "mesh, this many times.");
+      prm.declare_entry(
+        "Every",
+        "1",
+        dealii::Patterns::Integer(0),
+        "Adapt the mesh at the end of every this many nominal steps (after "
+        "the step's output, so that the VTU shows the indicator that "
+        "decided); 0: only the initial cycles.");
+      prm.declare_entry("Strategy",
+                        "fixed fraction",
+                        dealii::Patterns::Selection(
+                          "fixed fraction|fixed number"),
+                        "fixed fraction: refine the cells with the largest "
+                        "indicators that together carry Refine fraction of "
+                        "its sum, coarsen those that carry the smallest "
+                        "Coarsen fraction. fixed number: refine and coarsen "
+                        "those fractions of the cells.");
+      prm.declare_entry("Refine fraction",
+                        "0.6",
+                        dealii::Patterns::Double(0, 1),
+                        "See Strategy (0 to 1).");
+      prm.declare_entry("Coarsen fraction",
+                        "0.02",
+                        dealii::Patterns::Double(0, 1),
+                        "See Strategy (0 to 1; with Refine fraction at most "
+                        "1).");
+      prm.declare_entry("Maximum level",
+                        "4",
+                        dealii::Patterns::Integer(0, 20),
+                        "No cell is refined more than this many times from "
+                        "the scene's mesh.");
+      prm.declare_entry("Minimum level",
+                        "0",
+                        dealii::Patterns::Integer(0, 20),
+                        "Coarsening stops at this many refinements of the "
+                        "scene's mesh.");
+      prm.declare_entry("Maximum dofs",
+                        "0",
+                        dealii::Patterns::Integer(0),
+                        "A refinement that would exceed this many dofs is "
+                        "cut to the cells with the largest indicators that "
+                        "fit; 0: no limit.");
+      prm.declare_entry("Bulk indicator",
+                        "kelly",
+                        dealii::Patterns::Selection("kelly|none"),
+                        "kelly: the jump of the displacement gradient across "
+                        "the cells' faces (KellyErrorEstimator), times each "
+                        "body's Young's modulus so that bodies compare in "
+                        "stress. none: the contact indicator alone.");
+      prm.declare_entry(
+        "Contact indicator weight",
+        "0.5",
+        dealii::Patterns::Double(0, 1),
+        "The share a of the contact indicator in eta = (1 - a) eta_bulk + a "
+        "eta_contact, each scaled to a largest value of 1. The contact "
+        "indicator of a slave face's cell (and of the master face's cell "
+        "opposite) is the jump of the pressure along the face over the "
+        "largest pressure, plus 1 where the face has open and closed nodes "
+        "(the edge of the contact zone), plus 1 where an open node is "
+        "about to close (Closing gap factor).");
+      prm.declare_entry("Closing gap factor",
+                        "1",
+                        Text::non_negative_number(),
+                        "An open slave node whose gap is below this many "
+                        "sizes of its face is about to close: its faces' "
+                        "cells are marked by the contact indicator.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Adaptivity::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Adaptivity");
+      enable             = prm.get_bool("Enable");
+      initial_cycles     = prm.get_integer("Initial cycles");
+      every              = prm.get_integer("Every");
+      strategy           = prm.get("Strategy") == "fixed number" ?
+                             Strategy::fixed_number :
+                             Strategy::fixed_fraction;
+      refine_fraction    = prm.get_double("Refine fraction");
+      coarsen_fraction   = prm.get_double("Coarsen fraction");
+      maximum_level      = prm.get_integer("Maximum level");
+      minimum_level      = prm.get_integer("Minimum level");
+      maximum_dofs       = prm.get_integer("Maximum dofs");
+      kelly              = prm.get("Bulk indicator") == "kelly";
+      contact_weight     = prm.get_double("Contact indicator weight");
+      closing_gap_factor = prm.get_double("Closing gap factor");
+      AssertThrow(refine_fraction + coarsen_fraction <= 1,
+                  dealii::ExcMessage(
+                    "Parameters <Adaptivity/Refine fraction> = " +
+                    prm.get("Refine fraction") +
+                    " and <Adaptivity/Coarsen fraction> = " +
+                    prm.get("Coarsen fraction") +
+                    ": together at most 1 (a cell is refined or coarsened, "
+                    "not both)."));
+      AssertThrow(minimum_level <= maximum_level,
+                  dealii::ExcMessage("Parameter <Adaptivity/Minimum level> = " +
+                                     prm.get("Minimum level") +
+                                     ": at most <Adaptivity/Maximum level> = " +
+                                     prm.get("Maximum level") + "."));
+      AssertThrow(kelly || contact_weight > 0,
+                  dealii::ExcMessage(
+                    "Parameter <Adaptivity/Contact indicator weight> = " +
+                    prm.get("Contact indicator weight") +
+                    " with <Adaptivity/Bulk indicator> = none leaves no "
+                    "indicator: a weight above 0, or kelly."));
+      prm.leave_subsection();
+    }
+  } // namespace Parameters
+} // namespace tribos

@@ -1,0 +1,119 @@
+"""Adaptive refinement (Adaptivity, issue 58): the mesh refined and
+coarsened during the run by Kelly's indicator and the contact's, on a p4est
+mesh, with the state carried over.
+
+1. Hertz 2D (parameters/hertz_2d.prm, penalty 100 E/h) from the scene's
+   coarse uniform mesh (Contact refinements = 0: 256 cells, about 5 across
+   the final contact width), Refine fraction 0.3, Maximum level 7:
+   a and p0 within 3 % of Hertz, and a pressure profile error no larger
+   than the hand-graded scene's (Contact refinements = 5, 13 482 dofs)
+   with fewer dofs than it; the mesh must have changed.
+2. Homogeneous J2 compression, loading, unloading and reverse yielding
+   (tests/data/j2_uniaxial.prm on 2 x 2 x 2 cells), adapted after every
+   step (the indicator is round-off: cells are refined and coarsened
+   anyway): the force equals the run without adaptivity to 1e-8 (the
+   plastic history is carried by copies, so a homogeneous state stays
+   homogeneous).
+3. The mortar patch test (tests/data/patch_test.prm, Lagrange
+   multipliers) on a mesh refined by the initial cycles (slave and master
+   segments of several sizes): the contact pressure uniform to 1e-10.
+4. MPI: run 1 at -np 2 equal to the serial run to 1e-8 (forces and
+   nodal pressures)."""
+# ctest: cases serial mpi
+# ctest: mpirun-cases mpi
+# ctest: quick-cases serial
+
+import sys
+
+from tribos_testing import (PARAMETERS, setup, run, read_csv, check, finish,
+                            hertz_compare, parts, mpi_part)
+
+tribos, tests, out = setup(sys.argv)
+selected = parts(sys.argv, ("serial", "mpi"))
+
+
+def summary(folder):
+    values = {}
+    for line in open(folder + "/summary.txt"):
+        parts = line.split()
+        if len(parts) >= 2 and parts[0] in ("cells", "dofs", "adaptations"):
+            values[parts[0]] = int(parts[1])
+    return values
+
+
+# 1. Hertz 2D from a coarse mesh against the hand-graded one.
+E, nu, R = 1.0, 0.3, 1.0
+hertz = PARAMETERS + "/hertz_2d.prm"
+adaptive = ["Scene/Cylinder over block/Contact refinements=0",
+            "Adaptivity/Enable=true", "Adaptivity/Maximum level=7",
+            "Adaptivity/Initial cycles=8", "Adaptivity/Refine fraction=0.3",
+            "Output/Write VTU=false"]
+run(tribos, hertz, out + "/adaptive", adaptive)
+
+# 4. -np 2 against serial.
+if "mpi" in selected and mpi_part(selected):
+    run(tribos, hertz, out + "/adaptive_np2", adaptive, mpi_ranks=2)
+    serial = read_csv(out + "/adaptive/history.csv")
+    parallel = read_csv(out + "/adaptive_np2/history.csv")
+    force = max(abs(x["pair0_normal_force"] - y["pair0_normal_force"]) /
+                abs(y["pair0_normal_force"]) for x, y in zip(parallel, serial))
+    p_serial = sorted((r["X"], r["CPRESS"]) for r in
+                      read_csv(out + "/adaptive/contact-00002.csv"))
+    p_parallel = sorted((r["X"], r["CPRESS"]) for r in
+                        read_csv(out + "/adaptive_np2/contact-00002.csv"))
+    nodal = max(abs(p[1] - q[1]) for p, q in zip(p_parallel, p_serial)) / \
+        max(q[1] for q in p_serial)
+    check(len(p_serial) == len(p_parallel) and force < 1e-8 and nodal < 1e-8,
+          "-np 2 equal to serial: force %.1e, nodal pressures %.1e "
+          "(bound 1e-8)" % (force, nodal))
+if "serial" not in selected:
+    finish()
+
+run(tribos, hertz, out + "/graded", ["Output/Write VTU=false"])
+results = {}
+for name in ("graded", "adaptive"):
+    a, p0, a_h, p0_h, profile, n, P = hertz_compare(
+        out + "/" + name, 2, E / (1 - nu * nu), R, 1)
+    results[name] = (profile, summary(out + "/" + name))
+    print("%s: %d dofs, a %.5f (Hertz %.5f), p0 %.5f (Hertz %.5f), "
+          "profile L2 error %.4f, %d nodes in contact"
+          % (name, results[name][1]["dofs"], a_h, a, p0_h, p0, profile, n))
+    check(abs(a_h - a) / a < 0.03 and abs(p0_h - p0) / p0 < 0.03,
+          "%s: a and p0 within 3 %% of Hertz" % name)
+profile, counts = results["adaptive"]
+check(counts["adaptations"] >= 2, "the adaptive run changed its mesh (%d "
+      "times)" % counts["adaptations"])
+check(profile <= results["graded"][0] and
+      counts["dofs"] < results["graded"][1]["dofs"],
+      "adaptive: profile error %.4f <= hand-graded %.4f with %d < %d dofs"
+      % (profile, results["graded"][0], counts["dofs"],
+         results["graded"][1]["dofs"]))
+
+# 2. Homogeneous J2 compression: the history carried exactly.
+j2 = tests + "/j2_uniaxial.prm"
+run(tribos, j2, out + "/j2_fixed")
+run(tribos, j2, out + "/j2_adaptive",
+    ["Scene/Block/Subdivisions=2, 2, 2", "Adaptivity/Enable=true",
+     "Adaptivity/Maximum level=2"])
+fixed = read_csv(out + "/j2_fixed/history.csv")
+adapted = read_csv(out + "/j2_adaptive/history.csv")
+worst = max(abs(x["RF5_z"] - y["RF5_z"]) / abs(y["RF5_z"])
+            for x, y in zip(adapted, fixed))
+check(len(adapted) == len(fixed) and worst < 1e-8 and
+      summary(out + "/j2_adaptive")["adaptations"] >= 2,
+      "J2 compression adapted %d times: force equal to the fixed mesh's to "
+      "%.1e (bound 1e-8)" % (summary(out + "/j2_adaptive")["adaptations"],
+                             worst))
+
+# 3. The mortar patch test on an adapted mesh.
+run(tribos, tests + "/patch_test.prm", out + "/patch",
+    ["Contact/Discretization=mortar", "Contact/Method=lagrange multiplier",
+     "Adaptivity/Enable=true", "Adaptivity/Maximum level=2"])
+pressures = [r["CPRESS"] for r in read_csv(out + "/patch/contact-00001.csv")]
+spread = (max(pressures) - min(pressures)) / max(pressures)
+check(summary(out + "/patch")["adaptations"] >= 1 and len(pressures) > 4 and
+      spread < 1e-10,
+      "mortar patch test on an adapted mesh: %d slave nodes, pressure "
+      "spread %.1e (bound 1e-10)" % (len(pressures), spread))
+
+finish()
