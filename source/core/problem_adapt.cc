@@ -50,6 +50,9 @@ namespace tribos
       if (cell->is_locally_owned() && material_state->has_history(cell))
         history[cell->active_cell_index()] = material_state->cell_history(cell);
 
+    using Carried = typename ContactHandler<dim>::CarriedState;
+    const Carried carried =
+      contact_handler ? contact_handler->carried_state() : Carried();
     const std::vector<Vector> fields = model.adapt({&displacement()}, history);
     indicator.reinit(0);
     {
@@ -65,12 +68,17 @@ namespace tribos
           ExcInternalError("history of another size"));
     material_state->restore();
 
-    // The displacement on the new dofs; the contact multipliers (unknowns
-    // after the dofs) start from zero.
+    // The displacement on the new dofs, the contact multipliers (unknowns
+    // after the dofs) from the carried node states.
     owned_solution = 0;
     for (const auto dof : model.layout().locally_owned_dofs)
       owned_solution[dof] = fields[0][dof];
     owned_solution.compress(VectorOperation::insert);
+    if (contact_handler)
+    {
+      contact_handler->carry_over(carried);
+      contact_handler->write_multipliers(owned_solution);
+    }
     solution_changed();
     if (contact_handler)
       contact_handler->start_at(ghosted_solution, committed_time);

@@ -19,8 +19,8 @@ namespace tribos
         "where it has become small, during the run. The mesh is then a "
         "p4est mesh (also in serial) whose coarse cells are the scene's "
         "cells: start from a coarse uniform scene (no local refinement), "
-        "quadrilaterals or hexahedra. Quasi-static runs; frictionless "
-        "contact by penalty or Lagrange multipliers.");
+        "quadrilaterals or hexahedra. Quasi-static runs; in 3D, contact "
+        "against rigid surfaces.");
       prm.declare_entry(
         "Initial cycles",
         "2",

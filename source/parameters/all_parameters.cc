@@ -128,14 +128,6 @@ namespace tribos
              "Output/Checkpoint every = 0.");
       for (const auto &pair : contact.pairs)
       {
-        refuse(pair.friction_coefficient == 0,
-               "the pair <" + pair.text +
-                 "> has friction, whose stick points are not carried over a "
-                 "change of the mesh yet; frictionless pairs only.");
-        refuse(pair.method == "penalty" || pair.method == "lagrange multiplier",
-               "the pair <" + pair.text + "> uses <" + pair.method +
-                 ">, whose multipliers are not carried over a change of the "
-                 "mesh yet; penalty or lagrange multiplier.");
         refuse(dimension == 2 || pair.master_boundary.empty(),
                "the pair <" + pair.text +
                  "> has a deformable master in 3D, whose faces would get "

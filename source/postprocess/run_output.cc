@@ -109,6 +109,7 @@ namespace tribos
   {
     if (problem.contact() != nullptr)
       contact_output = std::make_unique<ContactOutput<dim>>(*problem.contact());
+    find_probe_dofs();
   }
 
 
@@ -223,26 +224,9 @@ namespace tribos
 
 
   template <int dim>
-  std::vector<std::string>
-  RunOutput<dim>::history_columns()
+  void
+  RunOutput<dim>::find_probe_dofs()
   {
-    std::vector<std::string> columns = {"step",
-                                        "increment",
-                                        "time",
-                                        "load_factor",
-                                        "newton_iterations",
-                                        "newton_iterations_all",
-                                        "residual",
-                                        "cutbacks",
-                                        "wall_time"};
-    for (const auto &c : parameters.boundary_conditions.dirichlet)
-      for (unsigned int d = 0; d < dim; ++d)
-        columns.push_back("RF" + std::to_string(c.boundary_id) + "_" + axis[d]);
-    if (exact_displacement)
-    {
-      columns.push_back("error_L2");
-      columns.push_back("error_H1");
-    }
     // Probes: the vertex nearest to each point, over every process's own
     // cells.
     probe_dofs.clear();
@@ -284,9 +268,36 @@ namespace tribos
         Utilities::MPI::all_gather(mpi_communicator, best);
       probe_dofs.push_back(
         std::min_element(candidates.begin(), candidates.end())->second);
+    }
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  RunOutput<dim>::history_columns()
+  {
+    std::vector<std::string> columns = {"step",
+                                        "increment",
+                                        "time",
+                                        "load_factor",
+                                        "newton_iterations",
+                                        "newton_iterations_all",
+                                        "residual",
+                                        "cutbacks",
+                                        "wall_time"};
+    for (const auto &c : parameters.boundary_conditions.dirichlet)
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back("RF" + std::to_string(c.boundary_id) + "_" + axis[d]);
+    if (exact_displacement)
+    {
+      columns.push_back("error_L2");
+      columns.push_back("error_H1");
+    }
+    find_probe_dofs();
+    for (unsigned int k = 0; k < probe_dofs.size(); ++k)
       for (unsigned int d = 0; d < dim; ++d)
         columns.push_back("probe" + std::to_string(k) + "_u" + axis[d]);
-    }
     if (contact_output)
     {
       for (const auto &name : contact_output->column_names())
@@ -314,6 +325,8 @@ namespace tribos
       columns.push_back("stabilization_ratio");
       columns.push_back("stabilization_relaxations");
     }
+    if (parameters.adaptivity.enable)
+      columns.push_back("dofs");
     return columns;
   }
 
@@ -463,6 +476,8 @@ namespace tribos
       row.push_back(springs.ratio);
       row.push_back(springs.relaxations);
     }
+    if (parameters.adaptivity.enable)
+      row.push_back(model.dof_handler().n_dofs());
     history_csv->add_row(row);
   }
 

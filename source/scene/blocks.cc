@@ -8,6 +8,7 @@
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -327,6 +328,27 @@ namespace tribos
             if (box.point_inside(cell->center()))
               cell->set_refine_flag();
           tria.execute_coarsening_and_refinement();
+        }
+      }
+      // The arc bottom on its exact manifold, for a mesh refined after
+      // this (Adaptivity): set last, so the scene's own refinement above
+      // is as it always was.
+      if (s.upper_bottom_radius > 0)
+      {
+        Point<dim> centre;
+        centre[0]       = origin[0] + 0.5 * upper_size[0];
+        centre[dim - 1] = origin[dim - 1] + s.upper_bottom_radius;
+        const types::boundary_id bottom = 10 + 2 * (dim - 1);
+        for (const auto &face : tria.active_face_iterators())
+          if (face->at_boundary() && face->boundary_id() == bottom)
+            face->set_manifold_id(2);
+        if constexpr (dim == 2)
+          tria.set_manifold(2, SphericalManifold<dim>(centre));
+        else
+        {
+          Tensor<1, dim> axis;
+          axis[1] = 1;
+          tria.set_manifold(2, CylindricalManifold<dim>(axis, centre));
         }
       }
     }

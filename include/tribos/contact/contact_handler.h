@@ -191,8 +191,46 @@ namespace tribos
     void
     load_committed_state(const std::vector<char> &state, const double time);
 
-    /** Start from @p solution at @p time with the pairs' initial state (a
-     * new mesh: the search pairs the nodes again from the geometry). */
+    /**
+     * The committed states of every pair's slave nodes (of all
+     * processes), with the nodes' reference positions and the slave
+     * faces' vertices: what carry_over() takes to the pairs of a new mesh.
+     */
+    struct CarriedState
+    {
+      struct Pair
+      {
+        std::vector<Vec3<double>>                reference;
+        std::vector<std::array<unsigned int, 4>> faces;
+        std::vector<NodeState>                   states;
+        bool                                     ever_near = false;
+      };
+      std::vector<Pair> pairs;
+    };
+    /** Collective. */
+    CarriedState
+    carried_state() const;
+
+    /**
+     * The committed (and current) states of the slave nodes from those of
+     * the old mesh's, by reference position: a node where an old one was
+     * takes its state; a new node (on a refined face) takes the state of
+     * the nearest vertex of the old face it lies on, with the slip, the
+     * multipliers, the tractions, the normal, the gap and the stick point
+     * interpolated by the face's shape functions. The pairing is
+     * forgotten (the old master's faces are gone): the next search pairs
+     * the nodes again. Call before start_at().
+     */
+    void
+    carry_over(const CarriedState &carried);
+
+    /** The committed Lagrange multipliers of the own nodes into
+     * @p unknowns (owned entries). Collective. */
+    void
+    write_multipliers(TrilinosWrappers::MPI::Vector &unknowns) const;
+
+    /** Start from @p solution at @p time (a new mesh): positions and
+     * multipliers read, the committed positions set to them. */
     void
     start_at(const TrilinosWrappers::MPI::Vector &solution, const double time);
 

@@ -181,8 +181,9 @@ namespace tribos
      * Adaptivity: refine and coarsen the flagged cells and carry the state
      * over: the solution, which must be the committed one at @p time, and
      * the converged plastic history. The contact pairs are built again on
-     * the new surfaces and pair their nodes again from the geometry; the
-     * contact multipliers start from zero. Collective.
+     * the new surfaces, their node states carried over by reference
+     * position (ContactHandler::carry_over()), the multipliers with them;
+     * the nodes are paired again from the geometry. Collective.
      */
     void
     adapt(const double time);

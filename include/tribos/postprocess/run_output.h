@@ -84,7 +84,8 @@ namespace tribos
     void
     print(const std::string &line);
 
-    /** The mesh changed (Adaptivity): the contact pairs are new. */
+    /** The mesh changed (Adaptivity): the contact pairs are new, the
+     * probes on other dofs. Collective. */
     void
     mesh_changed();
 
@@ -122,6 +123,10 @@ namespace tribos
     /** The history.csv columns (and the probes' dofs). */
     std::vector<std::string>
     history_columns();
+    /** Per Output/Probes point, the dofs of the vertex nearest to it (on
+     * the current mesh). Collective. */
+    void
+    find_probe_dofs();
 
     /** The L2 and H1 errors of the displacement against Verification/
      * Exact displacement at @p time. */
