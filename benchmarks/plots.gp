@@ -42,3 +42,22 @@ c = 1e-7
 fit f(x) "doc/data/search_scaling.csv" using 1:3 via c
 plot "doc/data/search_scaling.csv" using 1:3 with linespoints pt 7 title "measured (median of 5)", \
   f(x) title sprintf("%.3g n log2 n", c)
+
+# benchmarks/adaptivity.py
+set output "doc/adaptivity_error_vs_dofs.png"
+set title "Hertz 2D: pressure profile L2 error against dofs"
+unset y2label
+unset y2tics
+set logscale xy
+set xlabel "dofs (final mesh)"
+set ylabel "relative L2 error of the pressure profile"
+plot for [kind in "uniform graded adaptive"] \
+  "< awk -F, -v k=".kind." '$1==k' doc/data/adaptivity_hertz.csv" \
+  using 3:7 with linespoints title kind
+
+set output "doc/adaptivity_error_vs_time.png"
+set title "Hertz 2D: pressure profile L2 error against wall time (all cycles)"
+set xlabel "wall time of the run [s]"
+plot for [kind in "uniform graded adaptive"] \
+  "< awk -F, -v k=".kind." '$1==k' doc/data/adaptivity_hertz.csv" \
+  using 6:7 with linespoints title kind

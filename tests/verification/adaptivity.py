@@ -18,8 +18,16 @@ mesh, with the state carried over.
    multipliers) on a mesh refined by the initial cycles (slave and master
    segments of several sizes): the contact pressure uniform to 1e-10.
 4. MPI: run 1 at -np 2 equal to the serial run to 1e-8 (forces and
-   nodal pressures)."""
-# ctest: cases serial mpi
+   nodal pressures).
+5. Friction (case ironing): the 2D ironing (parameters/ironing.prm, 150
+   steps) from a mesh one level coarser (30 x 10 and 6 x 6 cells) refined
+   up to the scene's mesh after every step, the stick points and slip
+   carried over: the punch's forces V and H at t = 0.52, 1, 1.52, 3.52, 5
+   and 6 within 2 % of the run on the scene's mesh everywhere, with fewer
+   dofs on average; and the sliding block (tests/data/sliding_block.prm,
+   mu = 0.3) adapted after every step: tangential force = mu times the
+   normal force to 1e-8 while it slides."""
+# ctest: cases serial mpi ironing
 # ctest: mpirun-cases mpi
 # ctest: quick-cases serial
 
@@ -29,7 +37,7 @@ from tribos_testing import (PARAMETERS, setup, run, read_csv, check, finish,
                             hertz_compare, parts, mpi_part)
 
 tribos, tests, out = setup(sys.argv)
-selected = parts(sys.argv, ("serial", "mpi"))
+selected = parts(sys.argv, ("serial", "mpi", "ironing"))
 
 
 def summary(folder):
@@ -66,6 +74,46 @@ if "mpi" in selected and mpi_part(selected):
     check(len(p_serial) == len(p_parallel) and force < 1e-8 and nodal < 1e-8,
           "-np 2 equal to serial: force %.1e, nodal pressures %.1e "
           "(bound 1e-8)" % (force, nodal))
+
+# 5. Friction: the sliding block and the ironing.
+if "ironing" in selected:
+    run(tribos, tests + "/sliding_block.prm", out + "/sliding",
+        ["Adaptivity/Enable=true", "Adaptivity/Maximum level=2"])
+    rows = read_csv(out + "/sliding/history.csv")
+    sliding = [r for r in rows if r["n_slip"] > 0 and r["n_stick"] == 0]
+    worst = max(abs(r["pair0_tangential_force"] -
+                    0.3 * r["pair0_normal_force"]) / r["pair0_normal_force"]
+                for r in sliding)
+    check(len(sliding) >= 5 and summary(out + "/sliding")["adaptations"] >= 5
+          and worst < 1e-8,
+          "sliding block adapted %d times: T = mu N to %.1e in %d sliding "
+          "steps" % (summary(out + "/sliding")["adaptations"], worst,
+                     len(sliding)))
+    ironing = PARAMETERS + "/ironing.prm"
+    common = ["Time stepping/Number of steps=150", "Output/Write VTU=false"]
+    run(tribos, ironing, out + "/ironing_fine", common)
+    run(tribos, ironing, out + "/ironing_adaptive", common + [
+        "Scene/Two blocks/Lower subdivisions=30, 10",
+        "Scene/Two blocks/Upper subdivisions=6, 6",
+        "Adaptivity/Enable=true", "Adaptivity/Maximum level=1"])
+    fine = {round(r["time"], 6): r
+            for r in read_csv(out + "/ironing_fine/history.csv")}
+    adapted = read_csv(out + "/ironing_adaptive/history.csv")
+    by_time = {round(r["time"], 6): r for r in adapted}
+    worst = 0
+    for t in (0.52, 1.0, 1.52, 3.52, 5.0, 6.0):
+        for force in ("RF13_x", "RF13_y"):
+            error = abs(by_time[t][force] / fine[t][force] - 1)
+            worst = max(worst, error)
+            print("t = %g %s: adaptive %.5f, fine %.5f (%.2f %%)"
+                  % (t, force, by_time[t][force], fine[t][force],
+                     100 * error))
+    mean_dofs = sum(r["dofs"] for r in adapted) / len(adapted)
+    fine_dofs = summary(out + "/ironing_fine")["dofs"]
+    check(len(adapted) == 150 and worst < 0.02 and mean_dofs < fine_dofs,
+          "ironing adapted: V and H within %.2f %% (bound 2 %%) of the fine "
+          "mesh's, %.0f dofs on average against %d"
+          % (100 * worst, mean_dofs, fine_dofs))
 if "serial" not in selected:
     finish()
 
