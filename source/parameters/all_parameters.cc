@@ -126,14 +126,13 @@ namespace tribos
       refuse(output.checkpoint_every == 0,
              "checkpoints of an adapted mesh are not written yet; set "
              "Output/Checkpoint every = 0.");
-      for (const auto &pair : contact.pairs)
-      {
-        refuse(dimension == 2 || pair.master_boundary.empty(),
-               "the pair <" + pair.text +
-                 "> has a deformable master in 3D, whose faces would get "
-                 "hanging nodes the master surface does not join yet; a "
-                 "rigid master in 3D.");
-      }
+      refuse(dimension == 2 || contact.pairs.empty(),
+             "in 3D only without contact pairs yet: a refined contact "
+             "surface has hanging nodes, which on a curved surface stand "
+             "off the coarse neighbour face by its sagitta (the Hertz "
+             "sphere got nodes with 20 times the penetration of their "
+             "neighbours), and a deformable master's faces with hanging "
+             "nodes are not joined into its neighbourhoods.");
     }
 
 
