@@ -128,15 +128,17 @@ namespace tribos
     /**
      * The slave nodes of @p pair: which this process owns, their areas
      * and states, the dependent ones excluded (the pairs made before it:
-     * @p earlier; @p hanging constraints), the nodes this process reads,
-     * and the master nodes it owns.
+     * @p earlier; @p hanging constraints; every hanging node with
+     * @p carry_hanging_nodes), the nodes this process reads, and the
+     * master nodes it owns.
      */
     template <int dim>
     void
     set_up_nodes(ContactPair<dim>                &pair,
                  std::vector<ContactPair<dim>>   &earlier,
                  const AffineConstraints<double> &hanging,
-                 const IndexSet                  &locally_owned_dofs)
+                 const IndexSet                  &locally_owned_dofs,
+                 const bool                       carry_hanging_nodes)
     {
       const auto        &nodes    = pair.slave->nodes();
       const unsigned int n_slaves = nodes.size();
@@ -160,7 +162,8 @@ namespace tribos
       // uniform pressure).
       if (pair.enforcement->n_node_unknowns() > 0)
         exclude_dependent_nodes(pair, &earlier, hanging);
-      else if (pair.discretization->parents_carry_hanging_nodes())
+      else if (pair.discretization->parents_carry_hanging_nodes() ||
+               carry_hanging_nodes)
         exclude_dependent_nodes<dim>(pair, nullptr, hanging);
       pair.discretization->initialize(pair);
       // The slave positions this process reads: its own nodes and the
@@ -336,7 +339,11 @@ namespace tribos
       pair.discretization =
         create_discretization<dim>(description, parameters, axisymmetric);
 
-      set_up_nodes(pair, pairs, hanging, locally_owned_dofs);
+      set_up_nodes(pair,
+                   pairs,
+                   hanging,
+                   locally_owned_dofs,
+                   parameters.carry_hanging_nodes);
       pair.first_unknown = dof_handler.n_dofs() + n_unknowns;
       n_unknowns += pair.enforcement->n_node_unknowns() * pair.n_nodes();
       pair.committed           = pair.current;

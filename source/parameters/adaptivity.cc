@@ -19,8 +19,8 @@ namespace tribos
         "where it has become small, during the run. The mesh is then a "
         "p4est mesh (also in serial) whose coarse cells are the scene's "
         "cells: start from a coarse uniform scene (no local refinement), "
-        "quadrilaterals or hexahedra. Quasi-static runs; in 3D without "
-        "contact pairs yet.");
+        "quadrilaterals or hexahedra. Quasi-static runs; in 3D against "
+        "rigid masters.");
       prm.declare_entry(
         "Initial cycles",
         "2",

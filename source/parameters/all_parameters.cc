@@ -94,6 +94,7 @@ namespace tribos
       adaptivity.parse_parameters(prm);
       if (adaptivity.enable)
         check_adaptivity();
+      contact.carry_hanging_nodes = adaptivity.enable;
     }
 
 
@@ -126,13 +127,12 @@ namespace tribos
       refuse(output.checkpoint_every == 0,
              "checkpoints of an adapted mesh are not written yet; set "
              "Output/Checkpoint every = 0.");
-      refuse(dimension == 2 || contact.pairs.empty(),
-             "in 3D only without contact pairs yet: a refined contact "
-             "surface has hanging nodes, which on a curved surface stand "
-             "off the coarse neighbour face by its sagitta (the Hertz "
-             "sphere got nodes with 20 times the penetration of their "
-             "neighbours), and a deformable master's faces with hanging "
-             "nodes are not joined into its neighbourhoods.");
+      for (const auto &pair : contact.pairs)
+        refuse(dimension == 2 || pair.master_boundary.empty(),
+               "the pair <" + pair.text +
+                 "> has a deformable master in 3D, whose faces would get "
+                 "hanging nodes that the master surface does not join into "
+                 "its neighbourhoods yet; in 3D rigid masters only.");
     }
 
 

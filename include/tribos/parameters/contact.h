@@ -111,6 +111,16 @@ namespace tribos
       parse_parameters(dealii::ParameterHandler &prm);
       void
       check(const unsigned int dim) const;
+      /**
+       * Not an entry: set by Adaptivity/Enable. Every pair hands its
+       * hanging slave nodes to their parents (as pairs with multipliers
+       * and mortar always do), also node to surface with a penalty: on a
+       * refined curved surface a hanging vertex lies on the manifold while
+       * its displacement follows the coarse neighbour's straight edge, and
+       * a penalty would see the edge's sagitta as penetration.
+       */
+      bool carry_hanging_nodes = false;
+
       /** The boundary ids of every slave surface: the pairs' slaves and,
        * two-pass, their deformable masters too. */
       std::set<unsigned int>
