@@ -23,11 +23,12 @@ namespace tribos
         "rigid masters.");
       prm.declare_entry(
         "Initial cycles",
-        "2",
+        "4",
         dealii::Patterns::Integer(0, 20),
         "The first increment is solved, the mesh adapted to its solution's "
         "indicator and the increment solved again from the start on the new "
-        "mesh, this many times.");
+        "mesh, this many times (the first cycle that flags no cell ends "
+        "them); from a coarse mesh, about Maximum level times.");
       prm.declare_entry(
         "Every",
         "1",
@@ -45,7 +46,7 @@ namespace tribos
                         "Coarsen fraction. fixed number: refine and coarsen "
                         "those fractions of the cells.");
       prm.declare_entry("Refine fraction",
-                        "0.6",
+                        "0.3",
                         dealii::Patterns::Double(0, 1),
                         "See Strategy (0 to 1).");
       prm.declare_entry("Coarsen fraction",

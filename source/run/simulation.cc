@@ -232,11 +232,12 @@ namespace tribos
     output->step_completed(record);
     const unsigned int step    = record.step;
     const unsigned int n_steps = parameters.time_stepping.n_steps;
-    // The indicator that decides the adaptation after the step goes into
-    // its output.
-    if (adapts_after(step))
+    // The indicator of the step's state goes into its output (and decides
+    // the adaptation after the step).
+    const bool output_step = parameters.output.is_output_step(step, n_steps);
+    if (parameters.adaptivity.enable && (adapts_after(step) || output_step))
       problem.estimate_error();
-    if (parameters.output.is_output_step(step, n_steps))
+    if (output_step)
       output->write_step(step, record.time);
     const unsigned int every = parameters.output.checkpoint_every;
     if (every > 0 && (step % every == 0 || step == n_steps))
