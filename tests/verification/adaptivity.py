@@ -8,6 +8,7 @@ mesh, with the state carried over.
    a and p0 within 3 % of Hertz, and a pressure profile error no larger
    than the hand-graded scene's (Contact refinements = 5, 13 482 dofs)
    with fewer dofs than it; the mesh must have changed.
+   The same with Maximum dofs = 2000: never more dofs than that.
 1b. Hertz 3D (parameters/hertz_3d.prm, the quarter sphere on a rigid
    plane) from the coarse scene, Maximum level 5, 6 initial cycles: a and
    p0 within 5 % of Hertz, the profile error below 4.8 % (the issue's
@@ -142,6 +143,13 @@ check(profile <= results["graded"][0] and
       "adaptive: profile error %.4f <= hand-graded %.4f with %d < %d dofs"
       % (profile, results["graded"][0], counts["dofs"],
          results["graded"][1]["dofs"]))
+
+# 1a. The dof budget: Maximum dofs = 2000 stops the same refinement there.
+run(tribos, hertz, out + "/budget", adaptive + ["Adaptivity/Maximum dofs=2000"])
+budget = [r["dofs"] for r in read_csv(out + "/budget/history.csv")]
+check(max(budget) <= 2000 and summary(out + "/budget")["adaptations"] >= 2,
+      "Maximum dofs = 2000: at most %d dofs after %d adaptations"
+      % (max(budget), summary(out + "/budget")["adaptations"]))
 
 # 1b. Hertz 3D.
 hertz3 = PARAMETERS + "/hertz_3d.prm"
