@@ -145,8 +145,8 @@ namespace tribos
       auto       &pair = contact_pairs[p];
       const auto &old  = carried.pairs[p];
       pair.ever_near   = old.ever_near;
-      // The old surface's size scale: a node within 1e-8 of it from an
-      // old node is that node.
+      // The surface's size scale (its largest element): a node within
+      // 1e-8 of it from an old node is that node.
       double size = 0;
       for (const auto &node : pair.slave->nodes())
         size = std::max(size, node.size);

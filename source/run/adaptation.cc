@@ -58,12 +58,7 @@ namespace tribos
     problem.adapt(time);
     ++n_adaptations;
     // The solvers on the new system (their counters go on).
-    problem.attach(*linear_solver);
-    if (model.layout().n_multipliers > 0)
-      linear_solver->set_multiplier_blocks(model.dof_handler().n_dofs(), dim);
-    if (linear_solver->iterative(problem.system_matrix()))
-      linear_solver->set_near_null_space(model.rigid_body_modes(),
-                                         parameters.finite_element.degree > 1);
+    attach_linear_solver();
     output->mesh_changed();
     std::ostringstream line;
     line << "  adapted the mesh at t = " << time << ": "

@@ -152,15 +152,24 @@ namespace tribos
                                                    dim,
                                                    n_multipliers > 0);
     linear_solver->set_timer(timer);
+    attach_linear_solver();
+    newton  = std::make_unique<NewtonSolver>(parameters.nonlinear_solver,
+                                            *linear_solver);
+    stepper = std::make_unique<LoadStepper>(parameters.time_stepping, *newton);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::attach_linear_solver()
+  {
     problem.attach(*linear_solver);
-    if (n_multipliers > 0)
+    if (model.layout().n_multipliers > 0)
       linear_solver->set_multiplier_blocks(model.dof_handler().n_dofs(), dim);
     if (linear_solver->iterative(problem.system_matrix()))
       linear_solver->set_near_null_space(model.rigid_body_modes(),
                                          parameters.finite_element.degree > 1);
-    newton  = std::make_unique<NewtonSolver>(parameters.nonlinear_solver,
-                                            *linear_solver);
-    stepper = std::make_unique<LoadStepper>(parameters.time_stepping, *newton);
   }
 
 

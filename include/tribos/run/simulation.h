@@ -110,6 +110,11 @@ namespace tribos
      * near-null space). */
     void
     make_solvers();
+    /** The linear solver on the problem's current system: its matrix,
+     * multiplier blocks and AMG near-null space (at setup and after a
+     * change of the mesh). */
+    void
+    attach_linear_solver();
 
     /** What summary.txt says of the run. */
     RunTotals
