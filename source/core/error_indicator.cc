@@ -53,10 +53,11 @@ namespace tribos
   {
     const auto    &tria         = model.triangulation();
     const MPI_Comm communicator = model.communicator();
-    const auto     scaled       = [&](dealii::Vector<float> &eta)
+    const auto     scaled = [&](dealii::Vector<float> &eta, const double floor)
     {
       const double largest =
-        Utilities::MPI::max(eta.linfty_norm(), communicator);
+        std::max<double>(Utilities::MPI::max(eta.linfty_norm(), communicator),
+                         floor);
       if (largest > 0)
         eta /= largest;
     };
@@ -74,11 +75,25 @@ namespace tribos
                                          nullptr,
                                          numbers::invalid_unsigned_int,
                                          tria.locally_owned_subdomain());
+      // Scaled to its largest value, but not above round-off: a body that
+      // moves as a rigid one (a punch before it touches) has jumps of the
+      // solver's round-off only, which must not decide the refinement (they
+      // did: two runs whose Newton paths differed refined other cells
+      // before any contact). The floor is a strain jump of 1e-10 times the
+      // largest Young's modulus over the model (Kelly's value scales with
+      // the root of a volume).
+      double volume = 0, e_max = 0;
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned())
-          bulk[cell->active_cell_index()] *=
-            materials.youngs_modulus(cell->material_id());
-      scaled(bulk);
+        {
+          const double e = materials.youngs_modulus(cell->material_id());
+          bulk[cell->active_cell_index()] *= e;
+          volume += cell->measure();
+          e_max = std::max(e_max, e);
+        }
+      volume = Utilities::MPI::sum(volume, communicator);
+      e_max  = Utilities::MPI::max(e_max, communicator);
+      scaled(bulk, 1e-10 * e_max * std::sqrt(volume));
     }
 
     // The contact indicator per cell (by CellId: a master face's cell may
@@ -148,7 +163,7 @@ namespace tribos
         if (found != per_cell.end())
           on_contact[cell->active_cell_index()] = found->second;
       }
-    scaled(on_contact);
+    scaled(on_contact, 0.);
 
     const double          a = parameters.kelly ? parameters.contact_weight : 1;
     dealii::Vector<float> eta(tria.n_active_cells());
