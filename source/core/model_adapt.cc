@@ -118,20 +118,32 @@ namespace tribos
     };
     auto [n_refine, n_coarsen] = count();
 
-    // The dof budget: dofs grow about as the cells do.
-    const double n_cells    = tria.n_global_active_cells();
-    const double n_children = GeometryInfo<dim>::max_children_per_cell;
+    // The dof budget, estimated on the safe side: a refined cell adds
+    // (children - 1) cells of 1.25 times the mean dofs per cell (a cell at
+    // a boundary or next to a coarser one adds more than the mean), a
+    // coarsened group of siblings removes only the dofs of its centre. The
+    // refinement is cut until the estimate fits (p4est's balance may add
+    // cells to any cut: counted again each time).
     if (a.maximum_dofs > 0)
     {
-      const double per_cell = dofs.n_dofs() / n_cells;
-      const double expected =
-        per_cell * (n_cells + n_refine * (n_children - 1) -
-                    n_coarsen * (1 - 1 / n_children));
-      if (expected > a.maximum_dofs)
+      const double n_cells    = tria.n_global_active_cells();
+      const double n_children = GeometryInfo<dim>::max_children_per_cell;
+      const double n_dofs     = dofs.n_dofs();
+      const double added      = 1.25 * n_dofs / n_cells * (n_children - 1);
+      const double removed    = fe().n_components();
+      const auto   expected   = [&](const double refine, const double coarsen)
       {
-        const double room = a.maximum_dofs / per_cell - n_cells +
-                            n_coarsen * (1 - 1 / n_children);
-        const double fraction = std::max(0., room / (n_children - 1)) / n_cells;
+        return n_dofs + refine * added - coarsen / n_children * removed;
+      };
+      const double coarsen_fraction = n_coarsen / n_cells;
+      double       fraction         = n_refine / n_cells;
+      while (fraction > 0 && expected(n_refine, n_coarsen) > a.maximum_dofs)
+      {
+        const double room =
+          (a.maximum_dofs - n_dofs + n_coarsen / n_children * removed) / added;
+        fraction = std::min(0.8 * fraction, std::max(0., room) / n_cells);
+        if (fraction * n_cells < 1)
+          fraction = 0;
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned())
           {
@@ -140,9 +152,8 @@ namespace tribos
           }
         refinement::refine_and_coarsen_fixed_number(tria,
                                                     indicator,
-                                                    std::min(fraction,
-                                                             a.refine_fraction),
-                                                    n_coarsen / n_cells);
+                                                    fraction,
+                                                    coarsen_fraction);
         apply_levels();
         std::tie(n_refine, n_coarsen) = count();
       }

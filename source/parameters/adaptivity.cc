@@ -67,7 +67,8 @@ namespace tribos
       prm.declare_entry("Maximum dofs",
                         "0",
                         dealii::Patterns::Integer(0),
-                        "A refinement that would exceed this many dofs is "
+                        "A refinement that would exceed this many dofs "
+                        "(estimated on the safe side before it is made) is "
                         "cut to the cells with the largest indicators that "
                         "fit; 0: no limit.");
       prm.declare_entry("Bulk indicator",
