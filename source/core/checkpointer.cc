@@ -80,6 +80,15 @@ namespace tribos
 
 
   template <int dim>
+  TrilinosWrappers::MPI::Vector &
+  Checkpointer<dim>::restart_change()
+  {
+    return change_of_restart;
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   Checkpointer<dim>::cell_values(
     const Vector                         &v,
@@ -162,6 +171,7 @@ namespace tribos
     const StepperState                                &stepper,
     const Vector                                      &change,
     const std::vector<std::pair<double, std::string>> &pvd_records,
+    const std::map<std::string, double>               &run_scalars,
     const std::string                                 &directory) const
   {
     const auto        &layout = model.layout();
@@ -223,6 +233,7 @@ namespace tribos
         c.cell_values[name] = cell_values(*vector);
       c.scalars = dynamics->scalars();
     }
+    c.scalars.insert(run_scalars.begin(), run_scalars.end());
     c.pvd_records = pvd_records;
     c.fingerprint = fingerprint();
     c.geometry    = geometry_moments();

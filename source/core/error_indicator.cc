@@ -174,6 +174,63 @@ namespace tribos
 
 
 
+  template <int dim>
+  unsigned int
+  n_faces_closed_below_level(const ContactHandler<dim> &contact,
+                             const unsigned int         maximum_level,
+                             const MPI_Comm             communicator)
+  {
+    unsigned int n_faces = 0;
+    for (const auto &pair : contact.pairs())
+    {
+      // Per owned node whether the increment closed it, known everywhere
+      // (a face's nodes may be owned by several processes).
+      // The master faces they closed on count too (a node-to-segment
+      // contact is as fine as its master).
+      std::vector<unsigned int> mine;
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        if (pair.owned[k] && pair.current[k].closed() &&
+            !pair.committed[k].closed())
+        {
+          mine.push_back(k);
+          const int face = pair.current[k].face;
+          if (pair.master && pair.current[k].paired && face >= 0 &&
+              CellId(pair.master->faces()[face].cell)
+                  .get_child_indices()
+                  .size() < maximum_level)
+            ++n_faces;
+        }
+      std::vector<char> closed(pair.n_nodes(), 0);
+      for (const auto &part : Utilities::MPI::all_gather(communicator, mine))
+        for (const auto k : part)
+          closed[k] = 1;
+      // Every process counts the faces of its own cells.
+      const unsigned int me = Utilities::MPI::this_mpi_process(communicator);
+      for (const auto &face : pair.slave->faces())
+      {
+        const CellId cell(face.cell);
+        if (cell.get_child_indices().size() >= maximum_level)
+          continue;
+        bool any = false;
+        for (unsigned int i = 0; i < face.n_nodes(); ++i)
+          any = any || closed[face.node(i)] != 0;
+        if (any && face.owner == me)
+          ++n_faces;
+      }
+    }
+    return Utilities::MPI::sum(n_faces, communicator);
+  }
+
+
+
+  template unsigned int
+  n_faces_closed_below_level<2>(const ContactHandler<2> &,
+                                const unsigned int,
+                                const MPI_Comm);
+  template unsigned int
+  n_faces_closed_below_level<3>(const ContactHandler<3> &,
+                                const unsigned int,
+                                const MPI_Comm);
   template dealii::Vector<float>
   error_indicator<2>(const Parameters::Adaptivity &,
                      const Model<2> &,

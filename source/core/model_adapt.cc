@@ -258,6 +258,59 @@ namespace tribos
 
 
 
+  template <int dim>
+  bool
+  Model<dim>::refine_to(const std::vector<std::array<unsigned int, 4>> &cells)
+  {
+    auto               &tria = adaptive_triangulation();
+    std::vector<CellId> target;
+    for (const auto &binary : cells)
+      target.emplace_back(binary);
+    std::sort(target.begin(), target.end());
+
+    // In CellId order a cell's descendants follow it at once: a cell not
+    // in the list is refined if the next entry descends from it.
+    bool refined = false;
+    for (;;)
+    {
+      unsigned int n_flagged = 0, n_foreign = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+        {
+          const CellId id = cell->id();
+          const auto   it = std::lower_bound(target.begin(), target.end(), id);
+          if (it != target.end() && *it == id)
+            continue;
+          if (it != target.end() && id.is_ancestor_of(*it))
+          {
+            cell->set_refine_flag();
+            ++n_flagged;
+          }
+          else
+            ++n_foreign;
+        }
+      n_foreign = Utilities::MPI::sum(n_foreign, mpi_communicator);
+      AssertThrow(n_foreign == 0,
+                  ExcMessage(
+                    "--restart <" + parameters.restart_directory +
+                    ">: the checkpoint's mesh is not a refinement of this "
+                    "run's coarse mesh (" +
+                    std::to_string(n_foreign) +
+                    " cells neither in it nor refined in it): restart with "
+                    "the scene, mesh and Adaptivity of the run that wrote "
+                    "it."));
+      if (Utilities::MPI::sum(n_flagged, mpi_communicator) == 0)
+        break;
+      tria.execute_coarsening_and_refinement();
+      refined = true;
+    }
+    if (refined)
+      distribute_dofs();
+    return refined;
+  }
+
+
+
   template class Model<2>;
   template class Model<3>;
 } // namespace tribos

@@ -39,7 +39,7 @@ namespace tribos
 
   template <int dim>
   void
-  Problem<dim>::adapt(const double committed_time)
+  Problem<dim>::adapt(const double committed_time, Vector *change)
   {
     TimerOutput::Scope t(timer, "adaptation");
 
@@ -53,7 +53,23 @@ namespace tribos
     using Carried = typename ContactHandler<dim>::CarriedState;
     const Carried carried =
       contact_handler ? contact_handler->carried_state() : Carried();
-    const std::vector<Vector> fields = model.adapt({&displacement()}, history);
+    std::vector<const Vector *> old_fields = {&displacement()};
+    Vector                      ghosted_change;
+    if (change != nullptr)
+    {
+      // Its dof part, ghosted as the interpolation needs.
+      const auto &layout = model.layout();
+      Vector      owned(layout.locally_owned_dofs, mpi_communicator);
+      for (const auto dof : layout.locally_owned_dofs)
+        owned[dof] = (*change)[dof];
+      owned.compress(VectorOperation::insert);
+      ghosted_change.reinit(layout.locally_owned_dofs,
+                            layout.locally_relevant_dofs,
+                            mpi_communicator);
+      ghosted_change = owned;
+      old_fields.push_back(&ghosted_change);
+    }
+    const std::vector<Vector> fields = model.adapt(old_fields, history);
     indicator.reinit(0);
     {
       TimerOutput::Scope t_setup(timer, "setup");
@@ -82,6 +98,24 @@ namespace tribos
     solution_changed();
     if (contact_handler)
       contact_handler->start_at(ghosted_solution, committed_time);
+    if (change != nullptr)
+    {
+      change->reinit(owned_solution);
+      for (const auto dof : model.layout().locally_owned_dofs)
+        (*change)[dof] = fields[1][dof];
+      change->compress(VectorOperation::insert);
+    }
+  }
+
+
+
+  template <int dim>
+  void
+  Problem<dim>::refine_to(const std::vector<std::array<unsigned int, 4>> &cells)
+  {
+    TimerOutput::Scope t(timer, "setup");
+    if (model.refine_to(cells))
+      setup_physics();
   }
 
 

@@ -95,6 +95,15 @@ namespace tribos
                         "An open slave node whose gap is below this many "
                         "sizes of its face is about to close: its faces' "
                         "cells are marked by the contact indicator.");
+      prm.declare_entry(
+        "Redo on contact growth",
+        "true",
+        dealii::Patterns::Bool(),
+        "When an increment closes slave nodes on cells below Maximum level "
+        "(the contact zone grew beyond the refined cells between two "
+        "adaptations), the mesh is adapted to the increment's solution at "
+        "once and the increment solved again from its start on the new "
+        "mesh (once per increment).");
       prm.leave_subsection();
     }
 
@@ -104,20 +113,21 @@ namespace tribos
     Adaptivity::parse_parameters(dealii::ParameterHandler &prm)
     {
       prm.enter_subsection("Adaptivity");
-      enable             = prm.get_bool("Enable");
-      initial_cycles     = prm.get_integer("Initial cycles");
-      every              = prm.get_integer("Every");
-      strategy           = prm.get("Strategy") == "fixed number" ?
-                             Strategy::fixed_number :
-                             Strategy::fixed_fraction;
-      refine_fraction    = prm.get_double("Refine fraction");
-      coarsen_fraction   = prm.get_double("Coarsen fraction");
-      maximum_level      = prm.get_integer("Maximum level");
-      minimum_level      = prm.get_integer("Minimum level");
-      maximum_dofs       = prm.get_integer("Maximum dofs");
-      kelly              = prm.get("Bulk indicator") == "kelly";
-      contact_weight     = prm.get_double("Contact indicator weight");
-      closing_gap_factor = prm.get_double("Closing gap factor");
+      enable                 = prm.get_bool("Enable");
+      initial_cycles         = prm.get_integer("Initial cycles");
+      every                  = prm.get_integer("Every");
+      strategy               = prm.get("Strategy") == "fixed number" ?
+                                 Strategy::fixed_number :
+                                 Strategy::fixed_fraction;
+      refine_fraction        = prm.get_double("Refine fraction");
+      coarsen_fraction       = prm.get_double("Coarsen fraction");
+      maximum_level          = prm.get_integer("Maximum level");
+      minimum_level          = prm.get_integer("Minimum level");
+      maximum_dofs           = prm.get_integer("Maximum dofs");
+      kelly                  = prm.get("Bulk indicator") == "kelly";
+      contact_weight         = prm.get_double("Contact indicator weight");
+      closing_gap_factor     = prm.get_double("Closing gap factor");
+      redo_on_contact_growth = prm.get_bool("Redo on contact growth");
       AssertThrow(refine_fraction + coarsen_fraction <= 1,
                   dealii::ExcMessage(
                     "Parameters <Adaptivity/Refine fraction> = " +

@@ -124,9 +124,6 @@ namespace tribos
              "deal.II 9.4 has no hanging nodes on triangles and tetrahedra; "
              "Finite element/Cells must be as meshed, on quadrilaterals or "
              "hexahedra.");
-      refuse(output.checkpoint_every == 0,
-             "checkpoints of an adapted mesh are not written yet; set "
-             "Output/Checkpoint every = 0.");
       for (const auto &pair : contact.pairs)
         refuse(dimension == 2 || pair.master_boundary.empty(),
                "the pair <" + pair.text +

@@ -185,7 +185,10 @@ namespace tribos
               << run.largest_stabilization_ratio << '\n';
         write_parallel_figures(out, figures);
         if (parameters.adaptivity.enable)
+        {
           out << "adaptations       " << run.n_adaptations << '\n';
+          out << "redone increments " << run.n_redone_increments << '\n';
+        }
         if (run.n_rebalances > 0)
           out << "rebalanced        " << run.n_rebalances
               << " time(s), the last after step " << run.rebalance_step

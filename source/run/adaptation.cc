@@ -5,6 +5,7 @@
  * system, the output on the new contact pairs).
  */
 
+#include <tribos/core/error_indicator.h>
 #include <tribos/run/simulation.h>
 
 #include <sstream>
@@ -23,21 +24,72 @@ namespace tribos
 
 
   template <int dim>
+  void
+  Simulation<dim>::restart_adaptation(StepperState &start)
+  {
+    n_adaptations =
+      static_cast<unsigned int>(restart->scalars.at("adaptations"));
+    n_redone_increments =
+      static_cast<unsigned int>(restart->scalars.at("redone increments"));
+    n_initial_cycles = parameters.adaptivity.initial_cycles;
+    // The run wrote the checkpoint at the step's end and adapted after it
+    // (change_after_step()): the same indicator on the same state.
+    if (!adapts_after(start.step))
+      return;
+    problem.estimate_error();
+    if (!problem.mark_cells())
+      return;
+    if (!change_discretization(start.time,
+                               start.change_increment > 0 ?
+                                 &checkpointer.restart_change() :
+                                 nullptr))
+      start.change_increment = 0;
+  }
+
+
+
+  template <int dim>
   bool
   Simulation<dim>::redo_increment(const unsigned int,
                                   const unsigned int increment,
-                                  const double)
+                                  const double       time)
   {
     const auto &a = parameters.adaptivity;
-    if (!a.enable || increment != 1 || n_initial_cycles >= a.initial_cycles)
+    if (!a.enable)
       return false;
-    ++n_initial_cycles;
+    if (increment == 1)
+    {
+      if (n_initial_cycles >= a.initial_cycles)
+        return false;
+      ++n_initial_cycles;
+      problem.estimate_error();
+      if (problem.mark_cells())
+        return true;
+      // The mesh is what the indicator asks for: no more cycles.
+      n_initial_cycles = a.initial_cycles;
+      return false;
+    }
+
+    // The contact zone grew beyond the refined cells: once per increment.
+    if (!a.redo_on_contact_growth || problem.contact() == nullptr ||
+        increment == redone_increment)
+      return false;
+    const unsigned int n_faces = n_faces_closed_below_level(*problem.contact(),
+                                                            a.maximum_level,
+                                                            mpi_communicator);
+    if (n_faces == 0)
+      return false;
     problem.estimate_error();
-    if (problem.mark_cells())
-      return true;
-    // The mesh is what the indicator asks for: no more cycles.
-    n_initial_cycles = a.initial_cycles;
-    return false;
+    if (!problem.mark_cells())
+      return false;
+    redone_increment = increment;
+    ++n_redone_increments;
+    std::ostringstream line;
+    line << "  the increment to t = " << time << " closed " << n_faces
+         << " contact face(s) below Adaptivity/Maximum level: the mesh is "
+            "adapted to its solution and the increment solved again";
+    output->message(line.str());
+    return true;
   }
 
 
@@ -52,10 +104,11 @@ namespace tribos
 
 
   template <int dim>
-  void
-  Simulation<dim>::change_discretization(const double time)
+  bool
+  Simulation<dim>::change_discretization(const double              time,
+                                         NonlinearProblem::Vector *change)
   {
-    problem.adapt(time);
+    problem.adapt(time, change);
     ++n_adaptations;
     // The solvers on the new system (their counters go on).
     attach_linear_solver();
@@ -65,6 +118,7 @@ namespace tribos
          << model.triangulation().n_global_active_cells() << " cells, "
          << model.dof_handler().n_dofs() << " dofs";
     output->message(line.str());
+    return change != nullptr;
   }
 
 

@@ -46,15 +46,21 @@ namespace tribos
   {
     run_clock.restart();
     problem.setup(last_rebalance.count > 0 ? &last_rebalance.weights : nullptr);
-    AssertThrow(!parameters.adaptivity.enable ||
-                  parameters.restart_directory.empty(),
-                ExcMessage("--restart with Adaptivity/Enable = true: "
-                           "checkpoints of an adapted mesh are not written "
-                           "yet, so there is none to go on from."));
     if (!parameters.restart_directory.empty())
     {
       restart = std::make_unique<Checkpoint>();
       restart->load(parameters.restart_directory);
+      // An adapted mesh: the coarse mesh refined to the checkpoint's cells
+      // before anything is compared.
+      if (parameters.adaptivity.enable)
+      {
+        AssertThrow(restart->scalars.count("adaptations") == 1,
+                    ExcMessage("--restart <" + parameters.restart_directory +
+                               ">: the checkpoint was written without "
+                               "Adaptivity/Enable: restart with the "
+                               "Adaptivity of the run that wrote it."));
+        problem.refine_to(restart->cells);
+      }
       checkpointer.check(*restart);
     }
     output = std::make_unique<RunOutput<dim>>(parameters,
@@ -104,6 +110,8 @@ namespace tribos
     }
 
     make_solvers();
+    if (restart && parameters.adaptivity.enable)
+      restart_adaptation(start);
     step_clock.restart();
     try
     {
@@ -188,6 +196,7 @@ namespace tribos
     t.largest_stabilization_ratio = problem.stabilization().largest_ratio();
     t.n_rebalances                = last_rebalance.count;
     t.n_adaptations               = n_adaptations;
+    t.n_redone_increments         = n_redone_increments;
     t.rebalance_step              = last_rebalance.step;
     t.imbalance                   = last_rebalance.imbalance;
     return t;
@@ -280,6 +289,11 @@ namespace tribos
     checkpointer.write(stepper->state(),
                        stepper->last_change(),
                        output->pvd_records(),
+                       parameters.adaptivity.enable ?
+                         std::map<std::string, double>{
+                           {"adaptations", n_adaptations},
+                           {"redone increments", n_redone_increments}} :
+                         std::map<std::string, double>(),
                        directory);
   }
 

@@ -72,8 +72,7 @@ namespace tribos
           problem.solution() = s.converged;
           problem.solution_changed();
           problem.restore();
-          observer.change_discretization(s.time);
-          discretization_changed(problem, s);
+          change_discretization(problem, observer, s);
           continue;
         }
         problem.commit(next);
@@ -214,8 +213,7 @@ namespace tribos
       observer.step_completed(record);
       if (observer.change_after_step(step))
       {
-        observer.change_discretization(s.time);
-        discretization_changed(problem, s);
+        change_discretization(problem, observer, s);
       }
     }
   }
@@ -223,12 +221,19 @@ namespace tribos
 
 
   void
-  LoadStepper::discretization_changed(IncrementalProblem &problem, Stepping &s)
+  LoadStepper::change_discretization(IncrementalProblem &problem,
+                                     SolverObserver     &observer,
+                                     Stepping           &s)
   {
-    // The unknowns are others: no change to extrapolate from.
-    s.converged               = problem.solution();
-    s.change_increment        = 0;
+    const bool has_change = s.extrapolate && s.change_increment > 0;
+    const bool carried =
+      observer.change_discretization(s.time, has_change ? &change : nullptr);
+    // The unknowns are others: without the change carried over onto them,
+    // none to extrapolate from.
+    s.converged = problem.solution();
+    if (!(has_change && carried))
+      s.change_increment = 0;
     s.plain_start             = false;
-    progress.change_increment = 0;
+    progress.change_increment = s.change_increment;
   }
 } // namespace tribos

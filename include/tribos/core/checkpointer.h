@@ -47,12 +47,14 @@ namespace tribos
     /**
      * The converged state after nominal step @p stepper.step (the stepper's
      * state, the change of its last increment @p change, the VTU series
-     * @p pvd_records) into @p directory. Collective.
+     * @p pvd_records, the run's own counts @p run_scalars, e.g. its
+     * adaptations) into @p directory. Collective.
      */
     void
     write(const StepperState                                &stepper,
           const Vector                                      &change,
           const std::vector<std::pair<double, std::string>> &pvd_records,
+          const std::map<std::string, double>               &run_scalars,
           const std::string                                 &directory) const;
 
     /** Whether @p checkpoint fits this run (mesh, dofs, pairs, integrator,
@@ -69,6 +71,9 @@ namespace tribos
      * load stepper's extrapolation goes on from it). */
     const Vector &
     restart_change() const;
+    /** The same, to be carried over onto an adapted mesh. */
+    Vector &
+    restart_change();
 
   private:
     /** What a checkpoint's state depends on beyond the sizes of the

@@ -38,6 +38,20 @@ namespace tribos
                   const TrilinosWrappers::MPI::Vector &displacement,
                   const MaterialState<dim>            &materials,
                   const ContactHandler<dim>           *contact);
+
+  /**
+   * The number of slave faces (over all pairs and processes) on cells
+   * below level @p maximum_level with a node that the current increment
+   * closed (open in the committed state, closed in the current one), and
+   * of such nodes closed on master faces of cells below that level: the
+   * contact zone grew onto cells that the last adaptation left coarse.
+   * Collective.
+   */
+  template <int dim>
+  unsigned int
+  n_faces_closed_below_level(const ContactHandler<dim> &contact,
+                             const unsigned int         maximum_level,
+                             const MPI_Comm             communicator);
 } // namespace tribos
 
 #endif

@@ -21,6 +21,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -160,6 +161,19 @@ namespace tribos
     std::vector<Vector>
     adapt(const std::vector<const Vector *> &fields,
           std::vector<std::vector<double>>  &cell_data);
+
+    /**
+     * Adaptivity on restart: refine the mesh until its active cells are
+     * @p cells (CellId::to_binary, a checkpoint's list), level by level, and
+     * distribute the dofs on it. The mesh a run adapted to is a forest of
+     * refinements of the coarse mesh, so it is rebuilt from its leaves
+     * whatever refinements and coarsenings made it. False if nothing was
+     * refined. A cell of this mesh that is neither among @p cells nor an
+     * ancestor of one of them is an error (the checkpoint's mesh is not of
+     * this scene). Collective.
+     */
+    bool
+    refine_to(const std::vector<std::array<unsigned int, 4>> &cells);
 
   private:
     /** The p4est mesh of Adaptivity/Enable. */

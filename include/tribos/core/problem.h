@@ -183,10 +183,21 @@ namespace tribos
      * the converged plastic history. The contact pairs are built again on
      * the new surfaces, their node states carried over by reference
      * position (ContactHandler::carry_over()), the multipliers with them;
-     * the nodes are paired again from the geometry. Collective.
+     * the nodes are paired again from the geometry. @p change, if given
+     * (the last increment's change of the unknowns, which the stepper
+     * extrapolates from), is carried over too: its dof part interpolated
+     * like the displacement, its multipliers' part zero. Collective.
      */
     void
-    adapt(const double time);
+    adapt(const double time, Vector *change = nullptr);
+
+    /**
+     * Adaptivity on restart: the mesh refined to a checkpoint's active
+     * @p cells (Model::refine_to()) and everything on it set up again, the
+     * state left for Checkpointer::read(). Collective.
+     */
+    void
+    refine_to(const std::vector<std::array<unsigned int, 4>> &cells);
 
     /** What a restart sets (Checkpointer::read()); what a change of the
      * mesh will carry over. */

@@ -47,6 +47,9 @@ namespace tribos
       /** A slave node whose gap is below this many of its face's sizes is
        * about to close. */
       double closing_gap_factor;
+      /** Redo an increment whose contact zone grew onto cells below
+       * Maximum level, on the mesh adapted to its solution. */
+      bool redo_on_contact_growth;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

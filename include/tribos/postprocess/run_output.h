@@ -39,9 +39,12 @@ namespace tribos
      * max/min over the processes. */
     unsigned int n_rebalances = 0;
     /** Changes of the mesh (Adaptivity). */
-    unsigned int n_adaptations  = 0;
-    unsigned int rebalance_step = 0;
-    double       imbalance      = 0;
+    unsigned int n_adaptations = 0;
+    /** Of those, the increments solved again on the new mesh after their
+     * contact zone grew onto coarse cells. */
+    unsigned int n_redone_increments = 0;
+    unsigned int rebalance_step      = 0;
+    double       imbalance           = 0;
   };
 
 

@@ -97,14 +97,22 @@ namespace tribos
                    const double       time) override;
     bool
     change_after_step(const unsigned int step) override;
-    void
-    change_discretization(const double time) override;
+    bool
+    change_discretization(const double              time,
+                          NonlinearProblem::Vector *change) override;
 
   private:
     /** Whether the mesh adapts at the end of nominal step @p step
      * (Adaptivity/Every; not after the last). */
     bool
     adapts_after(const unsigned int step) const;
+    /** A restart of an adaptive run: the count of adaptations from the
+     * checkpoint, and the adaptation after the checkpoint's step that the
+     * run made after writing it, with the checkpoint's last change of the
+     * unknowns carried over as the run carried its own (or none: then no
+     * extrapolation from @p start). */
+    void
+    restart_adaptation(StepperState &start);
 
     /** The solvers of the run (AMG gets the rigid-body modes as its
      * near-null space). */
@@ -157,8 +165,11 @@ namespace tribos
     Rebalance last_rebalance;
     bool      may_rebalance = true;
     /** Adaptivity: the first increment's solves so far that changed the
-     * mesh (Initial cycles), and the changes of the mesh in all. */
+     * mesh (Initial cycles), the changes of the mesh in all, the increments
+     * solved again after their contact grew onto coarse cells (Redo on
+     * contact growth), and the last of them (at most once each). */
     unsigned int  n_initial_cycles = 0, n_adaptations = 0;
+    unsigned int  n_redone_increments = 0, redone_increment = 0;
     double        contact_time_at_step = 0, assembly_time_at_step = 0;
     dealii::Timer step_clock, run_clock;
   };

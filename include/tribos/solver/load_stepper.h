@@ -185,10 +185,13 @@ namespace tribos
                  const unsigned int  step,
                  Stepping           &s);
 
-    /** The problem's unknowns were replaced (another discretization):
-     * the stepping goes on from them, without extrapolation. */
+    /** The observer changes the discretization at the committed state:
+     * the stepping goes on from the new unknowns, extrapolating from the
+     * last change if the observer carried it over. */
     void
-    discretization_changed(IncrementalProblem &problem, Stepping &s);
+    change_discretization(IncrementalProblem &problem,
+                          SolverObserver     &observer,
+                          Stepping           &s);
 
     const Parameters::TimeStepping &parameters;
     NewtonSolver                   &newton;

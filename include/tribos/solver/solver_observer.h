@@ -129,11 +129,16 @@ namespace tribos
      * Make the change of discretization that redo_increment() or
      * change_after_step() chose: the problem's unknowns, at its committed
      * state at @p time, are replaced by those of the new one (another
-     * size).
+     * size). @p change, if given, is the last converged increment's change
+     * of the unknowns, from which the stepper extrapolates the next
+     * increment's start: true if it was carried over onto the new unknowns
+     * (else the stepping goes on without extrapolation).
      */
-    virtual void
-    change_discretization(const double /*time*/)
+    virtual bool
+    change_discretization(const double /*time*/,
+                          NonlinearProblem::Vector * /*change*/)
     {
+      return false;
     }
 
     /** Something for the user (a cutback, the linear solver's name). */
