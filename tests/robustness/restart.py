@@ -149,7 +149,11 @@ if "core" in selected:
             # Issue 56: another method or discretization on the same mesh (the
             # contact state belongs to the other one; accepted before).
             ("other method", ["Contact/Method=augmented lagrangian"],
-             reference + "/checkpoint-00004", "method and discretization")]:
+             reference + "/checkpoint-00004", "method and discretization"),
+            # Issue 58: a fixed mesh's checkpoint with Adaptivity.
+            ("adaptivity added", ["Adaptivity/Enable=true"],
+             reference + "/checkpoint-00004",
+             "written without Adaptivity/Enable")]:
         result = run(tribos, tests + "/sliding_block.prm", reference, sets,
                      expect_success=False, extra=["--restart", directory])
         check(result.returncode == 1 and message in result.stderr and
