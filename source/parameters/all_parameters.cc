@@ -124,12 +124,6 @@ namespace tribos
              "deal.II 9.4 has no hanging nodes on triangles and tetrahedra; "
              "Finite element/Cells must be as meshed, on quadrilaterals or "
              "hexahedra.");
-      for (const auto &pair : contact.pairs)
-        refuse(dimension == 2 || pair.master_boundary.empty(),
-               "the pair <" + pair.text +
-                 "> has a deformable master in 3D, whose faces would get "
-                 "hanging nodes that the master surface does not join into "
-                 "its neighbourhoods yet; in 3D rigid masters only.");
     }
 
 

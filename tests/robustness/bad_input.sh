@@ -309,8 +309,6 @@ expect adaptivity_local_refinement "refines locally (hanging nodes)" \
   "$tribos" "$parameters/hertz_2d.prm" "${adaptive[@]}"
 expect adaptivity_simplices "no hanging nodes on triangles and tetrahedra" \
   "$tribos" "$good" "${adaptive[@]}" --set "Finite element/Cells=simplices"
-expect adaptivity_3d_master "has a deformable master in 3D" \
-  "$tribos" "$tests/patch_test_3d.prm" "${adaptive[@]}"
 expect adaptivity_dynamics "quasi-static runs only" \
   "$tribos" "$parameters/bar_impact.prm" "${adaptive[@]}"
 expect adaptivity_shared "Parallel/Mesh = shared" \

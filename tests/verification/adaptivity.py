@@ -55,6 +55,27 @@ mesh, with the state carried over.
    refinement alone, so assembly sums in another order). The
    sliding block's serial checkpoint restarted with -np 2 (case mpi): to
    1e-8.
+8. Patch tests across hanging nodes in 3D (case serial;
+   tests/data/patch_test_3d.prm, uniform pressure on the top, symmetry
+   planes): hanging nodes made by the scene's Refinement box. Mortar
+   (Lagrange multipliers and penalty) with the master's faces refined
+   under the middle of a non-matching slave (3 x 3 on 5 x 5 cells): the
+   nodal pressure uniform to 1e-10 (multipliers) and 1e-8 (penalty).
+   Node to segment on matching meshes (5 x 5 on 5 x 5) refined alike on
+   both sides: multipliers uniform to 1e-10, a uniform penalty (5000)
+   to 1e-6 (measured 3.5e-8). (One-pass node to segment does not pass
+   the patch test on non-matching meshes, with or without hanging nodes:
+   tests/verification/patch_test.py. With the size-dependent penalty
+   1000 E/h the pressure spreads by 41 %: outside Adaptivity the hanging
+   slave nodes keep penalties of their own, of their finer faces' size,
+   while their displacement follows their parents; carried by their
+   parents, as Adaptivity does, 5.8e-4.)
+9. A deformable master in 3D on an adapted mesh (case master3d): the Hertz
+   sphere (parameters/hertz_3d.prm) on an elastic block of its material
+   (With block = true, the pair 10 : 5) from the coarse scene, Maximum
+   level 4: a and p0 within 5 % of Hertz for E* = E / (2 (1 - nu^2)), the
+   mesh changed (hanging nodes on both surfaces: the master's faces join
+   across them, ContactSurface::continues_across_refinement()).
 7. Necking (case necking): Simo's necking bar (parameters/necking_bar.prm,
    axisymmetric Q2, finite-strain J2 with the hardening (36)) from its
    8 x 20 cells adapted after every step (Maximum level 1: the finest
@@ -62,7 +83,7 @@ mesh, with the state carried over.
    force within 1 % of it along the whole force-elongation curve, the
    load maximum and the post-critical drop included (measured 0.57 %, at
    the end), with fewer dofs on average."""
-# ctest: cases serial mpi ironing necking
+# ctest: cases serial mpi ironing necking master3d
 # ctest: mpirun-cases mpi
 # ctest: quick-cases serial
 
@@ -75,7 +96,8 @@ from tribos_testing import (PARAMETERS, setup, run, read_csv, check, finish,
                             numdiff, profile_difference)
 
 tribos, tests, out = setup(sys.argv)
-selected = parts(sys.argv, ("serial", "mpi", "ironing", "necking"))
+selected = parts(sys.argv, ("serial", "mpi", "ironing", "necking",
+                             "master3d"))
 
 
 def summary(folder):
@@ -227,6 +249,62 @@ if "ironing" in selected:
           "it sinks in, %.0f dofs on average against %d"
           % (100 * worst["sliding"], 100 * worst["sinking in"], mean_dofs,
              fine_dofs))
+# 8. Patch tests across hanging nodes in 3D.
+if "serial" in selected:
+    patch3 = tests + "/patch_test_3d.prm"
+    variants = [
+        ("mortar, multipliers, master refined",
+         ["Contact/Discretization=mortar",
+          "Contact/Method=lagrange multiplier",
+          "Scene/Two blocks/Refinement box=0.3, 0.3, 0.25 : 0.7, 0.7, 0.5"],
+         1e-10),
+        ("mortar, penalty, master refined",
+         ["Contact/Discretization=mortar", "Contact/Method=penalty",
+          "Scene/Two blocks/Refinement box=0.3, 0.3, 0.25 : 0.7, 0.7, 0.5"],
+         1e-8),
+        ("node to segment, penalty 5000, both sides refined alike",
+         ["Contact/Discretization=node to segment", "Contact/Method=penalty",
+          "Contact/Penalty factor=5000",
+          "Scene/Two blocks/Upper subdivisions=5, 5, 2",
+          "Scene/Two blocks/Refinement box=0.3, 0.3, 0.25 : 0.7, 0.7, 0.75"],
+         1e-6),
+        ("node to segment, multipliers, both sides refined alike",
+         ["Contact/Discretization=node to segment",
+          "Contact/Method=lagrange multiplier",
+          "Scene/Two blocks/Upper subdivisions=5, 5, 2",
+          "Scene/Two blocks/Refinement box=0.3, 0.3, 0.25 : 0.7, 0.7, 0.75"],
+         1e-10)]
+    for i, (name, sets, bound) in enumerate(variants):
+        folder = out + "/patch_3d_%d" % i
+        run(tribos, patch3, folder, sets)
+        pressures = [r["CPRESS"] for r in
+                     read_csv(folder + "/contact-00001.csv")]
+        spread = (max(pressures) - min(pressures)) / max(pressures)
+        check(spread < bound and min(pressures) > 0,
+              "3D patch test across hanging nodes, %s: %d slave nodes, "
+              "pressure spread %.1e (bound %.0e)"
+              % (name, len(pressures), spread, bound))
+
+# 9. A deformable master in 3D on an adapted mesh.
+if "master3d" in selected:
+    run(tribos, PARAMETERS + "/hertz_3d.prm", out + "/sphere_on_block", [
+        "Scene/Cylinder over block/With block=true",
+        "Scene/Cylinder over block/Contact refinements=0",
+        "Contact/Pairs=10 : 5", "Contact/Rigid surfaces=",
+        "Boundary conditions/Symmetry=12, 13, 0, 2",
+        "Boundary conditions/Dirichlet=11 : z : -0.02*t ; 4 : xyz : 0, 0, 0",
+        "Adaptivity/Enable=true", "Adaptivity/Maximum level=4",
+        "Adaptivity/Initial cycles=5", "Output/Write VTU=false"])
+    a, p0, a_h, p0_h, profile, n, P = hertz_compare(
+        out + "/sphere_on_block", 3, E / (2 * (1 - nu * nu)), R, 4)
+    counts = summary(out + "/sphere_on_block")
+    check(abs(a_h - a) / a < 0.05 and abs(p0_h - p0) / p0 < 0.05 and
+          counts["adaptations"] >= 2,
+          "sphere on a deformable block, adapted %d times (%d dofs): a %.4f "
+          "(Hertz %.4f), p0 %.4f (Hertz %.4f), profile L2 error %.4f"
+          % (counts["adaptations"], counts["dofs"], a_h, a, p0_h, p0,
+             profile))
+
 # 7. The necking bar.
 if "necking" in selected:
     necking = PARAMETERS + "/necking_bar.prm"

@@ -4,6 +4,7 @@
 #include <deal.II/grid/cell_id.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace tribos
@@ -289,6 +290,47 @@ namespace tribos
 
 
   template <int dim>
+  bool
+  ContactSurface<dim>::continues_across_refinement(const Face        &face,
+                                                   const unsigned int p,
+                                                   const unsigned int q) const
+  {
+    const auto midpoint_of =
+      [&](const unsigned int m, const unsigned int a, const unsigned int b)
+    {
+      const auto &xm  = node_list[m].reference;
+      const auto &xa  = node_list[a].reference;
+      const auto &xb  = node_list[b].reference;
+      double      off = 0, length = 0;
+      for (unsigned int d = 0; d < 3; ++d)
+      {
+        off += std::pow(xm[d] - 0.5 * (xa[d] + xb[d]), 2);
+        length += std::pow(xa[d] - xb[d], 2);
+      }
+      return off <= 1e-16 * length;
+    };
+    // One level between neighbours (p4est's balance): a finer face holds an
+    // end of the edge and its midpoint (a hanging node), a coarser one an
+    // end and the vertex beyond the other end of which that end is the
+    // midpoint.
+    for (const unsigned int g : face.neighbours)
+    {
+      const auto &other    = face_list[g];
+      const auto  vertices = other.nodes.begin();
+      const auto  end      = other.nodes.begin() + other.n_vertices;
+      for (const auto &[e, o] : {std::make_pair(p, q), std::make_pair(q, p)})
+        if (std::find(vertices, end, e) != end)
+          for (auto r = vertices; r != end; ++r)
+            if (*r != e && *r != o &&
+                (midpoint_of(*r, e, o) || midpoint_of(o, e, *r)))
+              return true;
+    }
+    return false;
+  }
+
+
+
+  template <int dim>
   void
   ContactSurface<dim>::find_neighbours()
   {
@@ -340,6 +382,11 @@ namespace tribos
             if (shares_all)
               face.continues[c][side] = true;
           }
+          if (!face.continues[c][side] && edges[c][side][1] >= 0)
+            face.continues[c][side] =
+              continues_across_refinement(face,
+                                          face.nodes[edges[c][side][0]],
+                                          face.nodes[edges[c][side][1]]);
         }
 
       if constexpr (dim == 3)

@@ -245,6 +245,13 @@ namespace tribos
      * (2D) the nodes beyond a face's ends. */
     void
     find_neighbours();
+    /** Whether the edge from node @p p to node @p q of @p face continues
+     * into a face one level finer or coarser (across a refinement border,
+     * where no other face holds both nodes). */
+    bool
+    continues_across_refinement(const Face        &face,
+                                const unsigned int p,
+                                const unsigned int q) const;
 
     std::set<types::boundary_id> ids;
     FaceShape                    face_shape;
