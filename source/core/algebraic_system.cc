@@ -74,11 +74,19 @@ namespace tribos
     if (layout.n_multipliers == 0)
       return;
     // The displacement part for the finite element evaluations.
+    copy_dof_part(owned_solution, ghosted_displacement);
+  }
+
+
+
+  void
+  AlgebraicSystem::copy_dof_part(const Vector &system, Vector &ghosted) const
+  {
     Vector owned(layout.locally_owned_dofs, mpi_communicator);
     for (const auto i : layout.locally_owned_dofs)
-      owned[i] = owned_solution[i];
+      owned[i] = system[i];
     owned.compress(VectorOperation::insert);
-    ghosted_displacement = owned;
+    ghosted = owned;
   }
 
 

@@ -58,15 +58,10 @@ namespace tribos
     if (change != nullptr)
     {
       // Its dof part, ghosted as the interpolation needs.
-      const auto &layout = model.layout();
-      Vector      owned(layout.locally_owned_dofs, mpi_communicator);
-      for (const auto dof : layout.locally_owned_dofs)
-        owned[dof] = (*change)[dof];
-      owned.compress(VectorOperation::insert);
       ghosted_change.reinit(layout.locally_owned_dofs,
                             layout.locally_relevant_dofs,
                             mpi_communicator);
-      ghosted_change = owned;
+      copy_dof_part(*change, ghosted_change);
       old_fields.push_back(&ghosted_change);
     }
     const std::vector<Vector> fields = model.adapt(old_fields, history);

@@ -225,7 +225,8 @@ namespace tribos
                                      SolverObserver     &observer,
                                      Stepping           &s)
   {
-    const bool has_change = s.extrapolate && s.change_increment > 0;
+    // (A change is kept only with Time stepping/Extrapolation.)
+    const bool has_change = s.change_increment > 0;
     const bool carried =
       observer.change_discretization(s.time, has_change ? &change : nullptr);
     // The unknowns are others: without the change carried over onto them,

@@ -97,6 +97,12 @@ namespace tribos
     void
     reinit(const Scales &scales);
 
+    /** The dof part (the first n_dofs entries) of the system vector
+     * @p system into @p ghosted (a vector on the locally relevant dofs).
+     * Collective. */
+    void
+    copy_dof_part(const Vector &system, Vector &ghosted) const;
+
     /** The matrix on the pattern @p dsp (the solver first lets go of the
      * old one); counts the new pattern. Collective. */
     void
