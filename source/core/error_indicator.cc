@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace tribos
 {
@@ -175,6 +176,81 @@ namespace tribos
 
 
   template <int dim>
+  ContactZone<dim>
+  contact_zone(const Model<dim> &model, const ContactHandler<dim> &contact)
+  {
+    const auto    &tria         = model.triangulation();
+    const MPI_Comm communicator = model.communicator();
+    // (cell, face size, 0 slave / 1 master) of the zone's faces.
+    std::vector<std::tuple<CellId::binary_type, double, int>> mine;
+    const auto face_size = [](const ContactSurface<dim>                &surface,
+                              const typename ContactSurface<dim>::Face &face)
+    {
+      double size = 0;
+      for (unsigned int i = 0; i < face.n_nodes(); ++i)
+        size = std::max(size, surface.nodes()[face.node(i)].size);
+      return size;
+    };
+    ContactZone<dim> zone;
+    for (const auto &pair : contact.pairs())
+    {
+      const auto values = node_values(pair, communicator);
+      // The box of the closed nodes (every process knows every node).
+      std::vector<Point<dim>> closed;
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+        if (values[k][2] > 0)
+        {
+          Point<dim> x;
+          for (unsigned int d = 0; d < dim; ++d)
+            x[d] = pair.slave->nodes()[k].reference[d];
+          closed.push_back(x);
+        }
+      if (!closed.empty())
+        zone.boxes.emplace_back(closed);
+      const unsigned int me = Utilities::MPI::this_mpi_process(communicator);
+      for (const auto &face : pair.slave->faces())
+        if (face.owner == me)
+          for (unsigned int i = 0; i < face.n_nodes(); ++i)
+            if (values[face.node(i)][2] > 0)
+            {
+              mine.emplace_back(face.cell, face_size(*pair.slave, face), 0);
+              break;
+            }
+      if (pair.master)
+        for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+          if (pair.owned[k] && pair.current[k].closed() &&
+              pair.current[k].paired && pair.current[k].face >= 0)
+          {
+            const auto &face = pair.master->faces()[pair.current[k].face];
+            mine.emplace_back(face.cell, face_size(*pair.master, face), 1);
+          }
+    }
+    std::map<CellId, std::array<double, 2>> cells;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, mine))
+      for (const auto &[id, size, side] : part)
+      {
+        auto &sizes =
+          cells.try_emplace(CellId(id), std::array<double, 2>{}).first->second;
+        sizes[side] = std::max(sizes[side], size);
+      }
+    zone.slave_size.reinit(tria.n_active_cells());
+    zone.master_size.reinit(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const auto found = cells.find(cell->id());
+        if (found != cells.end())
+        {
+          zone.slave_size[cell->active_cell_index()]  = found->second[0];
+          zone.master_size[cell->active_cell_index()] = found->second[1];
+        }
+      }
+    return zone;
+  }
+
+
+
+  template <int dim>
   unsigned int
   n_faces_closed_below_level(const ContactHandler<dim> &contact,
                              const unsigned int         maximum_level,
@@ -231,6 +307,10 @@ namespace tribos
   n_faces_closed_below_level<3>(const ContactHandler<3> &,
                                 const unsigned int,
                                 const MPI_Comm);
+  template ContactZone<2>
+  contact_zone<2>(const Model<2> &, const ContactHandler<2> &);
+  template ContactZone<3>
+  contact_zone<3>(const Model<3> &, const ContactHandler<3> &);
   template dealii::Vector<float>
   error_indicator<2>(const Parameters::Adaptivity &,
                      const Model<2> &,

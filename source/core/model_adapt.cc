@@ -72,7 +72,8 @@ namespace tribos
 
   template <int dim>
   bool
-  Model<dim>::mark(const dealii::Vector<float> &indicator)
+  Model<dim>::mark(const dealii::Vector<float> &indicator,
+                   const ContactZone<dim>      &zone)
   {
     auto       &tria        = adaptive_triangulation();
     const auto &a           = parameters.adaptivity;
@@ -89,6 +90,65 @@ namespace tribos
             cell->clear_coarsen_flag();
         }
     };
+    // Contact zone depth: the cells near a zone to the finest level that
+    // the flags give a cell of the zone, the master faces it touches no
+    // larger than 1.5 times its finest slave face; none of them coarsened.
+    const auto refine_zone = [&]()
+    {
+      if (zone.boxes.empty())
+        return;
+      const auto zone_cell = [&](const auto &cell)
+      {
+        return zone.slave_size[cell->active_cell_index()] > 0;
+      };
+      int finest = -1;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() && zone_cell(cell))
+          finest =
+            std::max(finest, cell->level() + (cell->refine_flag_set() ? 1 : 0));
+      finest          = std::min(Utilities::MPI::max(finest, mpi_communicator),
+                        static_cast<int>(a.maximum_level));
+      const auto near = [&](const Point<dim> &x)
+      {
+        for (const auto &box : zone.boxes)
+        {
+          double width = 0, distance = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            width            = std::max(width, box.side_length(d));
+            const double out = std::max(
+              {box.lower_bound(d) - x[d], x[d] - box.upper_bound(d), 0.});
+            distance += out * out;
+          }
+          if (std::sqrt(distance) <= a.contact_zone_depth * width)
+            return true;
+        }
+        return false;
+      };
+      double slave_size = std::numeric_limits<double>::max();
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            (zone_cell(cell) || near(cell->center())))
+        {
+          cell->clear_coarsen_flag();
+          if (cell->level() < finest)
+            cell->set_refine_flag();
+          if (zone_cell(cell))
+            slave_size = std::min(slave_size,
+                                  zone.slave_size[cell->active_cell_index()] *
+                                    (cell->refine_flag_set() ? 0.5 : 1.));
+        }
+      slave_size = Utilities::MPI::min(slave_size, mpi_communicator);
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            zone.master_size[cell->active_cell_index()] > 0)
+        {
+          cell->clear_coarsen_flag();
+          if (zone.master_size[cell->active_cell_index()] > 1.5 * slave_size &&
+              cell->level() < static_cast<int>(a.maximum_level))
+            cell->set_refine_flag();
+        }
+    };
     if (a.strategy == Strategy::fixed_fraction)
       refinement::refine_and_coarsen_fixed_fraction(tria,
                                                     indicator,
@@ -100,6 +160,7 @@ namespace tribos
                                                   a.refine_fraction,
                                                   a.coarsen_fraction);
     apply_levels();
+    refine_zone();
 
     // Counted as p4est will carry them out (a cell is coarsened only with
     // all its siblings, and the levels of neighbours differ by one).
@@ -155,6 +216,9 @@ namespace tribos
                                                     fraction,
                                                     coarsen_fraction);
         apply_levels();
+        // Without refinement left the zone is not made uniform either.
+        if (fraction > 0)
+          refine_zone();
         std::tie(n_refine, n_coarsen) = count();
       }
     }

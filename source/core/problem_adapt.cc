@@ -20,6 +20,9 @@ namespace tribos
                                         displacement(),
                                         *material_state,
                                         contact_handler.get());
+    zone = contact_handler && parameters.adaptivity.contact_zone_depth > 0 ?
+             tribos::contact_zone(model, *contact_handler) :
+             ContactZone<dim>();
     return indicator;
   }
 
@@ -32,7 +35,7 @@ namespace tribos
     TimerOutput::Scope t(timer, "adaptation");
     AssertThrow(indicator.size() == model.triangulation().n_active_cells(),
                 ExcInternalError("marking without a current indicator"));
-    return model.mark(indicator);
+    return model.mark(indicator, zone);
   }
 
 

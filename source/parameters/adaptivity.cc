@@ -104,6 +104,20 @@ namespace tribos
         "adaptations), the mesh is adapted to the increment's solution at "
         "once and the increment solved again from its start on the new "
         "mesh (once per increment).");
+      prm.declare_entry(
+        "Contact zone depth",
+        "0.25",
+        Text::non_negative_number(),
+        "The cells whose centres lie within this many widths of a pair's "
+        "contact zone (the box of its closed slave nodes, reference "
+        "configuration) are refined to the finest level the marking gives "
+        "a cell of the zone, and none of them coarsened; the master faces "
+        "the zone touches are refined until they are no larger than 1.5 "
+        "times its finest slave face. A smooth pressure (Hertz) needs the "
+        "stress under the zone as fine as the surface: slave segments of "
+        "several sizes inside the zone, fine surface cells on coarse ones, "
+        "or a master coarser than its slave make node-to-segment pressures "
+        "oscillate. 0: off (the indicator alone decides).");
       prm.leave_subsection();
     }
 
@@ -128,6 +142,7 @@ namespace tribos
       contact_weight         = prm.get_double("Contact indicator weight");
       closing_gap_factor     = prm.get_double("Closing gap factor");
       redo_on_contact_growth = prm.get_bool("Redo on contact growth");
+      contact_zone_depth     = prm.get_double("Contact zone depth");
       AssertThrow(refine_fraction + coarsen_fraction <= 1,
                   dealii::ExcMessage(
                     "Parameters <Adaptivity/Refine fraction> = " +

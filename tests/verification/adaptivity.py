@@ -4,24 +4,30 @@ mesh, with the state carried over.
 
 1. Hertz 2D (parameters/hertz_2d.prm, penalty 100 E/h) from the scene's
    coarse uniform mesh (Contact refinements = 0: 256 cells, about 5 across
-   the final contact width), Refine fraction 0.3, Maximum level 7:
-   a and p0 within 3 % of Hertz, and the pressure profile's L2 error
-   against the converged one (tests/data/hertz_2d_reference_pressure.csv:
-   x and CPRESS of the slave nodes, |x| < 0.12, of the hand-graded scene
-   refined to Contact refinements = 8, 743 934 dofs, 0.35 % from its
-   Contact refinements = 7) within 1.1 times the hand-graded scene's
-   (Contact refinements = 5, 13 482 dofs) with less than 0.6 times its
-   dofs; the mesh must have changed. (Against Hertz's half-space profile
-   the error of this scene does not converge: 3.7 % on a uniform mesh of
-   132k dofs; the finite block and cylinder differ from half-spaces.)
+   the final contact width), Maximum level 7, Refine fraction 0.15, the
+   default Contact zone depth (0.25: the cells within a quarter of the
+   contact width of the zone as fine as the zone): a and p0 within 3 % of
+   Hertz, and the pressure profile's L2 error against the converged one
+   (tests/data/hertz_2d_reference_pressure.csv: x and CPRESS of the slave
+   nodes, |x| < 0.12, of the hand-graded scene refined to Contact
+   refinements = 8, 743 934 dofs, 0.35 % from its Contact refinements =
+   7) below half the hand-graded scene's (Contact refinements = 5,
+   13 482 dofs) with fewer dofs; the mesh must have changed. The
+   indicator alone (Contact zone depth = 0, Refine fraction 0.3) within
+   1.1 times the hand-graded scene's error with less than 0.6 times its
+   dofs (it stops there: slave segments of several sizes inside the
+   zone, on coarser cells beneath, make the nodal pressures oscillate).
+   (Against Hertz's half-space profile the error of this scene does not
+   converge: 3.7 % on a uniform mesh of 132k dofs; the finite block and
+   cylinder differ from half-spaces.)
    The same with Maximum dofs = 2000: never more dofs than that.
 1b. Hertz 3D (parameters/hertz_3d.prm, the quarter sphere on a rigid
-   plane) from the coarse scene, Maximum level 5, 6 initial cycles: a and
-   p0 within 5 % of Hertz, the profile error against Hertz below 5.5 %
-   with fewer dofs than the hand-graded scene (hanging slave nodes are
-   carried by their parents: without, 36 %). The error against Hertz
-   has a floor here: the hand-graded scene gives 4.20 % at 21k dofs and
-   4.67 % refined once more (121k dofs).
+   plane) from the coarse scene, Maximum level 4, 5 initial cycles: a and
+   p0 within 5 % of Hertz, the profile error against Hertz below 4.8 %
+   (the issue's target) with fewer dofs than the hand-graded scene
+   (hanging slave nodes are carried by their parents: without, 36 %).
+   The error against Hertz has a floor here: the hand-graded scene gives
+   4.20 % at 21k dofs and 4.67 % refined once more (121k dofs).
 2. Homogeneous J2 compression, loading, unloading and reverse yielding
    (tests/data/j2_uniaxial.prm on 2 x 2 x 2 cells), adapted after every
    step (the indicator is round-off: cells are refined and coarsened
@@ -155,9 +161,12 @@ E, nu, R = 1.0, 0.3, 1.0
 hertz = PARAMETERS + "/hertz_2d.prm"
 adaptive = ["Scene/Cylinder over block/Contact refinements=0",
             "Adaptivity/Enable=true", "Adaptivity/Maximum level=7",
-            "Adaptivity/Initial cycles=8", "Adaptivity/Refine fraction=0.3",
+            "Adaptivity/Initial cycles=8", "Adaptivity/Refine fraction=0.15",
             "Output/Write VTU=false"]
 run(tribos, hertz, out + "/adaptive", adaptive)
+# The indicator alone (no refinement around the contact zone).
+indicator_only = adaptive + ["Adaptivity/Refine fraction=0.3",
+                             "Adaptivity/Contact zone depth=0"]
 
 # 4. -np 2 against serial.
 if "mpi" in selected and mpi_part(selected):
@@ -337,9 +346,10 @@ if "serial" not in selected:
     finish()
 
 run(tribos, hertz, out + "/graded", ["Output/Write VTU=false"])
+run(tribos, hertz, out + "/indicator_only", indicator_only)
 results = {}
 reference = read_csv(tests + "/hertz_2d_reference_pressure.csv")
-for name in ("graded", "adaptive"):
+for name in ("graded", "adaptive", "indicator_only"):
     a, p0, a_h, p0_h, profile, n, P = hertz_compare(
         out + "/" + name, 2, E / (1 - nu * nu), R, 1)
     error = profile_difference(read_csv(out + "/" + name +
@@ -355,10 +365,18 @@ for name in ("graded", "adaptive"):
 error, counts = results["adaptive"]
 check(counts["adaptations"] >= 2, "the adaptive run changed its mesh (%d "
       "times)" % counts["adaptations"])
+check(error <= 0.5 * results["graded"][0] and
+      counts["dofs"] < results["graded"][1]["dofs"],
+      "adaptive: pressure error %.4f against the converged profile, below "
+      "half the hand-graded mesh's %.4f, with %d < %d dofs"
+      % (error, results["graded"][0], counts["dofs"],
+         results["graded"][1]["dofs"]))
+error, counts = results["indicator_only"]
 check(error <= 1.1 * results["graded"][0] and
       counts["dofs"] < 0.6 * results["graded"][1]["dofs"],
-      "adaptive: pressure error %.4f against the converged profile, within "
-      "1.1 times the hand-graded mesh's %.4f, with %d < 0.6 x %d dofs"
+      "the indicator alone (Contact zone depth = 0): pressure error %.4f "
+      "against the converged profile, within 1.1 times the hand-graded "
+      "mesh's %.4f, with %d < 0.6 x %d dofs"
       % (error, results["graded"][0], counts["dofs"],
          results["graded"][1]["dofs"]))
 
@@ -374,17 +392,17 @@ hertz3 = PARAMETERS + "/hertz_3d.prm"
 run(tribos, hertz3, out + "/graded_3d", ["Output/Write VTU=false"])
 run(tribos, hertz3, out + "/adaptive_3d", [
     "Scene/Cylinder over block/Contact refinements=0",
-    "Adaptivity/Enable=true", "Adaptivity/Maximum level=5",
-    "Adaptivity/Initial cycles=6", "Adaptivity/Refine fraction=0.3",
+    "Adaptivity/Enable=true", "Adaptivity/Maximum level=4",
+    "Adaptivity/Initial cycles=5", "Adaptivity/Refine fraction=0.3",
     "Output/Write VTU=false"])
 a, p0, a_h, p0_h, profile, n, P = hertz_compare(
     out + "/adaptive_3d", 3, E / (1 - nu * nu), R, 4)
 dofs_3d = summary(out + "/adaptive_3d")["dofs"]
 graded_3d = summary(out + "/graded_3d")["dofs"]
 check(abs(a_h - a) / a < 0.05 and abs(p0_h - p0) / p0 < 0.05 and
-      profile < 0.055 and dofs_3d < graded_3d,
+      profile < 0.048 and dofs_3d < graded_3d,
       "Hertz 3D adaptive: a %.4f (Hertz %.4f), p0 %.4f (Hertz %.4f), "
-      "profile L2 error %.4f < 0.055 with %d dofs < %d (hand-graded)"
+      "profile L2 error %.4f < 0.048 with %d dofs < %d (hand-graded)"
       % (a_h, a, p0_h, p0, profile, dofs_3d, graded_3d))
 
 # 2. Homogeneous J2 compression: the history carried exactly.

@@ -40,6 +40,16 @@ namespace tribos
                   const ContactHandler<dim>           *contact);
 
   /**
+   * The contact zones of the current states (ContactZone): per own
+   * active cell the size of its slave face with a closed node and of its
+   * master face that such a node is closed on (0: none); per pair with
+   * closed nodes their box. Collective.
+   */
+  template <int dim>
+  ContactZone<dim>
+  contact_zone(const Model<dim> &model, const ContactHandler<dim> &contact);
+
+  /**
    * The number of slave faces (over all pairs and processes) on cells
    * below level @p maximum_level with a node that the current increment
    * closed (open in the committed state, closed in the current one), and

@@ -8,6 +8,7 @@
 #include <tribos/parameters/all_parameters.h>
 #include <tribos/scene/scene.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/timer.h>
@@ -44,6 +45,23 @@ namespace tribos
    * set_unknowns(). Others keep references into it (the DoFHandler, the
    * mapping, the quadrature, the layout): it is not copied.
    */
+  /**
+   * The contact zones of a model's pairs (Adaptivity, Contact zone
+   * depth): per active cell the size of its slave face in a zone and of
+   * its master face that a zone's node is closed on (0: none), and per
+   * pair with closed nodes the box of their reference positions.
+   * Empty: no zone rule.
+   */
+  template <int dim>
+  struct ContactZone
+  {
+    dealii::Vector<float>         slave_size;
+    dealii::Vector<float>         master_size;
+    std::vector<BoundingBox<dim>> boxes;
+  };
+
+
+
   template <int dim>
   class Model
   {
@@ -143,10 +161,16 @@ namespace tribos
     /**
      * Adaptivity: flag the cells by @p indicator (per active cell) with
      * the strategy, the levels and the dof budget of the subsection
-     * Adaptivity. True if some cell is flagged. Collective.
+     * Adaptivity; with a nonempty @p zone, the cells whose centres lie
+     * within Contact zone depth times a box's width of one of its boxes
+     * are refined to the finest level flagged among its slave cells, and
+     * its master cells until their faces are no larger than 1.5 times
+     * the finest slave face (a node-to-segment pressure oscillates with
+     * the period of a master coarser than its slave); none of these is
+     * coarsened. True if some cell is flagged. Collective.
      */
     bool
-    mark(const dealii::Vector<float> &indicator);
+    mark(const dealii::Vector<float> &indicator, const ContactZone<dim> &zone);
 
     /**
      * Refine and coarsen the flagged cells (p4est partitions the mesh

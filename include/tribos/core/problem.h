@@ -272,6 +272,9 @@ namespace tribos
     std::unique_ptr<DynamicsState<dim>> dynamics_state;
     /** The last error indicator (Adaptivity). */
     dealii::Vector<float> indicator;
+    /** The last estimate's contact zones (contact_zone(); empty without
+     * Contact zone depth). */
+    ContactZone<dim> zone;
   };
 } // namespace tribos
 

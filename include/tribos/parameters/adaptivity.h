@@ -50,6 +50,9 @@ namespace tribos
       /** Redo an increment whose contact zone grew onto cells below
        * Maximum level, on the mesh adapted to its solution. */
       bool redo_on_contact_growth;
+      /** The cells within this many widths of a pair's contact zone are
+       * refined to the finest level flagged in the zone (0: off). */
+      double contact_zone_depth;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
