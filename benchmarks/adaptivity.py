@@ -15,8 +15,10 @@ three) for
   uniform  - Contact refinements 0, Scene/Refinement 1..4;
   graded   - the scene's hand grading, Contact refinements 1..7;
   adaptive - from the coarse scene (Contact refinements 0), Refine
-             fraction 0.3, Initial cycles = Maximum level + 1, Maximum
-             level 4..10.
+             fraction 0.15, the default Contact zone depth (0.25),
+             Initial cycles = Maximum level + 1, Maximum level 4..9;
+  indicator_only - the same with Contact zone depth 0 (the indicator
+             alone decides), Refine fraction 0.3, Maximum level 4..10.
 Ironing 2D (parameters/ironing.prm at 150 steps): the run on the scene's
 mesh refined once everywhere (Scene/Refinement = 1, 120 x 40 and 24 x 24
 cells) against adaptive runs from the mesh two levels coarser (15 x 5 and
@@ -71,12 +73,17 @@ cases = [("uniform", n, ["Scene/Cylinder over block/Contact refinements=0",
                          "Scene/Refinement=%d" % n]) for n in range(1, 5)]
 cases += [("graded", n, ["Scene/Cylinder over block/Contact refinements=%d"
                          % n]) for n in range(1, 8)]
-cases += [("adaptive", n, ["Scene/Cylinder over block/Contact refinements=0",
-                           "Adaptivity/Enable=true",
-                           "Adaptivity/Maximum level=%d" % n,
-                           "Adaptivity/Initial cycles=%d" % (n + 1),
-                           "Adaptivity/Refine fraction=0.3"])
-          for n in range(4, 11)]
+adaptive = ["Scene/Cylinder over block/Contact refinements=0",
+            "Adaptivity/Enable=true"]
+cases += [("adaptive", n, adaptive + ["Adaptivity/Maximum level=%d" % n,
+                                      "Adaptivity/Initial cycles=%d" % (n + 1),
+                                      "Adaptivity/Refine fraction=0.15"])
+          for n in range(4, 10)]
+cases += [("indicator_only", n, adaptive + [
+    "Adaptivity/Maximum level=%d" % n,
+    "Adaptivity/Initial cycles=%d" % (n + 1),
+    "Adaptivity/Refine fraction=0.3", "Adaptivity/Contact zone depth=0"])
+    for n in range(4, 11)]
 for kind, level, sets in cases:
     folder = "%s/hertz_%s_%d" % (work, kind, level)
     wall = run(hertz, folder, sets, repeats=3)

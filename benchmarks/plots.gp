@@ -51,13 +51,13 @@ unset y2tics
 set logscale xy
 set xlabel "dofs (final mesh)"
 set ylabel "relative L2 error of the pressure profile (against the converged one)"
-plot for [kind in "uniform graded adaptive"] \
+plot for [kind in "uniform graded adaptive indicator_only"] \
   "< awk -F, -v k=".kind." '$1==k' doc/data/adaptivity_hertz.csv" \
   using 3:10 with linespoints title kind
 
 set output "doc/adaptivity_error_vs_time.png"
 set title "Hertz 2D: pressure profile error against wall time (all cycles)"
 set xlabel "wall time of the run [s]"
-plot for [kind in "uniform graded adaptive"] \
+plot for [kind in "uniform graded adaptive indicator_only"] \
   "< awk -F, -v k=".kind." '$1==k' doc/data/adaptivity_hertz.csv" \
   using 6:10 with linespoints title kind
