@@ -196,6 +196,37 @@ namespace tribos
         pair.face_known.assign(pair.master->faces().size(), false);
       }
     }
+    /**
+     * Slave and master meeting at an edge of one body: the nodes there sit
+     * on the master with zero gap and the body turns inside out at them
+     * (det F <= 0, with no hint at the pair). Refused, pointing to
+     * self-contact.
+     */
+    template <int dim>
+    void
+    refuse_shared_nodes(const ContactPair<dim> &pair)
+    {
+      const auto                       &description = pair.description;
+      std::set<types::global_dof_index> master_nodes;
+      for (const auto &node : pair.master->nodes())
+        master_nodes.insert(node.dofs[0]);
+      for (const auto &node : pair.slave->nodes())
+        AssertThrow(
+          master_nodes.count(node.dofs[0]) == 0,
+          ExcMessage(
+            "Parameter <Contact/Pairs>: in pair <" + description.text +
+            ">, the slave and master surfaces share nodes (they meet at an "
+            "edge of one body, e.g. at the slave node at " +
+            Text::join(std::vector<double>(node.reference.begin(),
+                                           node.reference.begin() + dim)) +
+            "). Boundaries of one body that meet each other are one "
+            "surface for self-contact: give the same ids on both sides "
+            "(e.g. <" +
+            Text::join(description.slave_boundary) + ", " +
+            Text::join(description.master_boundary) + " : " +
+            Text::join(description.slave_boundary) + ", " +
+            Text::join(description.master_boundary) + ">)."));
+    }
   } // namespace
 
 
@@ -258,7 +289,8 @@ namespace tribos
     std::vector<Parameters::ContactPair> descriptions = parameters.pairs;
     if (parameters.two_pass)
       for (const auto &p : parameters.pairs)
-        if (p.rigid_surface.empty())
+        // A self pair is both passes already.
+        if (p.rigid_surface.empty() && !p.self_contact())
         {
           auto swapped            = p;
           swapped.slave_boundary  = p.master_boundary;
@@ -300,6 +332,16 @@ namespace tribos
                              "= lagrange multiplier: node-to-segment "
                              "constraints of both passes over-constrain the "
                              "interface (singular system). Use one-pass."));
+      const bool self = description.self_contact();
+      AssertThrow(!self || pair.enforcement->n_node_unknowns() == 0,
+                  ExcMessage("Parameter <Contact/Pairs>: the self-contact "
+                             "pair <" +
+                             description.text +
+                             "> with Contact/Method = lagrange multiplier: "
+                             "every node of a self-contact surface is a slave "
+                             "and every face a master (both passes), which "
+                             "over-constrains the interface for multipliers. "
+                             "Use penalty or augmented lagrangian."));
       pair.slave = surface(description.slave_boundary);
       double E_s = std::numeric_limits<double>::max();
       for (const auto body : pair.slave->bodies())
@@ -308,36 +350,26 @@ namespace tribos
       if (description.rigid_surface.empty())
       {
         pair.master = surface(description.master_boundary);
-        // Slave and master meeting at an edge of one body: the nodes there
-        // sit on the master with zero gap and the body turns inside out
-        // at them (det F <= 0, with no hint at the pair).
-        std::set<types::global_dof_index> master_nodes;
-        for (const auto &node : pair.master->nodes())
-          master_nodes.insert(node.dofs[0]);
-        for (const auto &node : pair.slave->nodes())
-          AssertThrow(
-            master_nodes.count(node.dofs[0]) == 0,
-            ExcMessage(
-              "Parameter <Contact/Pairs>: in pair <" + description.text +
-              ">, the slave and master surfaces share nodes (they "
-              "meet at an edge of one body, e.g. at the slave node "
-              "at " +
-              Text::join(std::vector<double>(node.reference.begin(),
-                                             node.reference.begin() + dim)) +
-              "). Contact between two boundaries of one body that "
-              "meet each other is self-contact, which tribos does "
-              "not take yet: pair boundaries of different bodies, "
-              "or boundaries of one body that do not touch."));
+        if (!self)
+          refuse_shared_nodes(pair);
         double E_m = std::numeric_limits<double>::max();
         for (const auto body : pair.master->bodies())
           E_m = std::min(E_m, youngs_modulus(body));
         pair.contact_modulus = E_s * E_m / (E_s + E_m);
-        pair.area_factor     = parameters.two_pass ? 0.5 : 1.;
+        // Two passes (or a self pair, which is both): each carries half.
+        pair.area_factor = parameters.two_pass || self ? 0.5 : 1.;
       }
       else
         pair.rigid = rigid_surfaces.at(description.rigid_surface);
       pair.discretization =
         create_discretization<dim>(description, parameters, axisymmetric);
+      AssertThrow(!self || pair.discretization->name() == "node to segment",
+                  ExcMessage("Parameter <Contact/Pairs>: the self-contact "
+                             "pair <" +
+                             description.text + "> is discretized " +
+                             pair.discretization->name() +
+                             "; self-contact takes node to segment (without "
+                             "Master smoothing) only."));
 
       set_up_nodes(pair,
                    pairs,

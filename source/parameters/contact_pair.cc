@@ -244,13 +244,18 @@ namespace tribos
                         "of a surface in <Contact/Rigid surfaces>."));
           pair.master_boundary.insert(id);
         }
-        for (const auto id : pair.master_boundary)
-          AssertThrow(pair.slave_boundary.count(id) == 0,
-                      dealii::ExcMessage(
-                        "Parameter <" + pair_entry + ">: item <" + item +
-                        ">: boundary id " + std::to_string(id) +
-                        " is both slave and master; a pair needs "
-                        "different slave and master boundaries."));
+        // The same ids on both sides are self-contact; a partial overlap
+        // is neither.
+        if (pair.master_boundary != pair.slave_boundary)
+          for (const auto id : pair.master_boundary)
+            AssertThrow(pair.slave_boundary.count(id) == 0,
+                        dealii::ExcMessage(
+                          "Parameter <" + pair_entry + ">: item <" + item +
+                          ">: boundary id " + std::to_string(id) +
+                          " is both slave and master. A pair needs "
+                          "different slave and master boundaries, or the "
+                          "same ones on both sides for self-contact (e.g. <" +
+                          parts[0] + " : " + parts[0] + ">)."));
       }
       pair.method               = defaults.method;
       pair.normal_penalty       = defaults.normal_penalty;

@@ -95,6 +95,14 @@ namespace tribos
        * registered one.
        */
       std::string discretization;
+
+      /** Self-contact: the slave surface is its own master (the same
+       * boundary ids on both sides). */
+      bool
+      self_contact() const
+      {
+        return rigid_surface.empty() && slave_boundary == master_boundary;
+      }
     };
 
     /** The defaults of a pair: the entries of the subsection Contact. */

@@ -5,6 +5,7 @@
 #include <tribos/contact/discretization/smoothed_node_to_face_discretization.h>
 #include <tribos/contact/discretization/smoothed_node_to_segment_discretization.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -24,6 +25,154 @@ namespace tribos
   NodeToSegmentDiscretization<dim>::initialize(const ContactPair<dim> &pair)
   {
     require_linear_slave_faces(pair);
+    own_neighbourhood.clear();
+    if (pair.master != pair.slave)
+      return;
+    const auto &nodes = pair.slave->nodes();
+    const auto &faces = pair.slave->faces();
+    double      size  = 0;
+    own_neighbourhood.resize(nodes.size());
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+    {
+      auto &near = own_neighbourhood[k];
+      for (const unsigned int f : nodes[k].faces)
+        for (unsigned int i = 0; i < faces[f].n_nodes(); ++i)
+          for (const unsigned int g : nodes[faces[f].node(i)].faces)
+            near.push_back(g);
+      std::sort(near.begin(), near.end());
+      near.erase(std::unique(near.begin(), near.end()), near.end());
+      size = std::max(size, nodes[k].size);
+    }
+    // The faces are looked for within twice the largest element size,
+    // then twice as far until one is found or the reach passes twice the
+    // surface's extent (a node must be paired, open, before an increment
+    // carries it through the opposite face: paired, it keeps its face and
+    // its gap turns negative; unpaired, it would pass). Search distance,
+    // if set, is the farthest.
+    double extent = 0;
+    for (unsigned int d = 0; d < 3; ++d)
+    {
+      double lo = std::numeric_limits<double>::max(), hi = -lo;
+      for (const auto &node : nodes)
+      {
+        lo = std::min(lo, node.reference[d]);
+        hi = std::max(hi, node.reference[d]);
+      }
+      extent = std::max(extent, hi - lo);
+    }
+    reach         = 2 * size;
+    maximum_reach = std::min(parameters.search_distance, 2 * extent);
+  }
+
+
+
+  template <int dim>
+  Projection
+  NodeToSegmentDiscretization<dim>::project(const ContactPair<dim> &pair,
+                                            const unsigned int      f,
+                                            const Vec3<double>     &x,
+                                            const bool              clamp,
+                                            Vec3<double>           *normal,
+                                            Vec3<double>           *point) const
+  {
+    const auto  &face = pair.master->faces()[f];
+    Vec3<double> xm[4];
+    for (unsigned int v = 0; v < face.n_vertices; ++v)
+      xm[v] = pair.master_positions[face.nodes[v]];
+    return pair.master->shape().template visit_linear<dim>(
+      [&](auto kind)
+      {
+        const Projection p = decltype(kind)::project(x, xm, clamp);
+        if (normal != nullptr || point != nullptr)
+        {
+          Vec3<double> xbar, a[2], n;
+          decltype(kind)::geometry(xm, p.xi, xbar, a, n);
+          if (normal != nullptr)
+            *normal = n;
+          if (point != nullptr)
+            *point = xbar;
+        }
+        return p;
+      });
+  }
+
+
+
+  template <int dim>
+  Vec3<double>
+  NodeToSegmentDiscretization<dim>::node_normal(const ContactPair<dim> &pair,
+                                                const unsigned int      k) const
+  {
+    Vec3<double> sum{{0, 0, 0}};
+    for (const unsigned int f : pair.slave->nodes()[k].faces)
+      if (pair.face_known[f])
+      {
+        Vec3<double> n;
+        project(pair, f, pair.master_positions[k], true, &n);
+        sum = sum + n;
+      }
+    const double length = norm(sum);
+    return length > 0 ? scale(1. / length, sum) : sum;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  NodeToSegmentDiscretization<dim>::self_candidate_faces(
+    const ContactPair<dim> &pair,
+    const unsigned int      k,
+    const Vec3<double>     &x,
+    NodeState              &state) const
+  {
+    const auto        &near = own_neighbourhood[k];
+    const Vec3<double> n_k  = node_normal(pair, k);
+    const double       size = pair.slave->nodes()[k].size;
+    const auto         admissible =
+      [&](const unsigned int f, double &distance, const double r)
+    {
+      if (!pair.face_known[f] ||
+          std::binary_search(near.begin(), near.end(), f))
+        return false;
+      Vec3<double>     n_f, xbar;
+      const Projection p = project(pair, f, x, true, &n_f, &xbar);
+      if (dot(n_k, n_f) > -0.5)
+        return false;
+      // Behind the face by more than half an element is the other side of
+      // the node's own body.
+      if (dot(x - xbar, n_f) < -0.5 * size)
+        return false;
+      distance = p.distance;
+      return distance <= r;
+    };
+    int    best          = -1;
+    double best_distance = std::numeric_limits<double>::max();
+    for (double r = std::min(reach, maximum_reach); best < 0;)
+    {
+      for (const unsigned int f : pair.search.faces_near(x, r))
+      {
+        double distance;
+        if (admissible(f, distance, r) && distance < best_distance)
+        {
+          best          = f;
+          best_distance = distance;
+        }
+      }
+      if (r >= maximum_reach)
+        break;
+      r = std::min(2 * r, maximum_reach);
+    }
+    if (best < 0)
+      return {};
+    state.distance = best_distance;
+    std::vector<unsigned int> candidates(1, best);
+    for (const unsigned int g : pair.master->faces()[best].neighbours)
+    {
+      double distance;
+      if (admissible(g, distance, maximum_reach))
+        candidates.push_back(g);
+    }
+    return candidates;
   }
 
 
@@ -69,8 +218,13 @@ namespace tribos
     // A face that is not known lies beyond the search distance.
     if (state.paired && pair.face_known[state.face])
     {
-      const Projection kept = project_onto(state.face, false);
-      if (kept.distance <= parameters.search_distance &&
+      const bool       self = !own_neighbourhood.empty();
+      Vec3<double>     n_f;
+      const Projection kept =
+        project(pair, state.face, x, false, self ? &n_f : nullptr);
+      // Self-contact: kept while the face still faces the node.
+      const bool facing = !self || dot(node_normal(pair, k), n_f) < 0;
+      if (kept.distance <= parameters.search_distance && facing &&
           within_band(state.face, kept))
       {
         state.projection = kept;
@@ -81,7 +235,8 @@ namespace tribos
     state.face     = -1;
     state.distance = std::numeric_limits<double>::quiet_NaN();
     const std::vector<unsigned int> candidates =
-      candidate_faces(pair, x, state);
+      own_neighbourhood.empty() ? candidate_faces(pair, x, state) :
+                                  self_candidate_faces(pair, k, x, state);
     if (candidates.empty())
       return false;
 

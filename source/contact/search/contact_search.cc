@@ -6,6 +6,9 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
+#include <iterator>
+
 namespace tribos
 {
   namespace
@@ -134,6 +137,31 @@ namespace tribos
                          CGAL::to_double(result.first.z())}};
     return true;
   }
+
+  template <int dim>
+  std::vector<unsigned int>
+  ContactSearch<dim>::faces_near(const Vec3<double> &x,
+                                 const double        reach) const
+  {
+    std::vector<unsigned int> faces;
+    if (tree->elements.empty())
+      return faces;
+    const CGAL::Bbox_3                              box(x[0] - reach,
+                           x[1] - reach,
+                           x[2] - reach,
+                           x[0] + reach,
+                           x[1] + reach,
+                           x[2] + reach);
+    std::vector<typename Primitives<dim>::Iterator> hits;
+    tree->tree.all_intersected_primitives(box, std::back_inserter(hits));
+    for (const auto &hit : hits)
+      faces.push_back(tree->face_of_element[hit - tree->elements.cbegin()]);
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    return faces;
+  }
+
+
 
   template class ContactSearch<2>;
   template class ContactSearch<3>;

@@ -79,7 +79,48 @@ namespace tribos
     static bool
     couple_face(ContactPair<dim> &pair, const unsigned int k);
 
+
     const Parameters::Contact &parameters;
+
+  private:
+    /**
+     * Self-contact (the slave surface is its own master): the faces near
+     * slave node @p k at @p x that may touch it: not a face of the node
+     * or one sharing a node with those (its own neighbourhood), facing it
+     * (the node's normal against the face's below -0.5), the node not
+     * behind it by more than half its element size (else it is the other
+     * side of the node's own body), within the reach (doubled until one
+     * is found, up to the largest). The closest such and
+     * its admissible neighbours; empty if none. Sets @p state.distance.
+     */
+    std::vector<unsigned int>
+    self_candidate_faces(const ContactPair<dim> &pair,
+                         const unsigned int      k,
+                         const Vec3<double>     &x,
+                         NodeState              &state) const;
+
+    /** The projection of @p x onto face @p f (clamped to the face if
+     * @p clamp), with the face's unit outward normal and point there. */
+    Projection
+    project(const ContactPair<dim> &pair,
+            const unsigned int      f,
+            const Vec3<double>     &x,
+            const bool              clamp,
+            Vec3<double>           *normal = nullptr,
+            Vec3<double>           *point  = nullptr) const;
+
+    /** Self-contact: the unit normal of slave node @p k, the mean of its
+     * known faces' normals there. */
+    Vec3<double>
+    node_normal(const ContactPair<dim> &pair, const unsigned int k) const;
+
+    /** Self-contact: per node, the faces that share a node with its faces
+     * (sorted; its own faces included). Empty for other pairs. */
+    std::vector<std::vector<unsigned int>> own_neighbourhood;
+    /** Self-contact: how far from a node faces are looked for first,
+     * and at most (see initialize()). */
+    double reach         = 0;
+    double maximum_reach = 0;
   };
 } // namespace tribos
 

@@ -49,6 +49,14 @@ namespace tribos
                  double             &squared_distance,
                  Vec3<double>       *closest_point = nullptr) const;
 
+    /**
+     * The faces of the tree (their numbers on the surface, each once)
+     * that come closer to @p point than @p reach in every coordinate
+     * (a box query: a superset of those within the distance @p reach).
+     */
+    std::vector<unsigned int>
+    faces_near(const Vec3<double> &point, const double reach) const;
+
   private:
     struct Tree;
     std::unique_ptr<Tree> tree;

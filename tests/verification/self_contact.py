@@ -1,0 +1,111 @@
+"""Self-contact (issue 59): a pair whose slave surface is its own master
+(Contact/Pairs = 1 : 1), node to segment, both passes in one pair with
+half weights.
+
+1. The patch test's two blocks as one surface (Pairs = 3, 12 : 3, 12) give
+   the two-pass pair 12 : 3 (Passes = two-pass) to round-off: every node
+   a slave, every face opposite it a master, each with half the weight
+   (2D and 3D, node to segment, penalty; nodal pressures to 1e-10 of the
+   mean, the total normal force to 1e-9, the digits history.csv has).
+2. Symmetry equivalence: the U-shaped body of tests/data/u_shape.geo
+   (tests/data/self_contact_u.prm) whose arms are pressed together by a
+   traction until their inner faces (one surface) touch; the half model
+   (the right half, the cut a symmetry plane, the slot face against a
+   rigid wall at the symmetry plane) gives the same contact force at
+   every step: within 1 % (the left arm's nodes do not meet the right
+   arm's, so the discretizations differ). The same with the augmented
+   Lagrangian.
+3. -np 2 equal to serial (1e-8).
+4. Bad input: multipliers and mortar on a self-contact pair are refused
+   (tests/robustness/bad_input.sh)."""
+# ctest: cases serial mpi
+# ctest: mpirun-cases mpi
+# ctest: quick-cases serial
+
+import sys
+
+from tribos_testing import (setup, run, read_csv, check, finish, parts,
+                            mpi_part)
+
+tribos, tests, out = setup(sys.argv)
+selected = parts(sys.argv, ("serial", "mpi"))
+u_shape = tests + "/self_contact_u.prm"
+half = ["Scene/Mesh file=u_shape_half.msh",
+        "Boundary conditions/Neumann=7 : -0.15*t, 0",
+        "Boundary conditions/Symmetry=4",
+        "Contact/Pairs=1 : wall",
+        "Contact/Rigid surfaces=wall : plane : 0, 0, 0 : 1, 0, 0 : 0, 0"]
+
+
+def by_time(folder):
+    return {round(r["time"], 9): r for r in read_csv(folder + "/history.csv")}
+
+
+if "serial" in selected:
+    # 1. The patch test as one surface against the two-pass pair.
+    for dim, prm, pair in ((2, "patch_test.prm", "3, 12 : 3, 12"),
+                           (3, "patch_test_3d.prm", "14, 5 : 14, 5")):
+        common = ["Contact/Discretization=node to segment"]
+        run(tribos, tests + "/" + prm, out + "/patch_%dd_two_pass" % dim,
+            common + ["Contact/Passes=two-pass"])
+        run(tribos, tests + "/" + prm, out + "/patch_%dd_self" % dim,
+            common + ["Contact/Pairs=" + pair])
+        pressures = []
+        for name in ("two_pass", "self"):
+            nodal = {}
+            for r in read_csv(out + "/patch_%dd_%s/contact-00001.csv"
+                              % (dim, name)):
+                key = (r["body"], round(r["X"], 9), round(r["Y"], 9),
+                       round(r["Z"], 9))
+                nodal[key] = max(nodal.get(key, 0), r["CPRESS"])
+            pressures.append(nodal)
+        mean = sum(pressures[0].values()) / len(pressures[0])
+        worst = max(abs(pressures[0][k] - pressures[1].get(k, 1e300))
+                    for k in pressures[0]) / mean
+        two = read_csv(out + "/patch_%dd_two_pass/history.csv" % dim)[-1]
+        one = read_csv(out + "/patch_%dd_self/history.csv" % dim)[-1]
+        force = abs(one["pair0_normal_force"] - two["pair0_normal_force"] -
+                    two["pair1_normal_force"]) / one["pair0_normal_force"]
+        check(len(pressures[0]) == len(pressures[1]) and worst < 1e-10 and
+              force < 1e-9,
+              "%dD patch test, one self-contact surface against the two-pass "
+              "pair: %d nodes, nodal pressures to %.1e of the mean (bound "
+              "1e-10), normal force to %.1e (bound 1e-9: history.csv's ten "
+              "digits)"
+              % (dim, len(pressures[0]), worst, force))
+
+    # 2. The U-shaped body against its half model.
+    for method in ("penalty", "augmented lagrangian"):
+        name = method.replace(" ", "_")
+        sets = ["Contact/Method=" + method]
+        run(tribos, u_shape, out + "/u_" + name, sets)
+        run(tribos, u_shape, out + "/u_half_" + name, sets + half)
+        full, reference = by_time(out + "/u_" + name), \
+            by_time(out + "/u_half_" + name)
+        worst, n_compared = 0, 0
+        for t, r in reference.items():
+            if r["pair0_normal_force"] > 0:
+                n_compared += 1
+                worst = max(worst, abs(full[t]["pair0_normal_force"] /
+                                       r["pair0_normal_force"] - 1))
+        final = full[max(full)]
+        check(n_compared >= 8 and worst < 0.01 and final["n_active"] >= 8,
+              "U-shaped body, %s: the self-contact force within %.2f %% "
+              "(bound 1 %%) of the half model's at its %d steps in contact "
+              "(final %.5f, %d nodes closed on both arms)"
+              % (method, 100 * worst, n_compared,
+                 final["pair0_normal_force"], final["n_active"]))
+
+# 3. -np 2 against serial.
+if "mpi" in selected and mpi_part(selected):
+    run(tribos, u_shape, out + "/u_serial")
+    run(tribos, u_shape, out + "/u_np2", mpi_ranks=2)
+    serial, parallel = by_time(out + "/u_serial"), by_time(out + "/u_np2")
+    worst = max(abs(parallel[t]["pair0_normal_force"] -
+                    serial[t]["pair0_normal_force"]) /
+                max(serial[t]["pair0_normal_force"], 1e-12)
+                for t in serial if serial[t]["pair0_normal_force"] > 0)
+    check(sorted(serial) == sorted(parallel) and worst < 1e-8,
+          "U-shaped body, -np 2 equal to serial: the same increments, "
+          "contact force to %.1e (bound 1e-8)" % worst)
+finish()
