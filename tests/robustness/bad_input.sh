@@ -176,6 +176,9 @@ expect self_contact_mortar "self-contact takes node to segment" "$tribos" \
   "$tests/self_contact_u.prm" --set "Contact/Discretization=mortar"
 expect self_contact_smoothed "self-contact takes node to segment" "$tribos" \
   "$tests/self_contact_u.prm" --set "Contact/Master smoothing=averaged normals"
+expect self_contact_two_faces "each of which shares a node with every other" \
+  "$tribos" "$tests/patch_test.prm" --set "Contact/Pairs=13 : 13" \
+  --set "Scene/Two blocks/Upper subdivisions=2, 2"
 # Dynamics.
 expect dynamics_no_density "Materials/Density" "$tribos" "$good" \
   --set "Time stepping/Integrator=newmark"

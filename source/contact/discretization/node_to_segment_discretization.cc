@@ -43,6 +43,21 @@ namespace tribos
       near.erase(std::unique(near.begin(), near.end()), near.end());
       size = std::max(size, nodes[k].size);
     }
+    // A surface whose every face is in every node's neighbourhood (two
+    // segments, one quadrilateral) has nothing to touch.
+    bool can_touch = false;
+    for (const auto &near : own_neighbourhood)
+      can_touch = can_touch || near.size() < faces.size();
+    AssertThrow(can_touch,
+                ExcMessage("Parameter <Contact/Pairs>: the self-contact pair "
+                           "<" +
+                           pair.description.text + "> has a surface of " +
+                           std::to_string(faces.size()) +
+                           " face(s), each of which shares a node with every "
+                           "other: no node of it can touch a face of it that "
+                           "is not its own or a neighbour of its own. A "
+                           "self-contact surface needs faces apart from each "
+                           "node's."));
     // The faces are looked for within twice the largest element size,
     // then twice as far until one is found or the reach passes twice the
     // surface's extent (a node must be paired, open, before an increment
