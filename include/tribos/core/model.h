@@ -31,21 +31,6 @@ namespace tribos
   using namespace dealii;
 
   /**
-   * The discretization of all bodies of a scene: one mesh (parallel::shared
-   * or parallel::fullydistributed, Parallel/Mesh; a p4est
-   * parallel::distributed one that adapts, Adaptivity), its reference geometry
-   * (curved cells), the finite element and Gauss rules of its cell kind, one
-   * DoFHandler, who holds which unknowns (UnknownsLayout), the constraints
-   * (hanging nodes, Dirichlet, symmetry) and the dofs of each Dirichlet
-   * condition. It knows nothing of materials, contact or the solver: the
-   * contact's extra unknowns reach it as plain data (ContactUnknowns). This
-   * is where a change of the mesh during a run belongs.
-   *
-   * Built in three steps, in this order: create_mesh(), distribute_dofs(),
-   * set_unknowns(). Others keep references into it (the DoFHandler, the
-   * mapping, the quadrature, the layout): it is not copied.
-   */
-  /**
    * The contact zones of a model's pairs (Adaptivity, Contact zone
    * depth): per active cell the size of its slave face in a zone and of
    * its master face that a zone's node is closed on (0: none), and per
@@ -62,6 +47,21 @@ namespace tribos
 
 
 
+  /**
+   * The discretization of all bodies of a scene: one mesh (parallel::shared
+   * or parallel::fullydistributed, Parallel/Mesh; a p4est
+   * parallel::distributed one that adapts, Adaptivity), its reference geometry
+   * (curved cells), the finite element and Gauss rules of its cell kind, one
+   * DoFHandler, who holds which unknowns (UnknownsLayout), the constraints
+   * (hanging nodes, Dirichlet, symmetry) and the dofs of each Dirichlet
+   * condition. It knows nothing of materials, contact or the solver: the
+   * contact's extra unknowns reach it as plain data (ContactUnknowns). This
+   * is where a change of the mesh during a run belongs.
+   *
+   * Built in three steps, in this order: create_mesh(), distribute_dofs(),
+   * set_unknowns(). Others keep references into it (the DoFHandler, the
+   * mapping, the quadrature, the layout): it is not copied.
+   */
   template <int dim>
   class Model
   {

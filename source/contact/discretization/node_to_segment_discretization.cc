@@ -214,15 +214,7 @@ namespace tribos
     NodeState          &state = pair.current[k];
     const Vec3<double> &x     = pair.slave_positions[k];
     const auto         &faces = pair.master->faces();
-    const auto project_onto   = [&](const unsigned int f, const bool clamp)
-    {
-      Vec3<double> xm[4];
-      for (unsigned int v = 0; v < faces[f].n_vertices; ++v)
-        xm[v] = pair.master_positions[faces[f].nodes[v]];
-      return pair.master->shape().template visit_linear<dim>(
-        [&](auto kind) { return decltype(kind)::project(x, xm, clamp); });
-    };
-    const auto within_band = [&](const unsigned int, const Projection &p)
+    const auto within_band    = [&](const unsigned int, const Projection &p)
     {
       return pair.master->shape().template visit_linear<dim>(
         [&](auto kind) { return decltype(kind)::within(p.xi, edge_band); });
@@ -262,7 +254,7 @@ namespace tribos
     double best_distance = std::numeric_limits<double>::max();
     for (const unsigned int f : candidates)
     {
-      const Projection p      = project_onto(f, true);
+      const Projection p      = project(pair, f, x, true);
       const bool       inside = p.inside();
       if ((inside && !best_inside) ||
           (inside == best_inside && p.distance < best_distance))
@@ -285,7 +277,7 @@ namespace tribos
         at_end = true;
     if (at_end)
     {
-      const Projection extended = project_onto(state.face, false);
+      const Projection extended = project(pair, state.face, x, false);
       state.paired              = within_band(state.face, extended);
       state.projection          = extended;
     }

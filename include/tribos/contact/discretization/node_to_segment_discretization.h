@@ -79,7 +79,6 @@ namespace tribos
     static bool
     couple_face(ContactPair<dim> &pair, const unsigned int k);
 
-
     const Parameters::Contact &parameters;
 
   private:
