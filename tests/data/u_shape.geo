@@ -6,11 +6,15 @@
 // alone for the half model (the cut x = 0 a symmetry plane):
 //   gmsh -2 u_shape.geo -o u_shape.msh
 //   gmsh -2 u_shape.geo -setnumber half 1 -o u_shape_half.msh
+//   gmsh -2 u_shape.geo -setnumber split 1 -o u_shape_split.msh
 // Physical groups (lines): 1 the arms' inner faces x = -0.5, 0.5 (the slot),
 // 2 the left arm's top, 6 the right arm's top, 3 the bottom y = 0, 4 the
 // cut x = 0 (half model), 7 the right arm's outer face x = 3, 8 the left
-// one's, 5 the rest of the boundary; surface 1 the body.
+// one's, 5 the rest of the boundary; surface 1 the body. With split = 1
+// the slot's faces are two boundaries, 9 the right arm's and 10 the left
+// arm's (the same body as a two-body pair would see it).
 DefineConstant[ half = {0, Name "1: the right half only"},
+                split = {0, Name "1: the slot's faces as boundaries 9, 10"},
                 n    = {4, Name "cells per unit length"} ];
 Mesh.MshFileVersion = 2.2;
 Point(1) = {0, 0, 0};
@@ -50,7 +54,12 @@ If (half == 1)
   Physical Curve(5) = {13, 17};
   Physical Surface(1) = {11, 12, 13};
 Else
-  Physical Curve(1) = {18, 28};
+  If (split == 1)
+    Physical Curve(9) = {18};
+    Physical Curve(10) = {28};
+  Else
+    Physical Curve(1) = {18, 28};
+  EndIf
   Physical Curve(2) = {20};
   Physical Curve(6) = {10};
   Physical Curve(3) = {11, 12, 21, 22};

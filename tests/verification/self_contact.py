@@ -15,17 +15,31 @@ half weights.
    every step: within 1 % (the left arm's nodes do not meet the right
    arm's, so the discretizations differ). The same with the augmented
    Lagrangian.
-3. -np 2 equal to serial (1e-8).
-4. Bad input: multipliers and mortar on a self-contact pair are refused
+3. Friction (mu = 0.3): the U's arms closed and sheared against each other
+   (tractions up on the right arm's top, down on the left one's) as one
+   self-contact surface give what the same U gives with its slot's faces
+   as two boundaries and Passes = two-pass (tests/data/u_shape_split.msh),
+   the existing two-body friction: nodal pressures and shear tractions to
+   1e-6 of the largest at the end. Coulomb's law at the nodes: sliding
+   nodes carry |T| = mu p (so the dissipation at a node is mu p times its
+   slip increment), sticking ones |T| <= mu p.
+4. Restart: the frictional run restarted from its checkpoint after step 5
+   equals the uninterrupted run (history.csv without wall times and
+   residual norms and the last contact CSV to 1e-10, the same Newton
+   iterations).
+5. -np 2 equal to serial (1e-8).
+6. Bad input: multipliers and mortar on a self-contact pair are refused
    (tests/robustness/bad_input.sh)."""
 # ctest: cases serial mpi
 # ctest: mpirun-cases mpi
 # ctest: quick-cases serial
 
+import math
+import shutil
 import sys
 
 from tribos_testing import (setup, run, read_csv, check, finish, parts,
-                            mpi_part)
+                            mpi_part, strip_columns, numdiff)
 
 tribos, tests, out = setup(sys.argv)
 selected = parts(sys.argv, ("serial", "mpi"))
@@ -96,7 +110,69 @@ if "serial" in selected:
               % (method, 100 * worst, n_compared,
                  final["pair0_normal_force"], final["n_active"]))
 
-# 3. -np 2 against serial.
+    # 3. Friction: the self pair against the two-boundary two-pass pair.
+    mu = 0.3
+    shear = ["Boundary conditions/Neumann=8 : 0.15*t, 0 ; 7 : -0.15*t, 0 ;"
+             " 6 : 0, 0.06*t ; 2 : 0, -0.06*t",
+             "Output/Checkpoint every=1"]
+    run(tribos, u_shape, out + "/u_friction",
+        shear + ["Contact/Pairs=1 : 1 : mu=%g" % mu])
+    run(tribos, u_shape, out + "/u_friction_two_pass",
+        shear + ["Scene/Mesh file=u_shape_split.msh",
+                 "Contact/Pairs=9 : 10 : mu=%g" % mu,
+                 "Contact/Passes=two-pass"])
+    last = "/contact-00010.csv"
+    nodal = []
+    for name in ("u_friction", "u_friction_two_pass"):
+        nodal.append({(round(r["X"], 9), round(r["Y"], 9)): r
+                      for r in read_csv(out + "/" + name + last)
+                      if r["CPRESS"] > 0})
+    largest = max(r["CPRESS"] for r in nodal[1].values())
+    worst = max(max(abs(nodal[0][k][c] - nodal[1][k][c])
+                    for c in ("CPRESS", "CSHEAR_x", "CSHEAR_y"))
+                for k in nodal[1]) / largest if \
+        sorted(nodal[0]) == sorted(nodal[1]) else math.inf
+    check(len(nodal[1]) >= 4 and worst < 1e-6,
+          "U sheared with friction: the self-contact pair's %d closed nodes "
+          "equal the two-boundary two-pass pair's, pressure and shear "
+          "traction to %.1e of the largest pressure (bound 1e-6)"
+          % (len(nodal[1]), worst))
+    sliding, sticking, coulomb = 0, 0, 0.
+    for r in nodal[0].values():
+        shear_traction = math.hypot(r["CSHEAR_x"], r["CSHEAR_y"])
+        if r["CSTATUS"] == 2:
+            sliding += 1
+            coulomb = max(coulomb, abs(shear_traction - mu * r["CPRESS"]) /
+                          largest)
+        else:
+            sticking += 1
+            coulomb = max(coulomb, max(0, shear_traction - mu * r["CPRESS"])
+                          / largest)
+    check(sliding >= 2 and sticking >= 2 and coulomb < 1e-9,
+          "U sheared with friction: %d nodes sliding with |T| = mu p, %d "
+          "sticking with |T| <= mu p, to %.1e of the largest pressure "
+          "(bound 1e-9)" % (sliding, sticking, coulomb))
+
+    # 4. Restart from the checkpoint after step 5.
+    folder = out + "/u_friction"
+    copy = folder + "_restart"
+    shutil.rmtree(copy, ignore_errors=True)
+    shutil.copytree(folder, copy)
+    run(tribos, u_shape, copy, shear + ["Contact/Pairs=1 : 1 : mu=%g" % mu],
+        extra=["--restart", folder + "/checkpoint-00005"])
+    for f in (folder, copy):
+        strip_columns(f + "/history.csv", f + "/h.csv",
+                      drop=("wall_time", "residual"))
+    for name in ("/h.csv", last):
+        numdiff(copy + name, folder + name, relative=1e-10, absolute=1e-14)
+    iterations = [[r["newton_iterations"] for r in read_csv(
+        f + "/history.csv")] for f in (folder, copy)]
+    check(iterations[0] == iterations[1],
+          "U sheared with friction, restarted after step 5 of 10: "
+          "history.csv and the last contact CSV equal to 1e-10, the same "
+          "Newton iterations")
+
+# 5. -np 2 against serial.
 if "mpi" in selected and mpi_part(selected):
     run(tribos, u_shape, out + "/u_serial")
     run(tribos, u_shape, out + "/u_np2", mpi_ranks=2)
