@@ -333,17 +333,8 @@ namespace tribos
                              "constraints of both passes over-constrain the "
                              "interface (singular system). Use one-pass."));
       const bool self = description.self_contact();
-      AssertThrow(!self || pair.enforcement->n_node_unknowns() == 0,
-                  ExcMessage("Parameter <Contact/Pairs>: the self-contact "
-                             "pair <" +
-                             description.text +
-                             "> with Contact/Method = lagrange multiplier: "
-                             "every node of a self-contact surface is a slave "
-                             "and every face a master (both passes), which "
-                             "over-constrains the interface for multipliers. "
-                             "Use penalty or augmented lagrangian."));
-      pair.slave = surface(description.slave_boundary);
-      double E_s = std::numeric_limits<double>::max();
+      pair.slave      = surface(description.slave_boundary);
+      double E_s      = std::numeric_limits<double>::max();
       for (const auto body : pair.slave->bodies())
         E_s = std::min(E_s, youngs_modulus(body));
       pair.contact_modulus = E_s;
@@ -356,8 +347,13 @@ namespace tribos
         for (const auto body : pair.master->bodies())
           E_m = std::min(E_m, youngs_modulus(body));
         pair.contact_modulus = E_s * E_m / (E_s + E_m);
-        // Two passes (or a self pair, which is both): each carries half.
-        pair.area_factor = parameters.two_pass || self ? 0.5 : 1.;
+        // Two passes (or a self pair, which is both): each carries half;
+        // a self pair with multipliers has one slave side per contact
+        // (assign_self_contact_roles()), which carries it all.
+        pair.area_factor = (parameters.two_pass || self) &&
+                               pair.enforcement->n_node_unknowns() == 0 ?
+                             0.5 :
+                             1.;
       }
       else
         pair.rigid = rigid_surfaces.at(description.rigid_surface);

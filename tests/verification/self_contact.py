@@ -1,6 +1,7 @@
 """Self-contact (issue 59): a pair whose slave surface is its own master
-(Contact/Pairs = 1 : 1), node to segment, both passes in one pair with
-half weights.
+(Contact/Pairs = 1 : 1), node to segment: with penalty and the augmented
+Lagrangian both passes in one pair with half weights, with multipliers one
+slave side per contact.
 
 1. The patch test's two blocks as one surface (Pairs = 3, 12 : 3, 12) give
    the two-pass pair 12 : 3 (Passes = two-pass) to round-off: every node
@@ -14,27 +15,38 @@ half weights.
    rigid wall at the symmetry plane) gives the same contact force at
    every step: within 1 % (the left arm's nodes do not meet the right
    arm's, so the discretizations differ). The same with the augmented
-   Lagrangian.
-3. Friction (mu = 0.3): the U's arms closed and sheared against each other
+   Lagrangian. (Not with multipliers: one-pass, see doc/self_contact.md.)
+3. Multipliers: every node of a self-contact surface has its multiplier,
+   and each contact one slave side (the other side's nodes unpaired, as
+   masters), chosen by colouring the graph of near contacts (source/
+   contact/discretization/self_contact_roles.cc). The patch test's blocks
+   as one surface with multipliers give the one-pass pair whose slave is
+   the block the colouring chose: the same closed nodes, their pressures
+   to 1e-10 of the largest (2D and 3D).
+4. Friction (mu = 0.3): the U's arms closed and sheared against each other
    (tractions up on the right arm's top, down on the left one's) as one
    self-contact surface give what the same U gives with its slot's faces
    as two boundaries and Passes = two-pass (tests/data/u_shape_split.msh),
    the existing two-body friction: nodal pressures and shear tractions to
    1e-6 of the largest at the end. Coulomb's law at the nodes: sliding
    nodes carry |T| = mu p (so the dissipation at a node is mu p times its
-   slip increment), sticking ones |T| <= mu p.
-4. Restart: the frictional run restarted from its checkpoint after step 5
+   slip increment), sticking ones |T| <= mu p. With multipliers the
+   self pair equals the one-pass pair (9 : 10 or 10 : 9) whose slave is
+   the arm the colouring chose, to 1e-8.
+5. Restart: the frictional run restarted from its checkpoint after step 5
    equals the uninterrupted run (history.csv without wall times and
    residual norms and the last contact CSV to 1e-10, the same Newton
    iterations).
-5. -np 2 equal to serial (1e-8).
-6. Bad input: multipliers and mortar on a self-contact pair are refused
+6. -np 2 equal to serial (1e-8): penalty; multipliers with friction.
+7. Bad input: mortar and the smoothed master on a self-contact pair, and
+   multipliers with Passes = two-pass, are refused
    (tests/robustness/bad_input.sh)."""
 # ctest: cases serial mpi
 # ctest: mpirun-cases mpi
 # ctest: quick-cases serial
 
 import math
+import os
 import shutil
 import sys
 
@@ -49,6 +61,14 @@ half = ["Scene/Mesh file=u_shape_half.msh",
         "Boundary conditions/Symmetry=4",
         "Contact/Pairs=1 : wall",
         "Contact/Rigid surfaces=wall : plane : 0, 0, 0 : 1, 0, 0 : 0, 0"]
+
+
+def nodal_pressures(folder):
+    """The pressure of every slave node in the last contact CSV, keyed by
+    body and reference position."""
+    last = sorted(f for f in os.listdir(folder) if f.startswith("contact-"))
+    return {(r["body"], round(r["X"], 9), round(r["Y"], 9), round(r["Z"], 9)):
+            r["CPRESS"] for r in read_csv(folder + "/" + last[-1])}
 
 
 def by_time(folder):
@@ -88,7 +108,41 @@ if "serial" in selected:
               "digits)"
               % (dim, len(pressures[0]), worst, force))
 
-    # 2. The U-shaped body against its half model.
+    # 2. Multipliers: one side of the contact the slave; the result is
+    # the one-pass pair with that side as its slave.
+    for dim, prm, pair, sides in (
+            (2, "patch_test.prm", "3, 12 : 3, 12", ("12 : 3", "3 : 12")),
+            (3, "patch_test_3d.prm", "14, 5 : 14, 5", ("14 : 5", "5 : 14"))):
+        lm = ["Contact/Discretization=node to segment",
+              "Contact/Method=lagrange multiplier"]
+        name = out + "/patch_%dd_lm_" % dim
+        run(tribos, tests + "/" + prm, name + "self",
+            lm + ["Contact/Pairs=" + pair])
+        one_pass = []
+        for i, side in enumerate(sides):
+            run(tribos, tests + "/" + prm, name + str(i),
+                lm + ["Contact/Pairs=" + side])
+            one_pass.append(nodal_pressures(name + str(i)))
+        self_pressures = nodal_pressures(name + "self")
+        closed = {k for k, p in self_pressures.items() if p > 0}
+        match = [i for i in (0, 1)
+                 if closed == {k for k, p in one_pass[i].items() if p > 0}]
+        worst = max(abs(self_pressures[k] - one_pass[match[0]][k])
+                    for k in closed) / max(self_pressures.values()) \
+            if len(match) == 1 else math.inf
+        force = [read_csv(f + "/history.csv")[-1]["pair0_normal_force"]
+                 for f in (name + "self", name + str(match[0]))] \
+            if len(match) == 1 else [1, 2]
+        check(worst < 1e-10 and abs(force[0] / force[1] - 1) < 1e-9,
+              "%dD patch test, one self-contact surface with multipliers: "
+              "its %d closed nodes are one block's, their pressures those "
+              "of the one-pass pair %s to %.1e of the largest (bound "
+              "1e-10), the normal force to %.1e (bound 1e-9)"
+              % (dim, len(closed), sides[match[0]] if match else "none",
+                 worst,
+                 abs(force[0] / force[1] - 1)))
+
+    # 3. The U-shaped body against its half model.
     for method in ("penalty", "augmented lagrangian"):
         name = method.replace(" ", "_")
         sets = ["Contact/Method=" + method]
@@ -103,14 +157,40 @@ if "serial" in selected:
                 worst = max(worst, abs(full[t]["pair0_normal_force"] /
                                        r["pair0_normal_force"] - 1))
         final = full[max(full)]
-        check(n_compared >= 8 and worst < 0.01 and final["n_active"] >= 8,
+        # Closed nodes per arm (x < 0 the left one): both passes close
+        # both arms.
+        arms = [sum(1 for k, p in nodal_pressures(out + "/u_" + name).items()
+                    if p > 0 and (k[1] < 0) == left) for left in (True, False)]
+        check(n_compared >= 8 and worst < 0.01 and min(arms) >= 3,
               "U-shaped body, %s: the self-contact force within %.2f %% "
               "(bound 1 %%) of the half model's at its %d steps in contact "
-              "(final %.5f, %d nodes closed on both arms)"
-              % (method, 100 * worst, n_compared,
-                 final["pair0_normal_force"], final["n_active"]))
+              "(final %.5f; %d and %d nodes closed on the left and right "
+              "arms)"
+              % (method, 100 * worst, n_compared, final["pair0_normal_force"],
+                 arms[0], arms[1]))
 
-    # 3. Friction: the self pair against the two-boundary two-pass pair.
+    # Multipliers on the U: one slave side. The first iterate of an
+    # increment carries the arms' tips through each other by more than
+    # half an element; the search must take that for a penetration (the
+    # faces the nodes were in front of at the start of the increment),
+    # not for the other side of the body (it did, and Newton diverged).
+    lm_u = out + "/u_lagrange_multiplier"
+    run(tribos, u_shape, lm_u, ["Contact/Method=lagrange multiplier"])
+    history = read_csv(lm_u + "/history.csv")
+    arms = [sum(1 for k, p in nodal_pressures(lm_u).items()
+                if p > 0 and (k[1] < 0) == left) for left in (True, False)]
+    check(len(history) == 10 and history[-1]["cutbacks"] == 0 and
+          max(r["max_penetration"] for r in history) < 1e-10 and
+          min(arms) == 0 and max(arms) >= 3,
+          "U-shaped body, multipliers: 10 increments without a cutback, "
+          "no penetration (%.1e, bound 1e-10), %d nodes closed on one arm "
+          "only (final force %.5f; the half model's %.5f: one-pass node to "
+          "segment, doc/self_contact.md)"
+          % (max(r["max_penetration"] for r in history), max(arms),
+             history[-1]["pair0_normal_force"],
+             by_time(out + "/u_half_penalty")[1.0]["pair0_normal_force"]))
+
+    # 4. Friction: the self pair against the two-boundary two-pass pair.
     mu = 0.3
     shear = ["Boundary conditions/Neumann=8 : 0.15*t, 0 ; 7 : -0.15*t, 0 ;"
              " 6 : 0, 0.06*t ; 2 : 0, -0.06*t",
@@ -153,7 +233,36 @@ if "serial" in selected:
           "sticking with |T| <= mu p, to %.1e of the largest pressure "
           "(bound 1e-9)" % (sliding, sticking, coulomb))
 
-    # 4. Restart from the checkpoint after step 5.
+    # Friction with multipliers: the one-pass pair whose slave is the arm
+    # the colouring chose.
+    lm = shear + ["Contact/Method=lagrange multiplier"]
+    run(tribos, u_shape, out + "/u_friction_lm",
+        lm + ["Contact/Pairs=1 : 1 : mu=%g" % mu])
+    nodal = {}
+    for side in ("9 : 10", "10 : 9"):
+        name = out + "/u_friction_lm_" + side.replace(" : ", "_")
+        run(tribos, u_shape, name,
+            lm + ["Scene/Mesh file=u_shape_split.msh",
+                  "Contact/Pairs=%s : mu=%g" % (side, mu)])
+        nodal[side] = {(round(r["X"], 9), round(r["Y"], 9)): r
+                       for r in read_csv(name + last) if r["CPRESS"] > 0}
+    mine = {(round(r["X"], 9), round(r["Y"], 9)): r
+            for r in read_csv(out + "/u_friction_lm" + last)
+            if r["CPRESS"] > 0}
+    match = [side for side in nodal if sorted(nodal[side]) == sorted(mine)]
+    worst = max(max(abs(mine[k][c] - nodal[match[0]][k][c])
+                    for c in ("CPRESS", "CSHEAR_x", "CSHEAR_y"))
+                for k in mine) / max(r["CPRESS"] for r in mine.values()) \
+        if len(match) == 1 else math.inf
+    sliding = sum(1 for r in mine.values() if r["CSTATUS"] == 2)
+    check(worst < 1e-8 and sliding >= 1,
+          "U sheared with friction and multipliers: the self-contact pair's "
+          "%d closed nodes (%d sliding) are those of the one-pass pair %s, "
+          "pressure and shear traction to %.1e of the largest pressure "
+          "(bound 1e-8)" % (len(mine), sliding,
+                            match[0] if match else "none", worst))
+
+    # 5. Restart from the checkpoint after step 5.
     folder = out + "/u_friction"
     copy = folder + "_restart"
     shutil.rmtree(copy, ignore_errors=True)
@@ -172,16 +281,26 @@ if "serial" in selected:
           "history.csv and the last contact CSV equal to 1e-10, the same "
           "Newton iterations")
 
-# 5. -np 2 against serial.
+# 6. -np 2 against serial.
 if "mpi" in selected and mpi_part(selected):
-    run(tribos, u_shape, out + "/u_serial")
-    run(tribos, u_shape, out + "/u_np2", mpi_ranks=2)
-    serial, parallel = by_time(out + "/u_serial"), by_time(out + "/u_np2")
-    worst = max(abs(parallel[t]["pair0_normal_force"] -
-                    serial[t]["pair0_normal_force"]) /
-                max(serial[t]["pair0_normal_force"], 1e-12)
-                for t in serial if serial[t]["pair0_normal_force"] > 0)
-    check(sorted(serial) == sorted(parallel) and worst < 1e-8,
-          "U-shaped body, -np 2 equal to serial: the same increments, "
-          "contact force to %.1e (bound 1e-8)" % worst)
+    # Penalty, and multipliers with friction on the sheared U (the slave
+    # side chosen alike on both processes).
+    sheared = ["Boundary conditions/Neumann=8 : 0.15*t, 0 ; 7 : -0.15*t, 0 ;"
+               " 6 : 0, 0.06*t ; 2 : 0, -0.06*t",
+               "Contact/Pairs=1 : 1 : mu=0.3",
+               "Contact/Method=lagrange multiplier"]
+    for name, sets in (("penalty", []), ("multipliers_friction", sheared)):
+        run(tribos, u_shape, out + "/u_serial_" + name, sets)
+        run(tribos, u_shape, out + "/u_np2_" + name, sets, mpi_ranks=2)
+        serial = by_time(out + "/u_serial_" + name)
+        parallel = by_time(out + "/u_np2_" + name)
+        worst = max(max(abs(parallel[t][c] - serial[t][c])
+                        for c in ("pair0_normal_force",
+                                  "pair0_tangential_force")) /
+                    max(serial[t]["pair0_normal_force"], 1e-12)
+                    for t in serial if serial[t]["pair0_normal_force"] > 0)
+        check(sorted(serial) == sorted(parallel) and worst < 1e-8,
+              "U-shaped body, %s, -np 2 equal to serial: the same "
+              "increments, normal and tangential contact force to %.1e "
+              "(bound 1e-8)" % (name.replace("_", " and "), worst))
 finish()

@@ -2,6 +2,7 @@
 #include <tribos/contact/discretization/discretization_method.h>
 #include <tribos/contact/discretization/node_to_segment_discretization.h>
 #include <tribos/contact/discretization/rigid_surface_discretization.h>
+#include <tribos/contact/discretization/self_contact_roles.h>
 #include <tribos/contact/discretization/smoothed_node_to_face_discretization.h>
 #include <tribos/contact/discretization/smoothed_node_to_segment_discretization.h>
 
@@ -88,12 +89,15 @@ namespace tribos
                                             const Vec3<double>     &x,
                                             const bool              clamp,
                                             Vec3<double>           *normal,
-                                            Vec3<double>           *point) const
+                                            Vec3<double>           *point,
+                                            const bool              old) const
   {
-    const auto  &face = pair.master->faces()[f];
+    const auto &face = pair.master->faces()[f];
+    const auto &positions =
+      old ? pair.old_master_positions : pair.master_positions;
     Vec3<double> xm[4];
     for (unsigned int v = 0; v < face.n_vertices; ++v)
-      xm[v] = pair.master_positions[face.nodes[v]];
+      xm[v] = positions[face.nodes[v]];
     return pair.master->shape().template visit_linear<dim>(
       [&](auto kind)
       {
@@ -154,9 +158,23 @@ namespace tribos
       if (dot(n_k, n_f) > -0.5)
         return false;
       // Behind the face by more than half an element is the other side of
-      // the node's own body.
+      // the node's own body, unless the node was not behind it at the
+      // start of the increment: then it has gone through the face in this
+      // increment (a first iterate carries nodes deep through an opposite
+      // face they have not touched yet), a penetration.
       if (dot(x - xbar, n_f) < -0.5 * size)
-        return false;
+      {
+        Vec3<double> n_old, xbar_old;
+        project(pair,
+                f,
+                pair.old_master_positions[k],
+                true,
+                &n_old,
+                &xbar_old,
+                true);
+        if (dot(pair.old_master_positions[k] - xbar_old, n_old) < -0.5 * size)
+          return false;
+      }
       distance = p.distance;
       return distance <= r;
     };
@@ -275,6 +293,23 @@ namespace tribos
       if (state.projection.clamped[c] != 0 &&
           !faces[state.face].continues[c][state.projection.clamped[c] > 0])
         at_end = true;
+    // Self-contact: the admissible faces are a part of the surface, which
+    // ends where no admissible candidate continues the face (a neighbour
+    // the node does not face, or that it is behind): a projection clamped
+    // there is at an end too. (The U sheared with multipliers: an arm's
+    // tip node above the other arm's tip took the face below the tip
+    // face, clamped at their common vertex 0.33 away, and Newton cycled.)
+    if (!own_neighbourhood.empty() && !at_end && !state.projection.inside())
+    {
+      Vec3<double> corner;
+      project(pair, state.face, x, true, nullptr, &corner);
+      const double size = pair.slave->nodes()[k].size;
+      at_end            = true;
+      for (const unsigned int g : candidates)
+        if (g != static_cast<unsigned int>(state.face) &&
+            project(pair, g, corner, true).distance < 1e-9 * size)
+          at_end = false;
+    }
     if (at_end)
     {
       const Projection extended = project(pair, state.face, x, false);
@@ -282,6 +317,17 @@ namespace tribos
       state.projection          = extended;
     }
     return couple_face(pair, k);
+  }
+
+
+
+  template <int dim>
+  void
+  NodeToSegmentDiscretization<dim>::finish_pairing(ContactPair<dim> &pair,
+                                                   const MPI_Comm communicator)
+  {
+    if (!own_neighbourhood.empty() && pair.enforcement->n_node_unknowns() > 0)
+      assign_self_contact_roles(pair, communicator);
   }
 
 

@@ -4,6 +4,7 @@
 #include <tribos/contact/element/contact_element.h>
 #include <tribos/parameters/contact.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -139,6 +140,17 @@ namespace tribos
      */
     virtual bool
     pair_node(ContactPair<dim> &pair, const unsigned int k) = 0;
+
+    /**
+     * Called on every process after pair_node() has paired the owned
+     * nodes of @p pair: a decision that needs the pairings of all nodes
+     * (self-contact's slave and master sides with multipliers).
+     * Collective.
+     */
+    virtual void
+    finish_pairing(ContactPair<dim> & /*pair*/, const MPI_Comm /*communicator*/)
+    {
+    }
 
     /** The couplings of @p pair's registered (slave node, master face)
      * pairs into @p dsp, condensed through @p constraints. */

@@ -42,6 +42,12 @@ namespace tribos
     bool
     pair_node(ContactPair<dim> &pair, const unsigned int k) override;
 
+    /** Self-contact with multipliers: one side of each contact the slave
+     * (assign_self_contact_roles()). */
+    void
+    finish_pairing(ContactPair<dim> &pair,
+                   const MPI_Comm    communicator) override;
+
     ElementOutcome
     evaluate(ContactPair<dim>                     &pair,
              const unsigned int                    k,
@@ -99,14 +105,16 @@ namespace tribos
                          NodeState              &state) const;
 
     /** The projection of @p x onto face @p f (clamped to the face if
-     * @p clamp), with the face's unit outward normal and point there. */
+     * @p clamp), with the face's unit outward normal and point there; the
+     * face where it was at the last converged increment if @p old. */
     Projection
     project(const ContactPair<dim> &pair,
             const unsigned int      f,
             const Vec3<double>     &x,
             const bool              clamp,
             Vec3<double>           *normal = nullptr,
-            Vec3<double>           *point  = nullptr) const;
+            Vec3<double>           *point  = nullptr,
+            const bool              old    = false) const;
 
     /** Self-contact: the unit normal of slave node @p k, the mean of its
      * known faces' normals there. */

@@ -1,0 +1,49 @@
+#ifndef tribos_contact_self_contact_roles_h
+#define tribos_contact_self_contact_roles_h
+
+#include <deal.II/base/mpi.h>
+
+namespace tribos
+{
+  using namespace dealii;
+
+  template <int dim>
+  struct ContactPair;
+
+  /**
+   * Self-contact with Lagrange multipliers: which side of each contact is
+   * the slave. With penalty and the augmented Lagrangian a self-contact
+   * surface is its own slave and master in both passes with half weights;
+   * multipliers cannot do that (a node and the node opposite it would
+   * both constrain the same gap: two equal rows, a singular system), so
+   * each contact needs one slave side, and which side that is follows
+   * from where the surface folds, not from the input.
+   *
+   * The rule (4C colours its self-contact elements alike): the graph
+   * whose edges join each paired slave node near its face (closer than
+   * twice its element size) to that face's nodes is coloured with two
+   * colours, component by component, breadth first from a seed; the
+   * seed's colour is slave, its neighbours' master, theirs slave, and so
+   * on, so that whole sides of a fold are slaves and the opposite sides
+   * masters. The seed is the component's smallest node that was a near
+   * slave at the last converged increment, else its smallest node: the
+   * sides keep their roles from increment to increment, and restarts
+   * keep them (the committed states are in the checkpoint). Which side
+   * that is the first time is arbitrary (the smaller node numbers), as
+   * the choice of slave of a one-pass pair is the user's. A component
+   * that cannot be coloured (three patches touching each other) falls
+   * back to the mutual rule: a node is a master if a node of its face has
+   * it in its own face and a smaller index. The graph is gathered from
+   * every process and coloured alike everywhere, so the roles do not
+   * depend on the partition.
+   *
+   * A master node loses its pairing (its multiplier's row then says
+   * Lambda = 0); slaves keep theirs. Collective.
+   */
+  template <int dim>
+  void
+  assign_self_contact_roles(ContactPair<dim> &pair,
+                            const MPI_Comm    communicator);
+} // namespace tribos
+
+#endif

@@ -1,0 +1,139 @@
+#include <tribos/contact/contact_pair.h>
+#include <tribos/contact/discretization/self_contact_roles.h>
+
+#include <deal.II/base/mpi.templates.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace tribos
+{
+  namespace
+  {
+    /** Whether @p state pairs its node with a face closer than twice the
+     * node's element size @p size (a contact that can close now). */
+    bool
+    near(const NodeState &state, const double size)
+    {
+      return state.paired && state.face >= 0 &&
+             state.projection.distance < 2 * size;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  assign_self_contact_roles(ContactPair<dim> &pair, const MPI_Comm communicator)
+  {
+    const auto &nodes = pair.slave->nodes();
+    const auto &faces = pair.master->faces();
+
+    // Per owned near node: the node, whether it was a near slave at the
+    // last converged increment, its face's nodes.
+    std::vector<unsigned int> mine;
+    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      if (pair.owned[k] && !pair.excluded[k] &&
+          near(pair.current[k], nodes[k].size))
+      {
+        const auto &face = faces[pair.current[k].face];
+        mine.push_back(k);
+        mine.push_back(near(pair.committed[k], nodes[k].size) ? 1 : 0);
+        mine.push_back(face.n_vertices);
+        for (unsigned int v = 0; v < face.n_vertices; ++v)
+          mine.push_back(face.nodes[v]);
+      }
+
+    // The whole graph, on every process in the same order: each node's
+    // face nodes (targets) and its undirected neighbours.
+    std::map<unsigned int, std::vector<unsigned int>> targets;
+    std::map<unsigned int, std::set<unsigned int>>    neighbours;
+    std::set<unsigned int>                            was_slave;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, mine))
+      for (unsigned int i = 0; i < part.size(); i += 3 + part[i + 2])
+      {
+        const unsigned int k = part[i];
+        if (part[i + 1] == 1)
+          was_slave.insert(k);
+        targets[k].assign(part.begin() + i + 3,
+                          part.begin() + i + 3 + part[i + 2]);
+        for (const unsigned int m : targets[k])
+        {
+          neighbours[k].insert(m);
+          neighbours[m].insert(k);
+        }
+      }
+
+    // Colour each component from its seed; 0 slave, 1 master.
+    std::map<unsigned int, int> colour;
+    for (const auto &[first, unused] : neighbours)
+    {
+      (void)unused;
+      if (colour.count(first) == 1)
+        continue;
+      // The component (its nodes in increasing order) and its seed.
+      std::set<unsigned int>    component{first};
+      std::vector<unsigned int> queue{first};
+      for (unsigned int q = 0; q < queue.size(); ++q)
+        for (const unsigned int m : neighbours[queue[q]])
+          if (component.insert(m).second)
+            queue.push_back(m);
+      unsigned int seed = *component.begin();
+      for (const unsigned int k : component)
+        if (was_slave.count(k) == 1)
+        {
+          seed = k;
+          break;
+        }
+      // Breadth first from the seed; an edge between two equal colours
+      // means the component is not two-sided.
+      colour[seed] = 0;
+      queue.assign(1, seed);
+      bool two_sided = true;
+      for (unsigned int q = 0; q < queue.size(); ++q)
+        for (const unsigned int m : neighbours[queue[q]])
+        {
+          const auto c = colour.find(m);
+          if (c == colour.end())
+          {
+            colour[m] = 1 - colour[queue[q]];
+            queue.push_back(m);
+          }
+          else if (c->second == colour[queue[q]])
+            two_sided = false;
+        }
+      if (two_sided)
+        continue;
+      // The mutual rule: of two nodes each in the other's face, the
+      // larger is the master.
+      for (const unsigned int k : component)
+      {
+        colour[k]      = 0;
+        const auto own = targets.find(k);
+        if (own == targets.end())
+          continue;
+        for (const unsigned int m : own->second)
+        {
+          const auto other = targets.find(m);
+          if (m < k && other != targets.end() &&
+              std::count(other->second.begin(), other->second.end(), k) > 0)
+            colour[k] = 1;
+        }
+      }
+    }
+
+    for (const auto &[k, c] : colour)
+      if (c == 1 && pair.owned[k] && targets.count(k) == 1)
+      {
+        pair.current[k].paired = false;
+        pair.current[k].face   = -1;
+      }
+  }
+
+  template void
+  assign_self_contact_roles(ContactPair<2> &, const MPI_Comm);
+  template void
+  assign_self_contact_roles(ContactPair<3> &, const MPI_Comm);
+} // namespace tribos
