@@ -16,6 +16,8 @@ slave side per contact.
    every step: within 1 % (the left arm's nodes do not meet the right
    arm's, so the discretizations differ). The same with the augmented
    Lagrangian. (Not with multipliers: one-pass, see doc/self_contact.md.)
+   The U's whole boundary as one self-contact surface closes only the
+   slot's faces, with the slot alone's force to 1e-3.
 3. Multipliers: every node of a self-contact surface has its multiplier,
    and each contact one slave side (the other side's nodes unpaired, as
    masters), chosen by colouring the graph of near contacts (source/
@@ -168,6 +170,27 @@ if "serial" in selected:
               "arms)"
               % (method, 100 * worst, n_compared, final["pair0_normal_force"],
                  arms[0], arms[1]))
+
+    # The whole boundary as one self-contact surface (a user who does not
+    # know where the body folds): the search must keep the arms' tops,
+    # the slot's bottom, the outer faces and the base open. It differs
+    # from the slot alone only through the tips' and the slot corners'
+    # tributary areas (half the arm's top face more): 5e-5 measured.
+    whole = out + "/u_whole_boundary"
+    run(tribos, u_shape, whole,
+        ["Contact/Pairs=1, 2, 3, 5, 6, 7, 8 : 1, 2, 3, 5, 6, 7, 8"])
+    slot, every = by_time(out + "/u_penalty"), by_time(whole)
+    common = [t for t in every if t in slot and
+              slot[t]["pair0_normal_force"] > 0]
+    worst = max(abs(every[t]["pair0_normal_force"] /
+                    slot[t]["pair0_normal_force"] - 1) for t in common)
+    open_elsewhere = all(abs(k[1]) == 0.5 and k[2] > 1
+                         for k, p in nodal_pressures(whole).items() if p > 0)
+    check(len(common) >= 8 and worst < 1e-3 and open_elsewhere,
+          "U-shaped body, its whole boundary as one self-contact surface: "
+          "closed only on the slot's faces, the contact force that of the "
+          "slot alone to %.1e at %d common times (bound 1e-3)"
+          % (worst, len(common)))
 
     # Multipliers on the U: one slave side. The first iterate of an
     # increment carries the arms' tips through each other by more than

@@ -61,10 +61,11 @@ namespace tribos
                            "node's."));
     // The faces are looked for within twice the largest element size,
     // then twice as far until one is found or the reach passes twice the
-    // surface's extent (a node must be paired, open, before an increment
-    // carries it through the opposite face: paired, it keeps its face and
-    // its gap turns negative; unpaired, it would pass). Search distance,
-    // if set, is the farthest.
+    // way the node went in the increment (self_candidate_faces()), never
+    // beyond twice the surface's extent or Search distance. A node that
+    // an increment carries through an opposite face it had not touched
+    // is then still within reach of it, and the face admissible (it was
+    // in front of it at the start).
     double extent = 0;
     for (unsigned int d = 0; d < 3; ++d)
     {
@@ -178,9 +179,14 @@ namespace tribos
       distance = p.distance;
       return distance <= r;
     };
+    // The farthest this node looks: the reach and twice the way it went
+    // in this increment (the opposite side may have come as far).
+    const double farthest =
+      std::min(maximum_reach,
+               reach + 2 * norm(x - pair.old_master_positions[k]));
     int    best          = -1;
     double best_distance = std::numeric_limits<double>::max();
-    for (double r = std::min(reach, maximum_reach); best < 0;)
+    for (double r = std::min(reach, farthest); best < 0;)
     {
       for (const unsigned int f : pair.search.faces_near(x, r))
       {
@@ -191,9 +197,9 @@ namespace tribos
           best_distance = distance;
         }
       }
-      if (r >= maximum_reach)
+      if (r >= farthest)
         break;
-      r = std::min(2 * r, maximum_reach);
+      r = std::min(2 * r, farthest);
     }
     if (best < 0)
       return {};
