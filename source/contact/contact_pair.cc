@@ -397,6 +397,8 @@ namespace tribos
     std::vector<std::string> warnings;
     for (const auto &pair : pairs)
     {
+      for (const auto &w : pair.discretization->setup_warnings())
+        warnings.push_back(w);
       if (pair.enforcement->n_node_unknowns() > 0)
         continue;
       const auto check = [&](const Parameters::PenaltyValue &penalty,

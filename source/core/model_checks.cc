@@ -75,6 +75,9 @@ namespace tribos
     held.insert(bc.symmetry.begin(), bc.symmetry.end());
     for (const auto &pair : parameters.contact.pairs)
     {
+      // A surface in contact with itself holds no rigid-body motion.
+      if (pair.self_contact())
+        continue;
       held.insert(pair.slave_boundary.begin(), pair.slave_boundary.end());
       held.insert(pair.master_boundary.begin(), pair.master_boundary.end());
     }

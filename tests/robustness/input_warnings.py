@@ -2,6 +2,8 @@
 summary.txt, naming the entry: a parameter file that sets nothing; a
 penalty below 1e-3 E/h or above 1e8 E/h (relative or absolute); a contact
 pair whose slave never comes within the search distance of its master;
+a self-contact surface no node of which faces a face of it within the
+search distance;
 a model that nothing loads (no load, no nonzero Dirichlet value, no moving
 rigid surface); a body without support or contact surface.
 Sensible input warns about nothing."""
@@ -40,6 +42,17 @@ cases = [
      ["Contact/Rigid surfaces=plane : plane : 0, -1, 0 : 0, 1, 0 : 0, 0",
       "Contact/Search distance=0.1"],
      "no slave node came within the search distance"),
+    # Issue 59: a self-contact surface whose nodes face none of its faces
+    # within the search distance (the U's slot is 1 wide).
+    ("self_contact_out_of_reach", tests + "/self_contact_u.prm",
+     ["Contact/Search distance=0.5", "Time stepping/Number of steps=1",
+      "Time stepping/End time=0.1"],
+     "no node of its surface faces a face of it within"),
+    ("self_contact_not_held", tests + "/self_contact_u.prm",
+     ["Boundary conditions/Dirichlet=", "Boundary conditions/Neumann=",
+      "Time stepping/Number of steps=1", "Time stepping/End time=0.1",
+      "Nonlinear solver/Stabilization factor=1e-3"],
+     "nothing holds its rigid-body motion"),
 ]
 # Only the pressing (t <= 1): a friction drag at 1e9 E/h does not converge
 # (which is the warning's point).

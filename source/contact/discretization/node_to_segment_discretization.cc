@@ -1,3 +1,4 @@
+#include <tribos/base/exceptions.h>
 #include <tribos/contact/contact_pair.h>
 #include <tribos/contact/discretization/discretization_method.h>
 #include <tribos/contact/discretization/node_to_segment_discretization.h>
@@ -79,23 +80,83 @@ namespace tribos
     }
     reach         = 2 * size;
     maximum_reach = std::min(parameters.search_distance, 2 * extent);
+    check_self_reach(pair);
+  }
+
+
+
+  template <int dim>
+  void
+  NodeToSegmentDiscretization<dim>::check_self_reach(
+    const ContactPair<dim> &pair)
+  {
+    self_warning.clear();
+    const double distance = parameters.search_distance;
+    if (!std::isfinite(distance))
+      return;
+    const auto               &nodes = pair.slave->nodes();
+    const auto               &faces = pair.slave->faces();
+    std::vector<Vec3<double>> reference(nodes.size());
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      reference[k] = nodes[k].reference;
+    // Does any node face a face of the surface, in front of it, within
+    // the search distance (the reference configuration)?
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+    {
+      const Vec3<double> &x = reference[k];
+      Vec3<double>        n_k{{0, 0, 0}};
+      for (const unsigned int f : nodes[k].faces)
+      {
+        Vec3<double> n;
+        project(pair, f, x, true, &n, nullptr, &reference);
+        n_k = n_k + n;
+      }
+      const auto &near = own_neighbourhood[k];
+      for (unsigned int f = 0; f < faces.size(); ++f)
+      {
+        bool beyond = false;
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          double lo = reference[faces[f].nodes[0]][d], hi = lo;
+          for (unsigned int v = 1; v < faces[f].n_vertices; ++v)
+          {
+            lo = std::min(lo, reference[faces[f].nodes[v]][d]);
+            hi = std::max(hi, reference[faces[f].nodes[v]][d]);
+          }
+          beyond = beyond || x[d] < lo - distance || x[d] > hi + distance;
+        }
+        if (beyond || std::binary_search(near.begin(), near.end(), f))
+          continue;
+        Vec3<double>     n_f, xbar;
+        const Projection p = project(pair, f, x, true, &n_f, &xbar, &reference);
+        if (p.distance <= distance && dot(n_k, n_f) < -0.5 * norm(n_k) &&
+            dot(x - xbar, n_f) >= 0)
+          return;
+      }
+    }
+    self_warning = "the self-contact pair <" + pair.description.text +
+                   ">: no node of its surface faces a face of it within "
+                   "Contact/Search distance = " +
+                   to_scientific(distance) +
+                   " (the reference configuration); the surface touches "
+                   "itself only where it folds closer than that.";
   }
 
 
 
   template <int dim>
   Projection
-  NodeToSegmentDiscretization<dim>::project(const ContactPair<dim> &pair,
-                                            const unsigned int      f,
-                                            const Vec3<double>     &x,
-                                            const bool              clamp,
-                                            Vec3<double>           *normal,
-                                            Vec3<double>           *point,
-                                            const bool              old) const
+  NodeToSegmentDiscretization<dim>::project(
+    const ContactPair<dim>          &pair,
+    const unsigned int               f,
+    const Vec3<double>              &x,
+    const bool                       clamp,
+    Vec3<double>                    *normal,
+    Vec3<double>                    *point,
+    const std::vector<Vec3<double>> *at) const
   {
-    const auto &face = pair.master->faces()[f];
-    const auto &positions =
-      old ? pair.old_master_positions : pair.master_positions;
+    const auto  &face      = pair.master->faces()[f];
+    const auto  &positions = at != nullptr ? *at : pair.master_positions;
     Vec3<double> xm[4];
     for (unsigned int v = 0; v < face.n_vertices; ++v)
       xm[v] = positions[face.nodes[v]];
@@ -172,7 +233,7 @@ namespace tribos
                 true,
                 &n_old,
                 &xbar_old,
-                true);
+                &pair.old_master_positions);
         if (dot(pair.old_master_positions[k] - xbar_old, n_old) < -0.5 * size)
           return false;
       }

@@ -141,6 +141,14 @@ namespace tribos
     virtual bool
     pair_node(ContactPair<dim> &pair, const unsigned int k) = 0;
 
+    /** Warnings about the pair found by initialize() (printed once, at
+     * the start of the run). */
+    virtual std::vector<std::string>
+    setup_warnings() const
+    {
+      return {};
+    }
+
     /**
      * Called on every process after pair_node() has paired the owned
      * nodes of @p pair: a decision that needs the pairings of all nodes

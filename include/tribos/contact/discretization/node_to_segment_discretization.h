@@ -42,6 +42,13 @@ namespace tribos
     bool
     pair_node(ContactPair<dim> &pair, const unsigned int k) override;
 
+    std::vector<std::string>
+    setup_warnings() const override
+    {
+      return self_warning.empty() ? std::vector<std::string>() :
+                                    std::vector<std::string>(1, self_warning);
+    }
+
     /** Self-contact with multipliers: one side of each contact the slave
      * (assign_self_contact_roles()). */
     void
@@ -106,15 +113,22 @@ namespace tribos
 
     /** The projection of @p x onto face @p f (clamped to the face if
      * @p clamp), with the face's unit outward normal and point there; the
-     * face where it was at the last converged increment if @p old. */
+     * face's vertices at @p at (node numbers of the surface) if given,
+     * else at their current positions. */
     Projection
-    project(const ContactPair<dim> &pair,
-            const unsigned int      f,
-            const Vec3<double>     &x,
-            const bool              clamp,
-            Vec3<double>           *normal = nullptr,
-            Vec3<double>           *point  = nullptr,
-            const bool              old    = false) const;
+    project(const ContactPair<dim>          &pair,
+            const unsigned int               f,
+            const Vec3<double>              &x,
+            const bool                       clamp,
+            Vec3<double>                    *normal = nullptr,
+            Vec3<double>                    *point  = nullptr,
+            const std::vector<Vec3<double>> *at     = nullptr) const;
+
+    /** Self-contact with a finite Search distance: set self_warning if no
+     * node faces a face of the surface, in front of it, within that
+     * distance in the reference configuration. */
+    void
+    check_self_reach(const ContactPair<dim> &pair);
 
     /** Self-contact: the unit normal of slave node @p k, the mean of its
      * known faces' normals there. */
@@ -124,6 +138,8 @@ namespace tribos
     /** Self-contact: per node, the faces that share a node with its faces
      * (sorted; its own faces included). Empty for other pairs. */
     std::vector<std::vector<unsigned int>> own_neighbourhood;
+    /** The warning of check_self_reach(), empty if none. */
+    std::string self_warning;
     /** Self-contact: how far from a node faces are looked for first,
      * and at most (see initialize()). */
     double reach         = 0;
