@@ -17,7 +17,12 @@ slave side per contact.
    arm's, so the discretizations differ). The same with the augmented
    Lagrangian. (Not with multipliers: one-pass, see doc/self_contact.md.)
    The U's whole boundary as one self-contact surface closes only the
-   slot's faces, with the slot alone's force to 1e-3.
+   slot's faces, with the slot alone's force to 1e-3. In 3D: a tube
+   (tests/data/tube.geo, tests/data/self_contact_tube.prm) crushed between
+   two plates until its inner surface closes, against its quarter with a
+   rigid wall at the symmetry plane: plate force and self-contact force
+   within 1e-3 at every step (the meshes mirror each other; penalty,
+   augmented Lagrangian and multipliers).
 3. Multipliers: every node of a self-contact surface has its multiplier,
    and each contact one slave side (the other side's nodes unpaired, as
    masters), chosen by colouring the graph of near contacts (source/
@@ -212,6 +217,42 @@ if "serial" in selected:
           % (max(r["max_penetration"] for r in history), max(arms),
              history[-1]["pair0_normal_force"],
              by_time(out + "/u_half_penalty")[1.0]["pair0_normal_force"]))
+
+    # The tube (3D): its right half crushed until the inner surface
+    # closes, against the quarter with a rigid wall at y = 0 (the meshes
+    # mirror each other, so the pairs of mirrored nodes are mutual).
+    tube = tests + "/self_contact_tube.prm"
+    quarter = ["Scene/Mesh file=tube_quarter.msh",
+               "Boundary conditions/Symmetry=3, 4, 5, 6",
+               "Contact/Rigid surfaces=top : plane : 0, 1, 0 : 0, -1, 0 :"
+               " 0, -0.7*t, 0 ; wall : plane : 0, 0, 0 : 0, 1, 0 : 0, 0, 0",
+               "Contact/Pairs=2 : top ; 1 : wall"]
+    for method in ("penalty", "augmented lagrangian", "lagrange multiplier"):
+        name = method.replace(" ", "_")
+        sets = ["Contact/Method=" + method]
+        run(tribos, tube, out + "/tube_" + name, sets)
+        run(tribos, tube, out + "/tube_quarter_" + name, sets + quarter)
+        full = by_time(out + "/tube_" + name)
+        reference = by_time(out + "/tube_quarter_" + name)
+        plate, closing, n_closed = 0, 0, 0
+        common = [t for t in reference if t in full]
+        for t in common:
+            r = reference[t]
+            plate = max(plate, abs(full[t]["pair0_normal_force"] /
+                                   r["pair0_normal_force"] - 1))
+            if r["pair1_normal_force"] > 1e-6:
+                n_closed += 1
+                closing = max(closing, abs(full[t]["pair2_normal_force"] /
+                                           r["pair1_normal_force"] - 1))
+        check(len(common) >= 20 and 1.0 in common and n_closed >= 3 and
+              max(plate, closing) < 1e-3,
+              "tube crushed until its inner surface closes (3D), %s: the "
+              "plate's force within %.1e and the self-contact force within "
+              "%.1e of the quarter model's at %d common times, %d closed "
+              "(bound 1e-3; at t = 1 %.5f against %.5f)"
+              % (method, plate, closing, len(common), n_closed,
+                 full[1.0]["pair2_normal_force"],
+                 reference[1.0]["pair1_normal_force"]))
 
     # 4. Friction: the self pair against the two-boundary two-pass pair.
     mu = 0.3
