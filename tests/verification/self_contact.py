@@ -44,7 +44,8 @@ slave side per contact.
    equals the uninterrupted run (history.csv without wall times and
    residual norms and the last contact CSV to 1e-10, the same Newton
    iterations).
-6. -np 2 equal to serial (1e-8): penalty; multipliers with friction.
+6. -np 2 equal to serial (1e-8): the U with penalty, the sheared U with
+   multipliers and friction, the tube with multipliers.
 7. Bad input: mortar and the smoothed master on a self-contact pair, and
    multipliers with Passes = two-pass, are refused
    (tests/robustness/bad_input.sh)."""
@@ -353,18 +354,32 @@ if "mpi" in selected and mpi_part(selected):
                " 6 : 0, 0.06*t ; 2 : 0, -0.06*t",
                "Contact/Pairs=1 : 1 : mu=0.3",
                "Contact/Method=lagrange multiplier"]
-    for name, sets in (("penalty", []), ("multipliers_friction", sheared)):
-        run(tribos, u_shape, out + "/u_serial_" + name, sets)
-        run(tribos, u_shape, out + "/u_np2_" + name, sets, mpi_ranks=2)
+    tube = tests + "/self_contact_tube.prm"
+    for name, prm, sets in (
+            ("penalty", u_shape, []),
+            ("multipliers_friction", u_shape, sheared),
+            ("tube_multipliers", tube,
+             ["Contact/Method=lagrange multiplier"])):
+        run(tribos, prm, out + "/u_serial_" + name, sets)
+        run(tribos, prm, out + "/u_np2_" + name, sets, mpi_ranks=2)
         serial = by_time(out + "/u_serial_" + name)
         parallel = by_time(out + "/u_np2_" + name)
-        worst = max(max(abs(parallel[t][c] - serial[t][c])
-                        for c in ("pair0_normal_force",
-                                  "pair0_tangential_force")) /
-                    max(serial[t]["pair0_normal_force"], 1e-12)
-                    for t in serial if serial[t]["pair0_normal_force"] > 0)
-        check(sorted(serial) == sorted(parallel) and worst < 1e-8,
-              "U-shaped body, %s, -np 2 equal to serial: the same "
-              "increments, normal and tangential contact force to %.1e "
-              "(bound 1e-8)" % (name.replace("_", " and "), worst))
+        pair = "pair2" if prm == tube else "pair0"
+        worst = max(max(abs(parallel[t][pair + c] - serial[t][pair + c])
+                        for c in ("_normal_force", "_tangential_force")) /
+                    max(serial[t][pair + "_normal_force"], 1e-12)
+                    for t in serial if serial[t][pair + "_normal_force"] > 0)
+        # Slave nodes paired with a face of the other process at the end
+        # (the fold across the partition).
+        across = [int(line.split()[3]) for line in
+                  open(out + "/u_np2_" + name + "/summary.txt")
+                  if line.startswith("contact across processes")]
+        check(sorted(serial) == sorted(parallel) and worst < 1e-8 and
+              across and across[0] > 0,
+              "%s, %s, -np 2 equal to serial: the same increments, normal "
+              "and tangential self-contact force to %.1e (bound 1e-8); %d "
+              "slave nodes paired with the other process's faces"
+              % ("tube" if prm == tube else "U-shaped body",
+                 name.replace("tube_", "").replace("_", " and "), worst,
+                 across[0] if across else 0))
 finish()
