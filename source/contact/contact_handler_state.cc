@@ -163,11 +163,18 @@ namespace tribos
                                 const double                         time)
   {
     update(solution, time);
+    bool self_contact = false;
     for (auto &pair : contact_pairs)
     {
       pair.old_slave_positions  = pair.slave_positions;
       pair.old_master_positions = pair.master_positions;
+      self_contact = self_contact || pair.description.self_contact();
     }
+    // The self-contact search compares a node's place with the one it had
+    // at the start of the increment (which the first search here did not
+    // know yet): search again from the positions now known.
+    if (self_contact)
+      update(solution, time);
     committed_time = time;
   }
 

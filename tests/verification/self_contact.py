@@ -219,6 +219,26 @@ if "serial" in selected:
              history[-1]["pair0_normal_force"],
              by_time(out + "/u_half_penalty")[1.0]["pair0_normal_force"]))
 
+    # Multipliers through changes of the mesh (adapted after every step):
+    # the roles follow the carried contact status; the search after an
+    # adaptation knows the increment's start (it took the reference
+    # configuration for it, and Newton diverged at t = 0.81).
+    adapted = out + "/u_lagrange_multiplier_adaptive"
+    run(tribos, u_shape, adapted, ["Contact/Method=lagrange multiplier",
+                                   "Adaptivity/Enable=true",
+                                   "Adaptivity/Maximum level=1"])
+    history = read_csv(adapted + "/history.csv")
+    arms = [sum(1 for k, p in nodal_pressures(adapted).items()
+                if p > 0 and (k[1] < 0) == left) for left in (True, False)]
+    check(history[-1]["time"] == 1 and
+          max(r["max_penetration"] for r in history) < 1e-10 and
+          min(arms) == 0 and max(arms) >= 3,
+          "U-shaped body, multipliers, adapted after every step: reaches "
+          "t = 1 (%d increments, %d dofs at the end), no penetration "
+          "(%.1e), %d nodes closed on one arm only"
+          % (len(history), history[-1]["dofs"],
+             max(r["max_penetration"] for r in history), max(arms)))
+
     # The tube (3D): its right half crushed until the inner surface
     # closes, against the quarter with a rigid wall at y = 0 (the meshes
     # mirror each other, so the pairs of mirrored nodes are mutual).

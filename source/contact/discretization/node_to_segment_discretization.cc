@@ -393,8 +393,22 @@ namespace tribos
   NodeToSegmentDiscretization<dim>::finish_pairing(ContactPair<dim> &pair,
                                                    const MPI_Comm communicator)
   {
-    if (!own_neighbourhood.empty() && pair.enforcement->n_node_unknowns() > 0)
-      assign_self_contact_roles(pair, communicator);
+    if (own_neighbourhood.empty() || pair.enforcement->n_node_unknowns() == 0)
+      return;
+    // Near: paired within two element sizes of its face, or behind it (a
+    // node carried deep through the opposite side must have a role).
+    std::vector<bool> near(pair.n_nodes(), false);
+    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+    {
+      const NodeState &state = pair.current[k];
+      if (!pair.owned[k] || !state.paired || state.face < 0)
+        continue;
+      Vec3<double> n, xbar;
+      project(pair, state.face, pair.slave_positions[k], true, &n, &xbar);
+      near[k] = state.projection.distance < 2 * pair.slave->nodes()[k].size ||
+                dot(pair.slave_positions[k] - xbar, n) < 0;
+    }
+    assign_self_contact_roles(pair, near, communicator);
   }
 
 

@@ -10,37 +10,30 @@
 
 namespace tribos
 {
-  namespace
-  {
-    /** Whether @p state pairs its node with a face closer than twice the
-     * node's element size @p size (a contact that can close now). */
-    bool
-    near(const NodeState &state, const double size)
-    {
-      return state.paired && state.face >= 0 &&
-             state.projection.distance < 2 * size;
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
-  assign_self_contact_roles(ContactPair<dim> &pair, const MPI_Comm communicator)
+  assign_self_contact_roles(ContactPair<dim>        &pair,
+                            const std::vector<bool> &near,
+                            const MPI_Comm           communicator)
   {
     const auto &nodes = pair.slave->nodes();
     const auto &faces = pair.master->faces();
 
-    // Per owned near node: the node, whether it was a near slave at the
-    // last converged increment, its face's nodes.
+    // Per owned near node: the node, whether it was a slave at the last
+    // converged increment (closed, or paired within two element sizes;
+    // the status survives a change of the mesh), its face's nodes.
     std::vector<unsigned int> mine;
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-      if (pair.owned[k] && !pair.excluded[k] &&
-          near(pair.current[k], nodes[k].size))
+      if (pair.owned[k] && !pair.excluded[k] && near[k])
       {
+        const NodeState &committed = pair.committed[k];
+        const bool       was_a_slave =
+          committed.closed() ||
+          (committed.paired && committed.face >= 0 &&
+           committed.projection.distance < 2 * nodes[k].size);
         const auto &face = faces[pair.current[k].face];
         mine.push_back(k);
-        mine.push_back(near(pair.committed[k], nodes[k].size) ? 1 : 0);
+        mine.push_back(was_a_slave ? 1 : 0);
         mine.push_back(face.n_vertices);
         for (unsigned int v = 0; v < face.n_vertices; ++v)
           mine.push_back(face.nodes[v]);
@@ -80,13 +73,18 @@ namespace tribos
         for (const unsigned int m : neighbours[queue[q]])
           if (component.insert(m).second)
             queue.push_back(m);
-      unsigned int seed = *component.begin();
+      // The seed is paired (a node that is only a face's node would make
+      // the nodes on that face masters and leave the contact to nobody).
+      int seed = -1;
       for (const unsigned int k : component)
-        if (was_slave.count(k) == 1)
+        if (targets.count(k) == 1 && was_slave.count(k) == 1)
         {
           seed = k;
           break;
         }
+      for (const unsigned int k : component)
+        if (seed < 0 && targets.count(k) == 1)
+          seed = k;
       // Breadth first from the seed; an edge between two equal colours
       // means the component is not two-sided.
       colour[seed] = 0;
@@ -124,8 +122,15 @@ namespace tribos
       }
     }
 
+    // A master gives up its pairing only where a slave holds the contact:
+    // a node on a slave's face.
+    std::set<unsigned int> covered;
+    for (const auto &[k, on] : targets)
+      if (colour[k] == 0)
+        covered.insert(on.begin(), on.end());
     for (const auto &[k, c] : colour)
-      if (c == 1 && pair.owned[k] && targets.count(k) == 1)
+      if (c == 1 && pair.owned[k] && targets.count(k) == 1 &&
+          covered.count(k) == 1)
       {
         pair.current[k].paired = false;
         pair.current[k].face   = -1;
@@ -133,7 +138,11 @@ namespace tribos
   }
 
   template void
-  assign_self_contact_roles(ContactPair<2> &, const MPI_Comm);
+  assign_self_contact_roles(ContactPair<2> &,
+                            const std::vector<bool> &,
+                            const MPI_Comm);
   template void
-  assign_self_contact_roles(ContactPair<3> &, const MPI_Comm);
+  assign_self_contact_roles(ContactPair<3> &,
+                            const std::vector<bool> &,
+                            const MPI_Comm);
 } // namespace tribos

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <vector>
+
 namespace tribos
 {
   using namespace dealii;
@@ -20,17 +22,19 @@ namespace tribos
    * from where the surface folds, not from the input.
    *
    * The rule (4C colours its self-contact elements alike): the graph
-   * whose edges join each paired slave node near its face (closer than
-   * twice its element size) to that face's nodes is coloured with two
-   * colours, component by component, breadth first from a seed; the
-   * seed's colour is slave, its neighbours' master, theirs slave, and so
-   * on, so that whole sides of a fold are slaves and the opposite sides
-   * masters. The seed is the component's smallest node that was a near
-   * slave at the last converged increment, else its smallest node: the
-   * sides keep their roles from increment to increment, and restarts
-   * keep them (the committed states are in the checkpoint). Which side
-   * that is the first time is arbitrary (the smaller node numbers), as
-   * the choice of slave of a one-pass pair is the user's. A component
+   * whose edges join each paired node near its face (@p near: closer
+   * than twice its element size, or behind the face) to that face's
+   * nodes is coloured with two colours, component by component, breadth
+   * first from a seed; the seed's colour is slave, its neighbours'
+   * master, theirs slave, and so on, so that whole sides of a fold are
+   * slaves and the opposite sides masters. The seed is the component's
+   * smallest paired node that was a slave at the last converged
+   * increment (closed, or paired near), else its smallest paired node:
+   * the sides keep their roles from increment to increment, through a
+   * restart (the committed states are in the checkpoint) and a change of
+   * the mesh (the contact status is carried over). Which side that is
+   * the first time is arbitrary (the smaller node numbers), as the
+   * choice of slave of a one-pass pair is the user's. A component
    * that cannot be coloured (three patches touching each other) falls
    * back to the mutual rule: a node is a master if a node of its face has
    * it in its own face and a smaller index. The graph is gathered from
@@ -38,12 +42,14 @@ namespace tribos
    * depend on the partition.
    *
    * A master node loses its pairing (its multiplier's row then says
-   * Lambda = 0); slaves keep theirs. Collective.
+   * Lambda = 0) where a slave holds the contact (it is a node of a
+   * slave's face); slaves keep theirs. Collective.
    */
   template <int dim>
   void
-  assign_self_contact_roles(ContactPair<dim> &pair,
-                            const MPI_Comm    communicator);
+  assign_self_contact_roles(ContactPair<dim>        &pair,
+                            const std::vector<bool> &near,
+                            const MPI_Comm           communicator);
 } // namespace tribos
 
 #endif
