@@ -71,12 +71,43 @@ half = ["Scene/Mesh file=u_shape_half.msh",
         "Contact/Rigid surfaces=wall : plane : 0, 0, 0 : 1, 0, 0 : 0, 0"]
 
 
+def last_contact(folder):
+    """The rows of the last contact CSV in folder."""
+    last = sorted(f for f in os.listdir(folder) if f.startswith("contact-"))
+    return read_csv(folder + "/" + last[-1])
+
+
 def nodal_pressures(folder):
     """The pressure of every slave node in the last contact CSV, keyed by
     body and reference position."""
-    last = sorted(f for f in os.listdir(folder) if f.startswith("contact-"))
     return {(r["body"], round(r["X"], 9), round(r["Y"], 9), round(r["Z"], 9)):
-            r["CPRESS"] for r in read_csv(folder + "/" + last[-1])}
+            r["CPRESS"] for r in last_contact(folder)}
+
+
+def closed_per_arm(folder):
+    """The closed nodes of the U's left (x < 0) and right arms."""
+    pressures = nodal_pressures(folder)
+    return [sum(1 for k, p in pressures.items() if p > 0 and
+                (k[1] < 0) == left) for left in (True, False)]
+
+
+def closed_rows(folder):
+    """The last contact CSV's rows of the closed nodes, keyed by reference
+    position (2D)."""
+    return {(round(r["X"], 9), round(r["Y"], 9)): r
+            for r in last_contact(folder) if r["CPRESS"] > 0}
+
+
+def traction_difference(rows, reference):
+    """The largest difference of pressure and shear traction between two
+    closed_rows() of the same nodes, over the largest pressure; infinite
+    if the closed nodes differ."""
+    if sorted(rows) != sorted(reference):
+        return math.inf
+    return max(max(abs(rows[k][c] - reference[k][c])
+                   for c in ("CPRESS", "CSHEAR_x", "CSHEAR_y"))
+               for k in reference) / max(r["CPRESS"]
+                                         for r in reference.values())
 
 
 def by_time(folder):
@@ -167,8 +198,7 @@ if "serial" in selected:
         final = full[max(full)]
         # Closed nodes per arm (x < 0 the left one): both passes close
         # both arms.
-        arms = [sum(1 for k, p in nodal_pressures(out + "/u_" + name).items()
-                    if p > 0 and (k[1] < 0) == left) for left in (True, False)]
+        arms = closed_per_arm(out + "/u_" + name)
         check(n_compared >= 8 and worst < 0.01 and min(arms) >= 3,
               "U-shaped body, %s: the self-contact force within %.2f %% "
               "(bound 1 %%) of the half model's at its %d steps in contact "
@@ -206,8 +236,7 @@ if "serial" in selected:
     lm_u = out + "/u_lagrange_multiplier"
     run(tribos, u_shape, lm_u, ["Contact/Method=lagrange multiplier"])
     history = read_csv(lm_u + "/history.csv")
-    arms = [sum(1 for k, p in nodal_pressures(lm_u).items()
-                if p > 0 and (k[1] < 0) == left) for left in (True, False)]
+    arms = closed_per_arm(lm_u)
     check(len(history) == 10 and history[-1]["cutbacks"] == 0 and
           max(r["max_penetration"] for r in history) < 1e-10 and
           min(arms) == 0 and max(arms) >= 3,
@@ -228,8 +257,7 @@ if "serial" in selected:
                                    "Adaptivity/Enable=true",
                                    "Adaptivity/Maximum level=1"])
     history = read_csv(adapted + "/history.csv")
-    arms = [sum(1 for k, p in nodal_pressures(adapted).items()
-                if p > 0 and (k[1] < 0) == left) for left in (True, False)]
+    arms = closed_per_arm(adapted)
     check(history[-1]["time"] == 1 and
           max(r["max_penetration"] for r in history) < 1e-10 and
           min(arms) == 0 and max(arms) >= 3,
@@ -287,16 +315,10 @@ if "serial" in selected:
                  "Contact/Pairs=9 : 10 : mu=%g" % mu,
                  "Contact/Passes=two-pass"])
     last = "/contact-00010.csv"
-    nodal = []
-    for name in ("u_friction", "u_friction_two_pass"):
-        nodal.append({(round(r["X"], 9), round(r["Y"], 9)): r
-                      for r in read_csv(out + "/" + name + last)
-                      if r["CPRESS"] > 0})
+    nodal = [closed_rows(out + "/" + name)
+             for name in ("u_friction", "u_friction_two_pass")]
     largest = max(r["CPRESS"] for r in nodal[1].values())
-    worst = max(max(abs(nodal[0][k][c] - nodal[1][k][c])
-                    for c in ("CPRESS", "CSHEAR_x", "CSHEAR_y"))
-                for k in nodal[1]) / largest if \
-        sorted(nodal[0]) == sorted(nodal[1]) else math.inf
+    worst = traction_difference(nodal[0], nodal[1])
     check(len(nodal[1]) >= 4 and worst < 1e-6,
           "U sheared with friction: the self-contact pair's %d closed nodes "
           "equal the two-boundary two-pass pair's, pressure and shear "
@@ -329,15 +351,10 @@ if "serial" in selected:
         run(tribos, u_shape, name,
             lm + ["Scene/Mesh file=u_shape_split.msh",
                   "Contact/Pairs=%s : mu=%g" % (side, mu)])
-        nodal[side] = {(round(r["X"], 9), round(r["Y"], 9)): r
-                       for r in read_csv(name + last) if r["CPRESS"] > 0}
-    mine = {(round(r["X"], 9), round(r["Y"], 9)): r
-            for r in read_csv(out + "/u_friction_lm" + last)
-            if r["CPRESS"] > 0}
+        nodal[side] = closed_rows(name)
+    mine = closed_rows(out + "/u_friction_lm")
     match = [side for side in nodal if sorted(nodal[side]) == sorted(mine)]
-    worst = max(max(abs(mine[k][c] - nodal[match[0]][k][c])
-                    for c in ("CPRESS", "CSHEAR_x", "CSHEAR_y"))
-                for k in mine) / max(r["CPRESS"] for r in mine.values()) \
+    worst = traction_difference(mine, nodal[match[0]]) \
         if len(match) == 1 else math.inf
     sliding = sum(1 for r in mine.values() if r["CSTATUS"] == 2)
     check(worst < 1e-8 and sliding >= 1,

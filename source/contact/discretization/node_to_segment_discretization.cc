@@ -8,6 +8,7 @@
 #include <tribos/contact/discretization/smoothed_node_to_segment_discretization.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -99,37 +100,37 @@ namespace tribos
     std::vector<Vec3<double>> reference(nodes.size());
     for (unsigned int k = 0; k < nodes.size(); ++k)
       reference[k] = nodes[k].reference;
+    // The faces' boxes, widened by the search distance.
+    std::vector<std::array<double, 2 * dim>> boxes(faces.size());
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        double lo = reference[faces[f].nodes[0]][d], hi = lo;
+        for (unsigned int v = 1; v < faces[f].n_vertices; ++v)
+        {
+          lo = std::min(lo, reference[faces[f].nodes[v]][d]);
+          hi = std::max(hi, reference[faces[f].nodes[v]][d]);
+        }
+        boxes[f][d]       = lo - distance;
+        boxes[f][dim + d] = hi + distance;
+      }
     // Does any node face a face of the surface, in front of it, within
     // the search distance (the reference configuration)?
     for (unsigned int k = 0; k < nodes.size(); ++k)
     {
-      const Vec3<double> &x = reference[k];
-      Vec3<double>        n_k{{0, 0, 0}};
-      for (const unsigned int f : nodes[k].faces)
-      {
-        Vec3<double> n;
-        project(pair, f, x, true, &n, nullptr, &reference);
-        n_k = n_k + n;
-      }
-      const auto &near = own_neighbourhood[k];
+      const Vec3<double> &x    = reference[k];
+      const Vec3<double>  n_k  = node_normal(pair, k, &reference);
+      const auto         &near = own_neighbourhood[k];
       for (unsigned int f = 0; f < faces.size(); ++f)
       {
         bool beyond = false;
         for (unsigned int d = 0; d < dim; ++d)
-        {
-          double lo = reference[faces[f].nodes[0]][d], hi = lo;
-          for (unsigned int v = 1; v < faces[f].n_vertices; ++v)
-          {
-            lo = std::min(lo, reference[faces[f].nodes[v]][d]);
-            hi = std::max(hi, reference[faces[f].nodes[v]][d]);
-          }
-          beyond = beyond || x[d] < lo - distance || x[d] > hi + distance;
-        }
+          beyond = beyond || x[d] < boxes[f][d] || x[d] > boxes[f][dim + d];
         if (beyond || std::binary_search(near.begin(), near.end(), f))
           continue;
         Vec3<double>     n_f, xbar;
         const Projection p = project(pair, f, x, true, &n_f, &xbar, &reference);
-        if (p.distance <= distance && dot(n_k, n_f) < -0.5 * norm(n_k) &&
+        if (p.distance <= distance && dot(n_k, n_f) < -0.5 &&
             dot(x - xbar, n_f) >= 0)
           return;
       }
@@ -181,15 +182,18 @@ namespace tribos
 
   template <int dim>
   Vec3<double>
-  NodeToSegmentDiscretization<dim>::node_normal(const ContactPair<dim> &pair,
-                                                const unsigned int      k) const
+  NodeToSegmentDiscretization<dim>::node_normal(
+    const ContactPair<dim>          &pair,
+    const unsigned int               k,
+    const std::vector<Vec3<double>> *at) const
   {
+    const auto  &positions = at != nullptr ? *at : pair.master_positions;
     Vec3<double> sum{{0, 0, 0}};
     for (const unsigned int f : pair.slave->nodes()[k].faces)
-      if (pair.face_known[f])
+      if (at != nullptr || pair.face_known[f])
       {
         Vec3<double> n;
-        project(pair, f, pair.master_positions[k], true, &n);
+        project(pair, f, positions[k], true, &n, nullptr, at);
         sum = sum + n;
       }
     const double length = norm(sum);

@@ -131,9 +131,11 @@ namespace tribos
     check_self_reach(const ContactPair<dim> &pair);
 
     /** Self-contact: the unit normal of slave node @p k, the mean of its
-     * known faces' normals there. */
+     * known faces' normals there (of all its faces at @p at if given). */
     Vec3<double>
-    node_normal(const ContactPair<dim> &pair, const unsigned int k) const;
+    node_normal(const ContactPair<dim>          &pair,
+                const unsigned int               k,
+                const std::vector<Vec3<double>> *at = nullptr) const;
 
     /** Self-contact: per node, the faces that share a node with its faces
      * (sorted; its own faces included). Empty for other pairs. */
