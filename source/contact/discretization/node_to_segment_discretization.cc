@@ -28,119 +28,7 @@ namespace tribos
   NodeToSegmentDiscretization<dim>::initialize(const ContactPair<dim> &pair)
   {
     require_linear_slave_faces(pair);
-    own_neighbourhood.clear();
-    if (pair.master != pair.slave)
-      return;
-    const auto &nodes = pair.slave->nodes();
-    const auto &faces = pair.slave->faces();
-    double      size  = 0;
-    own_neighbourhood.resize(nodes.size());
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-    {
-      auto &near = own_neighbourhood[k];
-      for (const unsigned int f : nodes[k].faces)
-        for (unsigned int i = 0; i < faces[f].n_nodes(); ++i)
-          for (const unsigned int g : nodes[faces[f].node(i)].faces)
-            near.push_back(g);
-      std::sort(near.begin(), near.end());
-      near.erase(std::unique(near.begin(), near.end()), near.end());
-      size = std::max(size, nodes[k].size);
-    }
-    // A surface whose every face is in every node's neighbourhood (two
-    // segments, one quadrilateral) has nothing to touch.
-    bool can_touch = false;
-    for (const auto &near : own_neighbourhood)
-      can_touch = can_touch || near.size() < faces.size();
-    AssertThrow(can_touch,
-                ExcMessage("Parameter <Contact/Pairs>: the self-contact pair "
-                           "<" +
-                           pair.description.text + "> has a surface of " +
-                           std::to_string(faces.size()) +
-                           " face(s), each of which shares a node with every "
-                           "other: no node of it can touch a face of it that "
-                           "is not its own or a neighbour of its own. A "
-                           "self-contact surface needs faces apart from each "
-                           "node's."));
-    // The faces are looked for within twice the largest element size,
-    // then twice as far until one is found or the reach passes twice the
-    // way the node went in the increment (self_candidate_faces()), never
-    // beyond twice the surface's extent or Search distance. A node that
-    // an increment carries through an opposite face it had not touched
-    // is then still within reach of it, and the face admissible (it was
-    // in front of it at the start).
-    double extent = 0;
-    for (unsigned int d = 0; d < 3; ++d)
-    {
-      double lo = std::numeric_limits<double>::max(), hi = -lo;
-      for (const auto &node : nodes)
-      {
-        lo = std::min(lo, node.reference[d]);
-        hi = std::max(hi, node.reference[d]);
-      }
-      extent = std::max(extent, hi - lo);
-    }
-    reach         = 2 * size;
-    maximum_reach = std::min(parameters.search_distance, 2 * extent);
-    check_self_reach(pair);
-  }
-
-
-
-  template <int dim>
-  void
-  NodeToSegmentDiscretization<dim>::check_self_reach(
-    const ContactPair<dim> &pair)
-  {
-    self_warning.clear();
-    const double distance = parameters.search_distance;
-    if (!std::isfinite(distance))
-      return;
-    const auto               &nodes = pair.slave->nodes();
-    const auto               &faces = pair.slave->faces();
-    std::vector<Vec3<double>> reference(nodes.size());
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      reference[k] = nodes[k].reference;
-    // The faces' boxes, widened by the search distance.
-    std::vector<std::array<double, 2 * dim>> boxes(faces.size());
-    for (unsigned int f = 0; f < faces.size(); ++f)
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        double lo = reference[faces[f].nodes[0]][d], hi = lo;
-        for (unsigned int v = 1; v < faces[f].n_vertices; ++v)
-        {
-          lo = std::min(lo, reference[faces[f].nodes[v]][d]);
-          hi = std::max(hi, reference[faces[f].nodes[v]][d]);
-        }
-        boxes[f][d]       = lo - distance;
-        boxes[f][dim + d] = hi + distance;
-      }
-    // Does any node face a face of the surface, in front of it, within
-    // the search distance (the reference configuration)?
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-    {
-      const Vec3<double> &x    = reference[k];
-      const Vec3<double>  n_k  = node_normal(pair, k, &reference);
-      const auto         &near = own_neighbourhood[k];
-      for (unsigned int f = 0; f < faces.size(); ++f)
-      {
-        bool beyond = false;
-        for (unsigned int d = 0; d < dim; ++d)
-          beyond = beyond || x[d] < boxes[f][d] || x[d] > boxes[f][dim + d];
-        if (beyond || std::binary_search(near.begin(), near.end(), f))
-          continue;
-        Vec3<double>     n_f, xbar;
-        const Projection p = project(pair, f, x, true, &n_f, &xbar, &reference);
-        if (p.distance <= distance && dot(n_k, n_f) < -0.5 &&
-            dot(x - xbar, n_f) >= 0)
-          return;
-      }
-    }
-    self_warning = "the self-contact pair <" + pair.description.text +
-                   ">: no node of its surface faces a face of it within "
-                   "Contact/Search distance = " +
-                   to_scientific(distance) +
-                   " (the reference configuration); the surface touches "
-                   "itself only where it folds closer than that.";
+    self_search.initialize(pair, parameters.search_distance);
   }
 
 
@@ -182,18 +70,15 @@ namespace tribos
 
   template <int dim>
   Vec3<double>
-  NodeToSegmentDiscretization<dim>::node_normal(
-    const ContactPair<dim>          &pair,
-    const unsigned int               k,
-    const std::vector<Vec3<double>> *at) const
+  NodeToSegmentDiscretization<dim>::node_normal(const ContactPair<dim> &pair,
+                                                const unsigned int      k) const
   {
-    const auto  &positions = at != nullptr ? *at : pair.master_positions;
     Vec3<double> sum{{0, 0, 0}};
     for (const unsigned int f : pair.slave->nodes()[k].faces)
-      if (at != nullptr || pair.face_known[f])
+      if (pair.face_known[f])
       {
         Vec3<double> n;
-        project(pair, f, positions[k], true, &n, nullptr, at);
+        project(pair, f, pair.master_positions[k], true, &n);
         sum = sum + n;
       }
     const double length = norm(sum);
@@ -210,14 +95,11 @@ namespace tribos
     const Vec3<double>     &x,
     NodeState              &state) const
   {
-    const auto        &near = own_neighbourhood[k];
-    const Vec3<double> n_k  = node_normal(pair, k);
-    const double       size = pair.slave->nodes()[k].size;
-    const auto         admissible =
-      [&](const unsigned int f, double &distance, const double r)
+    const Vec3<double> n_k        = node_normal(pair, k);
+    const double       size       = pair.slave->nodes()[k].size;
+    const auto         admissible = [&](const unsigned int f, double &distance)
     {
-      if (!pair.face_known[f] ||
-          std::binary_search(near.begin(), near.end(), f))
+      if (self_search.own(k, f))
         return false;
       Vec3<double>     n_f, xbar;
       const Projection p = project(pair, f, x, true, &n_f, &xbar);
@@ -242,30 +124,15 @@ namespace tribos
           return false;
       }
       distance = p.distance;
-      return distance <= r;
+      return true;
     };
-    // The farthest this node looks: the reach and twice the way it went
-    // in this increment (the opposite side may have come as far).
-    const double farthest =
-      std::min(maximum_reach,
-               reach + 2 * norm(x - pair.old_master_positions[k]));
-    int    best          = -1;
-    double best_distance = std::numeric_limits<double>::max();
-    for (double r = std::min(reach, farthest); best < 0;)
-    {
-      for (const unsigned int f : pair.search.faces_near(x, r))
-      {
-        double distance;
-        if (admissible(f, distance, r) && distance < best_distance)
-        {
-          best          = f;
-          best_distance = distance;
-        }
-      }
-      if (r >= farthest)
-        break;
-      r = std::min(2 * r, farthest);
-    }
+    double    best_distance;
+    const int best = self_search.closest(pair,
+                                         k,
+                                         x,
+                                         norm(x - pair.old_master_positions[k]),
+                                         admissible,
+                                         best_distance);
     if (best < 0)
       return {};
     state.distance = best_distance;
@@ -273,7 +140,8 @@ namespace tribos
     for (const unsigned int g : pair.master->faces()[best].neighbours)
     {
       double distance;
-      if (admissible(g, distance, maximum_reach))
+      if (pair.face_known[g] && !self_search.own(k, g) &&
+          admissible(g, distance) && distance <= self_search.maximum_reach())
         candidates.push_back(g);
     }
     return candidates;
@@ -314,7 +182,7 @@ namespace tribos
     // A face that is not known lies beyond the search distance.
     if (state.paired && pair.face_known[state.face])
     {
-      const bool       self = !own_neighbourhood.empty();
+      const bool       self = self_search.active();
       Vec3<double>     n_f;
       const Projection kept =
         project(pair, state.face, x, false, self ? &n_f : nullptr);
@@ -331,8 +199,8 @@ namespace tribos
     state.face     = -1;
     state.distance = std::numeric_limits<double>::quiet_NaN();
     const std::vector<unsigned int> candidates =
-      own_neighbourhood.empty() ? candidate_faces(pair, x, state) :
-                                  self_candidate_faces(pair, k, x, state);
+      !self_search.active() ? candidate_faces(pair, x, state) :
+                              self_candidate_faces(pair, k, x, state);
     if (candidates.empty())
       return false;
 
@@ -370,7 +238,7 @@ namespace tribos
     // there is at an end too. (The U sheared with multipliers: an arm's
     // tip node above the other arm's tip took the face below the tip
     // face, clamped at their common vertex 0.33 away, and Newton cycled.)
-    if (!own_neighbourhood.empty() && !at_end && !state.projection.inside())
+    if (self_search.active() && !at_end && !state.projection.inside())
     {
       Vec3<double> corner;
       project(pair, state.face, x, true, nullptr, &corner);
@@ -397,7 +265,7 @@ namespace tribos
   NodeToSegmentDiscretization<dim>::finish_pairing(ContactPair<dim> &pair,
                                                    const MPI_Comm communicator)
   {
-    if (own_neighbourhood.empty() || pair.enforcement->n_node_unknowns() == 0)
+    if (!self_search.active() || pair.enforcement->n_node_unknowns() == 0)
       return;
     // Near: paired within two element sizes of its face, or behind it (a
     // node carried deep through the opposite side must have a role).

@@ -2,6 +2,7 @@
 #define tribos_contact_node_to_segment_discretization_h
 
 #include <tribos/contact/discretization/contact_discretization.h>
+#include <tribos/contact/search/self_contact_search.h>
 #include <tribos/parameters/contact.h>
 
 #include <string>
@@ -45,8 +46,7 @@ namespace tribos
     std::vector<std::string>
     setup_warnings() const override
     {
-      return self_warning.empty() ? std::vector<std::string>() :
-                                    std::vector<std::string>(1, self_warning);
+      return self_search.warnings();
     }
 
     /** Self-contact with multipliers: one side of each contact the slave
@@ -124,28 +124,13 @@ namespace tribos
             Vec3<double>                    *point  = nullptr,
             const std::vector<Vec3<double>> *at     = nullptr) const;
 
-    /** Self-contact with a finite Search distance: set self_warning if no
-     * node faces a face of the surface, in front of it, within that
-     * distance in the reference configuration. */
-    void
-    check_self_reach(const ContactPair<dim> &pair);
-
     /** Self-contact: the unit normal of slave node @p k, the mean of its
-     * known faces' normals there (of all its faces at @p at if given). */
+     * known faces' normals there. */
     Vec3<double>
-    node_normal(const ContactPair<dim>          &pair,
-                const unsigned int               k,
-                const std::vector<Vec3<double>> *at = nullptr) const;
+    node_normal(const ContactPair<dim> &pair, const unsigned int k) const;
 
-    /** Self-contact: per node, the faces that share a node with its faces
-     * (sorted; its own faces included). Empty for other pairs. */
-    std::vector<std::vector<unsigned int>> own_neighbourhood;
-    /** The warning of check_self_reach(), empty if none. */
-    std::string self_warning;
-    /** Self-contact: how far from a node faces are looked for first,
-     * and at most (see initialize()). */
-    double reach         = 0;
-    double maximum_reach = 0;
+    /** Self-contact: each node's own neighbourhood and the reach. */
+    SelfContactSearch<dim> self_search;
   };
 } // namespace tribos
 
