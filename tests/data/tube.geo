@@ -7,9 +7,15 @@
 // y = 0 a symmetry plane and the inner surface against a rigid wall there.
 //   gmsh -3 tube.geo -o tube_half.msh
 //   gmsh -3 tube.geo -setnumber quarter 1 -o tube_quarter.msh
+// With planar = 1 the cross-section alone, a ring in plane strain, the
+// same physical groups as curves (no ends 3, 4):
+//   gmsh -2 tube.geo -setnumber planar 1 -o ring_half.msh
+//   gmsh -2 tube.geo -setnumber planar 1 -setnumber quarter 1 \
+//     -o ring_quarter.msh
 // Physical groups (surfaces): 1 inner, 2 outer, 3 the end z = 0, 4 the
 // end z = 0.1, 5 the cut x = 0, 6 the cut y = 0 (quarter); volume 1.
 DefineConstant[ quarter = {0, Name "1: y >= 0 only"},
+                planar = {0, Name "1: the cross-section (2D)"},
                 n = {12, Name "cells along a quarter arc"},
                 m = {3, Name "cells across the wall"} ];
 Mesh.MshFileVersion = 2.2;
@@ -29,6 +35,22 @@ If (quarter == 0)
   Transfinite Curve{5, 6} = n + 1; Transfinite Curve{7} = m + 1;
   Curve Loop(2) = {4, 6, -7, -5}; Plane Surface(2) = {2};
   Transfinite Surface{2}; Recombine Surface{2};
+EndIf
+If (planar == 1 && quarter == 0)
+  Physical Curve(1) = {1, 5};
+  Physical Curve(2) = {2, 6};
+  Physical Curve(5) = {3, 7};
+  Physical Surface(1) = {1, 2};
+EndIf
+If (planar == 1 && quarter == 1)
+  Physical Curve(1) = {1};
+  Physical Curve(2) = {2};
+  Physical Curve(5) = {3};
+  Physical Curve(6) = {4};
+  Physical Surface(1) = {1};
+EndIf
+If (planar == 0)
+If (quarter == 0)
   Extrude{0, 0, dz}{Surface{1, 2}; Layers{1}; Recombine;}
 Else
   Extrude{0, 0, dz}{Surface{1}; Layers{1}; Recombine;}
@@ -51,3 +73,4 @@ If (quarter == 1)
   Physical Surface(6) = {cuty[]};
 EndIf
 Physical Volume(1) = {Volume{:}};
+EndIf

@@ -53,6 +53,7 @@ namespace tribos
   {
     const unsigned int n_slaves = pair.n_nodes();
     faces_of_node.assign(n_slaves, {});
+    self_search.initialize(pair, parameters.search_distance);
     // The standard quadratic functions of the vertex on the axis
     // integrate to zero against 2 pi r: that node carries no multiplier,
     // the others then miss a partition of unity and Newton does not
@@ -313,7 +314,8 @@ namespace tribos
     const double size = pair.slave->nodes()[k].size;
     const double floor =
       1e-9 * std::pow(size, dim - 1) * (axisymmetric ? size : 1.);
-    input.min_weight = 1e-3 * std::max(pair.area[k], floor);
+    input.min_weight  = 1e-3 * std::max(pair.area[k], floor);
+    input.area_factor = pair.area_factor;
   }
 
 

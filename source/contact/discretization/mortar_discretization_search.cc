@@ -76,32 +76,35 @@ namespace tribos
       bool                       reached = false;
 
       /**
-       * From the faces closest to @p starts; @p classify(m) is 0 for a
+       * From the faces closest to @p starts (@p start_face(point, face,
+       * distance): false if it finds none); @p classify(m) is 0 for a
        * face that does not overlap, 1 for one that overlaps but is not
        * taken (it faces away, or lies too deep behind), 2 for one taken.
        * The walk goes on through faces not taken, so that faces beyond
        * them are found however the closest faces lie. False if the search
        * found no face at all.
        */
-      template <class Classify>
+      template <class Classify, class StartFace>
       bool
       walk(const Vec3<double> *starts,
            const unsigned int  n_starts,
-           const Classify     &classify)
+           const Classify     &classify,
+           const StartFace    &start_face)
       {
         const auto               &faces = pair.master->faces();
         std::vector<unsigned int> queue;
         for (unsigned int s = 0; s < n_starts; ++s)
         {
-          const Vec3<double> &point = starts[s];
-          unsigned int        face;
-          double              squared_distance;
-          if (!pair.search.closest_face(point, face, squared_distance))
-            return false;
-          closest = std::min(closest, std::sqrt(squared_distance));
+          unsigned int face;
+          double       distance;
+          if (!start_face(starts[s], face, distance))
+            continue;
+          closest = std::min(closest, distance);
           if (std::find(queue.begin(), queue.end(), face) == queue.end())
             queue.push_back(face);
         }
+        if (queue.empty())
+          return false;
         const unsigned int n_start = queue.size();
         for (unsigned int i = 0; i < queue.size(); ++i)
         {
@@ -160,15 +163,107 @@ namespace tribos
 
 
     /**
+     * Self-contact: whether a master face whose farthest point lies
+     * @p gap_max from a slave face (of size @p length) along its normal,
+     * and at the start of the increment @p old_gap_max (of size
+     * @p old_length), is on the far side of the slave's own body: wholly
+     * more than half the slave's size behind it, now and at the start. A
+     * face the slave was in front of at the start it has gone through in
+     * this increment: a penetration (a first iterate carries a fold's
+     * sides deep through each other).
+     */
+    inline bool
+    far_side(const double gap_max,
+             const double length,
+             const double old_gap_max,
+             const double old_length)
+    {
+      return gap_max < -0.5 * length && old_gap_max < -0.5 * old_length;
+    }
+
+
+
+    /** The distance from @p x to master face @p f (its vertices' linear
+     * face, clamped). */
+    template <int dim>
+    double
+    face_distance(const ContactPair<dim> &pair,
+                  const unsigned int      f,
+                  const Vec3<double>     &x)
+    {
+      const auto  &face = pair.master->faces()[f];
+      Vec3<double> y[4];
+      for (unsigned int v = 0; v < face.n_vertices; ++v)
+        y[v] = pair.master_positions[face.nodes[v]];
+      return pair.master->shape().template visit<dim>(
+        [&](auto kind)
+        {
+          using Linear = typename decltype(kind)::Linear;
+          return Linear::project(x, y, true).distance;
+        });
+    }
+
+
+
+    /**
+     * The start faces of a walk for slave node @p k: the closest face of
+     * the tree, or for self-contact the closest face (within the reach of
+     * @p self) that @p kind takes (class 2: overlapping, facing, not on
+     * the far side); the node's own faces and their neighbours never.
+     */
+    template <int dim, class Kind>
+    auto
+    start_faces(const ContactPair<dim>       &pair,
+                const SelfContactSearch<dim> &self,
+                const unsigned int            k,
+                const double                  motion,
+                const Kind                   &kind)
+    {
+      return [&pair, &self, k, motion, &kind](const Vec3<double> &point,
+                                              unsigned int       &face,
+                                              double             &distance)
+      {
+        if (!self.active())
+        {
+          double squared_distance;
+          if (!pair.search.closest_face(point, face, squared_distance))
+            return false;
+          distance = std::sqrt(squared_distance);
+          return true;
+        }
+        const int best = self.closest(
+          pair,
+          k,
+          point,
+          motion,
+          [&](const unsigned int m, double &d)
+          {
+            double gap_min;
+            if (kind(m, gap_min) != 2)
+              return false;
+            d = face_distance(pair, m, point);
+            return true;
+          },
+          distance);
+        face = best;
+        return best >= 0;
+      };
+    }
+
+
+
+    /**
      * 2D: the master segments that overlap slave node @p k's segments in
      * the projection onto their lines, face them and are not too deep
      * behind them (within @p search_distance: reached). False if the
-     * search found no face.
+     * search found no face. For self-contact (@p self active) not the
+     * node's own neighbourhood nor the far side of its own body.
      */
     bool
-    walk_segments(FaceWalk<2>       &walker,
-                  const unsigned int k,
-                  const double       search_distance)
+    walk_segments(FaceWalk<2>                &walker,
+                  const SelfContactSearch<2> &self,
+                  const unsigned int          k,
+                  const double                search_distance)
     {
       const ContactPair<2> &pair        = walker.pair;
       const auto           &faces       = pair.master->faces();
@@ -180,6 +275,7 @@ namespace tribos
       // it (the far side of the master body lies beyond).
       const bool was_closed = pair.committed[k].closed();
       const bool quadratic  = pair.slave->quadratic();
+      bool       searched   = false;
       for (const unsigned int f : pair.slave->nodes()[k].faces)
       {
         const Vec3<double> &x_a = pair.slave_positions[slave_faces[f].nodes[0]];
@@ -188,20 +284,33 @@ namespace tribos
         const double        length_squared = dot(e, e);
         const Vec3<double>  n_s =
           scale(1. / std::sqrt(length_squared), cross(ez, e));
-        const double slave_motion = largest_motion(pair.slave_positions,
+        const double        slave_motion = largest_motion(pair.slave_positions,
                                                    pair.old_slave_positions,
                                                    slave_faces[f].nodes,
                                                    2);
+        const Vec3<double> &x_a_old =
+          pair.old_slave_positions[slave_faces[f].nodes[0]];
+        const Vec3<double> e_old =
+          pair.old_slave_positions[slave_faces[f].nodes[1]] - x_a_old;
+        const double       length_old = norm(e_old);
+        const Vec3<double> n_old = scale(1. / length_old, cross(ez, e_old));
 
         // Whether master face m overlaps this slave segment in the
         // projection onto its line, faces it and is not too deep behind
-        // it (walk's classes).
-        const auto classify = [&](const unsigned int m)
+        // it (walk's classes); @p gap_min: its closest point along the
+        // normal.
+        const auto kind = [&](const unsigned int m, double &gap_min)
         {
           const Vec3<double> &y_c = pair.master_positions[faces[m].nodes[0]];
           const Vec3<double> &y_d = pair.master_positions[faces[m].nodes[1]];
-          const double        s_c = dot(y_c - x_a, e) / length_squared;
-          const double        s_d = dot(y_d - x_a, e) / length_squared;
+          // Self-contact: not the node's own faces, nor their neighbours
+          // but across a crease (SelfContactSearch::own()).
+          if (self.active() && self.own(k, m) &&
+              (self.of_node(pair, k, m) ||
+               dot(cross(ez, y_d - y_c), n_s) > -0.9 * norm(y_d - y_c)))
+            return 0;
+          const double s_c = dot(y_c - x_a, e) / length_squared;
+          const double s_d = dot(y_d - x_a, e) / length_squared;
           if (std::abs(s_c - s_d) < 1e-12)
             return 0;
           // Quadratic segments are curves, the chords only approximate
@@ -224,8 +333,8 @@ namespace tribos
           // close within an increment; it is paired again when it comes
           // near). Not wholly more than that behind the slave (the far
           // side of a thin master).
-          double gap_min = std::numeric_limits<double>::max(),
-                 gap_max = -gap_min;
+          gap_min        = std::numeric_limits<double>::max();
+          double gap_max = -gap_min;
           for (const double t : {lo, hi})
           {
             const Vec3<double> y =
@@ -234,9 +343,20 @@ namespace tribos
             gap_min          = std::min(gap_min, gap);
             gap_max          = std::max(gap_max, gap);
           }
+          const double length = std::sqrt(length_squared);
+          if (self.active())
+          {
+            double old_gap_max = -std::numeric_limits<double>::max();
+            for (unsigned int v = 0; v < 2; ++v)
+              old_gap_max =
+                std::max(old_gap_max,
+                         dot(pair.old_master_positions[faces[m].nodes[v]] -
+                               x_a_old,
+                             n_old));
+            return far_side(gap_max, length, old_gap_max, length_old) ? 1 : 2;
+          }
           // Deeper than the reach (at least twice the length: the cheap
           // test first).
-          const double length = std::sqrt(length_squared);
           if (!was_closed && gap_max < -2. * length &&
               gap_max <
                 -behind_reach(length,
@@ -247,17 +367,29 @@ namespace tribos
                                                faces[m].nodes,
                                                faces[m].n_vertices)))
             return 1;
-          walker.reached |= gap_min <= std::min(search_distance, length);
           return 2;
+        };
+        const auto classify = [&](const unsigned int m)
+        {
+          double    gap_min;
+          const int c = kind(m, gap_min);
+          if (c == 2)
+            walker.reached |=
+              gap_min <= std::min(search_distance, std::sqrt(length_squared));
+          return c;
         };
 
         // From the faces closest to the segment's ends and middle through
         // their neighbours, as long as they overlap.
         const Vec3<double> starts[3] = {x_a, x_b, scale(0.5, x_a + x_b)};
-        if (!walker.walk(starts, 3, classify))
+        searched |= walker.walk(starts,
+                                3,
+                                classify,
+                                start_faces(pair, self, k, slave_motion, kind));
+        if (!searched && !self.active())
           return false;
       }
-      return true;
+      return searched;
     }
 
 
@@ -265,20 +397,25 @@ namespace tribos
     /** 3D: as walk_segments(), the overlaps clipped in each slave face's
      * auxiliary plane (as in the element, Mortar3D). */
     bool
-    walk_faces(FaceWalk<3>       &walker,
-               const unsigned int k,
-               const double       search_distance)
+    walk_faces(FaceWalk<3>                &walker,
+               const SelfContactSearch<3> &self,
+               const unsigned int          k,
+               const double                search_distance)
     {
       const ContactPair<3> &pair        = walker.pair;
       const auto           &faces       = pair.master->faces();
       const auto           &slave_faces = pair.slave->faces();
       const bool            was_closed  = pair.committed[k].closed();
+      bool                  searched    = false;
       for (const unsigned int f : pair.slave->nodes()[k].faces)
       {
         const unsigned int n_s = slave_faces[f].n_vertices;
-        Vec3<double>       x[4];
+        Vec3<double>       x[4], x_old[4];
         for (unsigned int v = 0; v < n_s; ++v)
-          x[v] = pair.slave_positions[slave_faces[f].nodes[v]];
+        {
+          x[v]     = pair.slave_positions[slave_faces[f].nodes[v]];
+          x_old[v] = pair.old_slave_positions[slave_faces[f].nodes[v]];
+        }
         const internal::AuxiliaryPlane<double> plane =
           internal::auxiliary_plane(x, n_s);
         double height_min = std::numeric_limits<double>::max(),
@@ -293,15 +430,28 @@ namespace tribos
                                                    pair.old_slave_positions,
                                                    slave_faces[f].nodes,
                                                    n_s);
+        // Self-contact: the slave face at the start of the increment.
+        double                           old_height_min = 0, old_length = 0;
+        internal::AuxiliaryPlane<double> old_plane;
+        if (self.active())
+        {
+          old_plane      = internal::auxiliary_plane(x_old, n_s);
+          old_length     = std::sqrt(std::abs(old_plane.area));
+          old_height_min = std::numeric_limits<double>::max();
+          for (unsigned int v = 0; v < n_s; ++v)
+            old_height_min =
+              std::min(old_height_min,
+                       dot(x_old[v] - old_plane.x0, old_plane.n0));
+        }
 
         // Whether master face m overlaps this slave face in the plane and
         // is not too deep behind it (as in 2D).
-        const auto classify = [&](const unsigned int m)
+        const auto kind = [&](const unsigned int m, double &gap_min)
         {
           const unsigned int n_m = faces[m].n_vertices;
           Vec3<double>       y[4];
-          double             gap_min = std::numeric_limits<double>::max(),
-                 gap_max             = -gap_min;
+          gap_min        = std::numeric_limits<double>::max();
+          double gap_max = -gap_min;
           for (unsigned int v = 0; v < n_m; ++v)
           {
             y[v]               = pair.master_positions[faces[m].nodes[v]];
@@ -309,8 +459,25 @@ namespace tribos
             gap_min            = std::min(gap_min, above - height_max);
             gap_max            = std::max(gap_max, above - height_min);
           }
+          // Self-contact: as in 2D.
+          if (self.active() && self.own(k, m) &&
+              (self.of_node(pair, k, m) ||
+               dot(internal::auxiliary_plane(y, n_m).n0, plane.n0) > -0.9))
+            return 0;
           if (!internal::overlaps_in_plane(plane, y, n_m))
             return 0;
+          if (self.active())
+          {
+            double old_gap_max = -std::numeric_limits<double>::max();
+            for (unsigned int v = 0; v < n_m; ++v)
+              old_gap_max =
+                std::max(old_gap_max,
+                         dot(pair.old_master_positions[faces[m].nodes[v]] -
+                               old_plane.x0,
+                             old_plane.n0) -
+                           old_height_min);
+            return far_side(gap_max, length, old_gap_max, old_length) ? 1 : 2;
+          }
           if (!was_closed && gap_max < -2. * length &&
               gap_max <
                 -behind_reach(
@@ -321,19 +488,31 @@ namespace tribos
                                                 faces[m].nodes,
                                                 n_m)))
             return 1;
-          walker.reached |= gap_min <= std::min(search_distance, length);
           return 2;
+        };
+        const auto classify = [&](const unsigned int m)
+        {
+          double    gap_min;
+          const int c = kind(m, gap_min);
+          if (c == 2)
+            walker.reached |= gap_min <= std::min(search_distance, length);
+          return c;
         };
 
         // From the faces closest to its vertices and its centre.
         Vec3<double> starts[5];
         std::copy(x, x + n_s, starts);
         starts[n_s] = plane.x0;
-        if (!walker.walk(starts, n_s + 1, classify))
+        searched |= walker.walk(starts,
+                                n_s + 1,
+                                classify,
+                                start_faces(pair, self, k, slave_motion, kind));
+        if (!searched && !self.active())
           return false;
       }
-      return true;
+      return searched;
     }
+
 
 
     /**
@@ -385,9 +564,10 @@ namespace tribos
     FaceWalk<dim> walker{pair, found};
     bool          searched;
     if constexpr (dim == 2)
-      searched = walk_segments(walker, k, parameters.search_distance);
+      searched =
+        walk_segments(walker, self_search, k, parameters.search_distance);
     else
-      searched = walk_faces(walker, k, parameters.search_distance);
+      searched = walk_faces(walker, self_search, k, parameters.search_distance);
     if (!searched)
       return;
     // Beyond the search distance no gap is known (see candidate_faces()).
@@ -397,8 +577,8 @@ namespace tribos
     // A node inside the master has a negative distance: reported as an open
     // gap of +0.29 it read as clear of a master it had passed into. Its
     // depth is at least walker.closest: beyond the search distance the
-    // query is skipped.
-    if (std::isfinite(state.distance))
+    // query is skipped. (A self pair's closest face is the node's own.)
+    if (std::isfinite(state.distance) && !self_search.active())
     {
       const double depth = depth_inside(pair, k);
       if (depth > 0 && depth <= parameters.search_distance)

@@ -63,15 +63,17 @@ namespace tribos
       kinematics.committed = committed_traction(committed, kinematics.normal);
 
       AD weights[MortarInput3D::max_slave_nodes + max_mortar_master_nodes_3d];
+      // Both sides of a self-contact pair carry a share (area_factor).
+      const double share = integrals.input->area_factor;
       for (unsigned int i = 0; i < n_s; ++i)
-        weights[i] = D[i];
+        weights[i] = share * D[i];
       for (unsigned int l = 0; l < n_m; ++l)
-        weights[n_s + l] = -M[l];
+        weights[n_s + l] = -share * M[l];
       finish_weighted<dim>(kinematics,
                            weights,
                            n_s + n_m,
                            integrals.n_displacements,
-                           w,
+                           share * w,
                            slave,
                            enforcement,
                            R,

@@ -4,6 +4,7 @@
 #include <tribos/contact/discretization/contact_discretization.h>
 #include <tribos/contact/element/mortar_element.h>
 #include <tribos/contact/element/mortar_element_3d.h>
+#include <tribos/contact/search/self_contact_search.h>
 #include <tribos/parameters/contact.h>
 
 #include <string>
@@ -50,6 +51,12 @@ namespace tribos
 
     void
     initialize(const ContactPair<dim> &pair) override;
+
+    std::vector<std::string>
+    setup_warnings() const override
+    {
+      return self_search.warnings();
+    }
 
     bool
     parents_carry_hanging_nodes() const override
@@ -189,6 +196,8 @@ namespace tribos
     std::vector<std::vector<unsigned int>> faces_of_node;
     /** 3D: each overlap integrated once per assembly. */
     MortarOverlapCache overlap_cache;
+    /** Self-contact: each node's own neighbourhood and the reach. */
+    SelfContactSearch<dim> self_search;
     /** Buffers of make_input(), reused between nodes. */
     std::vector<unsigned int> stencil_buffer, master_buffer;
   };

@@ -46,6 +46,10 @@ namespace tribos
     /** A node whose weight w_j (below) is below this has no master (its
      * segments barely overlap the master). */
     double min_weight = 0;
+    /** The share of the contact this element carries (ContactPair::
+     * area_factor: one half for each side of a self-contact pair with
+     * penalty): its forces and the area it reports are scaled by it. */
+    double area_factor = 1;
     /**
      * Contact/Master smoothing = averaged normals (Q1): the nodal normal
      * n_j from the master's averaged nodal normals instead of the slave's

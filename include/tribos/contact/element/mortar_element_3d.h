@@ -110,6 +110,10 @@ namespace tribos
     bool dual = true;
     /** A node whose weight w_j is below this has no master. */
     double min_weight = 0;
+    /** The share of the contact this element carries (ContactPair::
+     * area_factor: one half for each side of a self-contact pair with
+     * penalty): its forces and the area it reports are scaled by it. */
+    double area_factor = 1;
 
     /** The surfaces' numbers of the slave and master faces (the keys of
      * the cache) and the assembly's cache of overlaps (none: each element
