@@ -361,25 +361,15 @@ namespace tribos
         create_discretization<dim>(description, parameters, axisymmetric);
       if (self)
       {
-        const std::string name   = pair.discretization->name();
-        const bool        mortar = name.rfind("mortar", 0) == 0;
+        const std::string name = pair.discretization->name();
         AssertThrow(name == "node to segment" ||
-                      (mortar && name.find("averaged") == std::string::npos),
+                      (name.rfind("mortar", 0) == 0 &&
+                       name.find("averaged") == std::string::npos),
                     ExcMessage("Parameter <Contact/Pairs>: the self-contact "
                                "pair <" +
                                description.text + "> is discretized " + name +
                                "; self-contact takes node to segment or "
                                "mortar, without Master smoothing."));
-        AssertThrow(!mortar || pair.enforcement->n_node_unknowns() == 0,
-                    ExcMessage("Parameter <Contact/Pairs>: the self-contact "
-                               "pair <" +
-                               description.text +
-                               "> is discretized mortar with Lagrange "
-                               "multipliers, which self-contact does not "
-                               "take yet (one side of each contact would "
-                               "have to be the slave): use the penalty or "
-                               "the augmented Lagrangian with mortar, or "
-                               "multipliers with node to segment."));
       }
 
       set_up_nodes(pair,

@@ -172,9 +172,11 @@ expect contact_slave_is_master "both slave and master" "$tribos" \
 expect self_contact_two_pass_multipliers "Use one-pass" \
   "$tribos" "$tests/self_contact_u.prm" \
   --set "Contact/Method=lagrange multiplier" --set "Contact/Passes=two-pass"
-expect self_contact_mortar_multipliers "mortar with Lagrange multipliers" \
-  "$tribos" "$tests/self_contact_u.prm" --set "Contact/Discretization=mortar" \
-  --set "Contact/Method=lagrange multiplier"
+expect self_contact_mortar_multipliers_quadratic \
+  "takes mortar on linear faces only" "$tribos" "$tests/self_contact_u.prm" \
+  --set "Contact/Discretization=mortar" \
+  --set "Contact/Method=lagrange multiplier" \
+  --set "Finite element/Polynomial degree=2"
 expect self_contact_smoothed "without Master smoothing" "$tribos" \
   "$tests/self_contact_u.prm" --set "Contact/Master smoothing=averaged normals"
 expect self_contact_two_faces "each of which shares a node with every other" \

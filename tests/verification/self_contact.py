@@ -46,20 +46,22 @@ slave side per contact.
    iterations).
 6. -np 2 equal to serial (1e-8): the U with penalty, the sheared U with
    multipliers and friction, the tube with multipliers, the ring with
-   mortar.
-7. Mortar (case mortar; penalty and the augmented Lagrangian, both passes
-   with half weights): the patch test's blocks as one surface, each
-   block's pressure uniform to 1e-9, the two blocks' mean that of the
-   one-pass mortar pair to 1e-9 (each side reports its own penalty's
-   traction); the ring of tests/data/tube.geo (planar = 1, plane strain,
+   mortar (penalty and multipliers).
+7. Mortar (case mortar; penalty and the augmented Lagrangian both passes
+   with half weights, multipliers one slave side as in 3): the patch
+   test's blocks as one surface, each block's pressure uniform to 1e-9,
+   the two blocks' mean that of the one-pass mortar pair to 1e-9 (each
+   side reports its own penalty's traction), with multipliers the
+   one-pass pair of the block the colouring chose to 1e-10; the ring of tests/data/tube.geo (planar = 1, plane strain,
    Q1 and Q2) and the tube against their quarters with a rigid wall at
    the symmetry plane: plate and self-contact force within 1e-3 (Q2: 1e-2,
    the issue's 1 %); friction on the patch test sheared as one surface:
    Coulomb's law at every closed node, some sliding (|T| = mu p to 1e-9),
-   some sticking (|T| <= mu p).
+   some sticking (|T| <= mu p); with multipliers the one-pass pair of the
+   side the colouring chose, pressures and shear tractions to 1e-10.
 8. Bad input: the smoothed master on a self-contact pair, multipliers
-   with Passes = two-pass and mortar with multipliers are refused
-   (tests/robustness/bad_input.sh)."""
+   with Passes = two-pass, and mortar with multipliers on quadratic faces
+   are refused (tests/robustness/bad_input.sh)."""
 # ctest: cases serial mortar mpi
 # ctest: mpirun-cases mpi
 # ctest: quick-cases serial
@@ -455,6 +457,35 @@ if "mortar" in selected:
               "pair's to %.1e, the normal force to %.1e (bounds 1e-9)"
               % (dim, spread, off, abs(force[0] / force[1] - 1)))
 
+    # Multipliers: one slave side per contact (the colouring), the
+    # one-pass mortar pair with that side as its slave.
+    for dim, prm, pair, sides in (
+            (2, "patch_test.prm", "3, 12 : 3, 12", ("12 : 3", "3 : 12")),
+            (3, "patch_test_3d.prm", "14, 5 : 14, 5", ("14 : 5", "5 : 14"))):
+        lm = mortar + ["Contact/Method=lagrange multiplier"]
+        name = out + "/mortar_patch_%dd_lm_" % dim
+        run(tribos, tests + "/" + prm, name + "self",
+            lm + ["Contact/Pairs=" + pair])
+        one_pass = []
+        for i, side in enumerate(sides):
+            run(tribos, tests + "/" + prm, name + str(i),
+                lm + ["Contact/Pairs=" + side])
+            one_pass.append(nodal_pressures(name + str(i)))
+        self_pressures = nodal_pressures(name + "self")
+        closed = {k for k, p in self_pressures.items() if p > 0}
+        match = [i for i in (0, 1)
+                 if closed == {k for k, p in one_pass[i].items() if p > 0}]
+        worst = max(abs(self_pressures[k] - one_pass[match[0]][k])
+                    for k in closed) / max(self_pressures.values()) \
+            if len(match) == 1 else math.inf
+        check(worst < 1e-10,
+              "%dD patch test, mortar, one self-contact surface with "
+              "multipliers: its %d closed nodes are one block's, their "
+              "pressures those of the one-pass pair %s to %.1e of the "
+              "largest (bound 1e-10)"
+              % (dim, len(closed), sides[match[0]] if match else "none",
+                 worst))
+
     # The ring (2D, Q1 and Q2) and the tube (3D) against their quarters.
     tube = tests + "/self_contact_tube.prm"
     quarter = ["Scene/Mesh file=tube_quarter.msh",
@@ -471,10 +502,16 @@ if "mortar" in selected:
              ring_quarter + ["Contact/Method=augmented lagrangian"], 1e-3),
             ("ring, Q2, mortar, penalty", ring + mortar + q2,
              ring_quarter + q2, 1e-2),
+            ("ring, Q1, mortar, multipliers",
+             ring + mortar + ["Contact/Method=lagrange multiplier"],
+             ring_quarter + ["Contact/Method=lagrange multiplier"], 1e-3),
             ("tube, mortar, penalty", mortar, quarter, 1e-3),
             ("tube, mortar, augmented Lagrangian",
              mortar + ["Contact/Method=augmented lagrangian"],
-             quarter + ["Contact/Method=augmented lagrangian"], 1e-3)):
+             quarter + ["Contact/Method=augmented lagrangian"], 1e-3),
+            ("tube, mortar, multipliers",
+             mortar + ["Contact/Method=lagrange multiplier"],
+             quarter + ["Contact/Method=lagrange multiplier"], 1e-3)):
         name = out + "/" + label.replace(", ", "_").replace(" ", "_")
         run(tribos, tube, name, half_sets)
         run(tribos, tube, name + "_quarter", quarter_sets)
@@ -523,6 +560,27 @@ if "mortar" in selected:
           "mu p, to %.1e (bound 1e-9); normal force %.6f, the one-pass "
           "pair's %.6f (bound 1e-3)"
           % (mu, sliding, sticking, coulomb, force[0], force[1]))
+    # With multipliers: the one-pass pair whose slave is the block the
+    # colouring chose, friction included.
+    lm = load + ["Contact/Method=lagrange multiplier"]
+    run(tribos, tests + "/patch_test.prm", sheared + "_lm",
+        lm + ["Contact/Pairs=3, 12 : 3, 12 : mu=%g" % mu])
+    rows = closed_rows(sheared + "_lm")
+    differences = []
+    for i, side in enumerate(("12 : 3", "3 : 12")):
+        run(tribos, tests + "/patch_test.prm", sheared + "_lm_%d" % i,
+            lm + ["Contact/Pairs=%s : mu=%g" % (side, mu)])
+        differences.append(traction_difference(
+            rows, closed_rows(sheared + "_lm_%d" % i)))
+    sliding = sum(1 for r in rows.values() if r["CSTATUS"] == 2)
+    check(min(differences) < 1e-10 and sliding >= 2,
+          "patch test sheared as one self-contact surface, mortar with "
+          "multipliers, mu = %g: its %d closed nodes (%d sliding) those of "
+          "the one-pass pair %s, pressure and shear traction to %.1e of the "
+          "largest pressure (bound 1e-10)"
+          % (mu, len(rows), sliding,
+             ("12 : 3", "3 : 12")[differences.index(min(differences))],
+             min(differences)))
 
 # 6. -np 2 against serial.
 if "mpi" in selected and mpi_part(selected):
@@ -538,7 +596,10 @@ if "mpi" in selected and mpi_part(selected):
             ("multipliers_friction", u_shape, sheared),
             ("tube_multipliers", tube,
              ["Contact/Method=lagrange multiplier"]),
-            ("ring_mortar", tube, ring + ["Contact/Discretization=mortar"])):
+            ("ring_mortar", tube, ring + ["Contact/Discretization=mortar"]),
+            ("ring_mortar_multipliers", tube,
+             ring + ["Contact/Discretization=mortar",
+                     "Contact/Method=lagrange multiplier"])):
         run(tribos, prm, out + "/u_serial_" + name, sets)
         run(tribos, prm, out + "/u_np2_" + name, sets, mpi_ranks=2)
         serial = by_time(out + "/u_serial_" + name)

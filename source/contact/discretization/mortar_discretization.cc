@@ -54,6 +54,16 @@ namespace tribos
     const unsigned int n_slaves = pair.n_nodes();
     faces_of_node.assign(n_slaves, {});
     self_search.initialize(pair, parameters.search_distance);
+    AssertThrow(!self_search.active() || !pair.slave->quadratic() ||
+                  pair.enforcement->n_node_unknowns() == 0,
+                ExcMessage("Contact pair <" + pair.description.text +
+                           ">: a self-contact pair with Lagrange multipliers "
+                           "takes mortar on linear faces only (on the "
+                           "quadratic faces of Polynomial degree = 2 the "
+                           "one slave side per contact does not converge "
+                           "where a fold closes to its tip); use Contact/"
+                           "Method = penalty or augmented lagrangian, or "
+                           "Polynomial degree = 1."));
     // The standard quadratic functions of the vertex on the axis
     // integrate to zero against 2 pi r: that node carries no multiplier,
     // the others then miss a partition of unity and Newton does not

@@ -268,19 +268,27 @@ namespace tribos
     if (!self_search.active() || pair.enforcement->n_node_unknowns() == 0)
       return;
     // Near: paired within two element sizes of its face, or behind it (a
-    // node carried deep through the opposite side must have a role).
-    std::vector<bool> near(pair.n_nodes(), false);
+    // node carried deep through the opposite side must have a role). A
+    // slave at the last converged increment: closed, or paired within two
+    // element sizes (the status survives a change of the mesh).
+    std::vector<bool> near(pair.n_nodes(), false),
+      was_slave(pair.n_nodes(), false);
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
     {
-      const NodeState &state = pair.current[k];
+      const NodeState &state     = pair.current[k];
+      const NodeState &committed = pair.committed[k];
+      const double     size      = pair.slave->nodes()[k].size;
+      was_slave[k] =
+        committed.closed() || (committed.paired && committed.face >= 0 &&
+                               committed.projection.distance < 2 * size);
       if (!pair.owned[k] || !state.paired || state.face < 0)
         continue;
       Vec3<double> n, xbar;
       project(pair, state.face, pair.slave_positions[k], true, &n, &xbar);
-      near[k] = state.projection.distance < 2 * pair.slave->nodes()[k].size ||
+      near[k] = state.projection.distance < 2 * size ||
                 dot(pair.slave_positions[k] - xbar, n) < 0;
     }
-    assign_self_contact_roles(pair, near, communicator);
+    assign_self_contact_roles(pair, near, was_slave, communicator);
   }
 
 

@@ -14,26 +14,20 @@ namespace tribos
   void
   assign_self_contact_roles(ContactPair<dim>        &pair,
                             const std::vector<bool> &near,
+                            const std::vector<bool> &was_slave,
                             const MPI_Comm           communicator)
   {
-    const auto &nodes = pair.slave->nodes();
     const auto &faces = pair.master->faces();
 
     // Per owned near node: the node, whether it was a slave at the last
-    // converged increment (closed, or paired within two element sizes;
-    // the status survives a change of the mesh), its face's nodes.
+    // converged increment, its face's nodes.
     std::vector<unsigned int> mine;
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
       if (pair.owned[k] && !pair.excluded[k] && near[k])
       {
-        const NodeState &committed = pair.committed[k];
-        const bool       was_a_slave =
-          committed.closed() ||
-          (committed.paired && committed.face >= 0 &&
-           committed.projection.distance < 2 * nodes[k].size);
         const auto &face = faces[pair.current[k].face];
         mine.push_back(k);
-        mine.push_back(was_a_slave ? 1 : 0);
+        mine.push_back(was_slave[k] ? 1 : 0);
         mine.push_back(face.n_vertices);
         for (unsigned int v = 0; v < face.n_vertices; ++v)
           mine.push_back(face.nodes[v]);
@@ -43,13 +37,13 @@ namespace tribos
     // face nodes (targets) and its undirected neighbours.
     std::map<unsigned int, std::vector<unsigned int>> targets;
     std::map<unsigned int, std::set<unsigned int>>    neighbours;
-    std::set<unsigned int>                            was_slave;
+    std::set<unsigned int>                            slaves_before;
     for (const auto &part : Utilities::MPI::all_gather(communicator, mine))
       for (unsigned int i = 0; i < part.size(); i += 3 + part[i + 2])
       {
         const unsigned int k = part[i];
         if (part[i + 1] == 1)
-          was_slave.insert(k);
+          slaves_before.insert(k);
         targets[k].assign(part.begin() + i + 3,
                           part.begin() + i + 3 + part[i + 2]);
         for (const unsigned int m : targets[k])
@@ -77,7 +71,7 @@ namespace tribos
       // the nodes on that face masters and leave the contact to nobody).
       int seed = -1;
       for (const unsigned int k : component)
-        if (targets.count(k) == 1 && was_slave.count(k) == 1)
+        if (targets.count(k) == 1 && slaves_before.count(k) == 1)
         {
           seed = k;
           break;
@@ -140,9 +134,11 @@ namespace tribos
   template void
   assign_self_contact_roles(ContactPair<2> &,
                             const std::vector<bool> &,
+                            const std::vector<bool> &,
                             const MPI_Comm);
   template void
   assign_self_contact_roles(ContactPair<3> &,
+                            const std::vector<bool> &,
                             const std::vector<bool> &,
                             const MPI_Comm);
 } // namespace tribos

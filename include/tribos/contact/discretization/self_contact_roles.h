@@ -29,7 +29,8 @@ namespace tribos
    * master, theirs slave, and so on, so that whole sides of a fold are
    * slaves and the opposite sides masters. The seed is the component's
    * smallest paired node that was a slave at the last converged
-   * increment (closed, or paired near), else its smallest paired node:
+   * increment (@p was_slave: closed, or paired near, as the
+   * discretization judges), else its smallest paired node:
    * the sides keep their roles from increment to increment, through a
    * restart (the committed states are in the checkpoint) and a change of
    * the mesh (the contact status is carried over). Which side that is
@@ -49,6 +50,7 @@ namespace tribos
   void
   assign_self_contact_roles(ContactPair<dim>        &pair,
                             const std::vector<bool> &near,
+                            const std::vector<bool> &was_slave,
                             const MPI_Comm           communicator);
 } // namespace tribos
 
