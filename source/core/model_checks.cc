@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -73,11 +74,34 @@ namespace tribos
     for (const auto &d : bc.dirichlet)
       held.insert(d.boundary_id);
     held.insert(bc.symmetry.begin(), bc.symmetry.end());
+    // The bodies each boundary id lies on (every process's).
+    std::vector<unsigned int> id_and_body;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+          {
+            id_and_body.push_back(cell->face(f)->boundary_id());
+            id_and_body.push_back(cell->material_id());
+          }
+    std::map<unsigned int, std::set<unsigned int>> bodies_of_id;
+    for (const auto &part :
+         Utilities::MPI::all_gather(mpi_communicator, id_and_body))
+      for (unsigned int i = 0; i + 1 < part.size(); i += 2)
+        bodies_of_id[part[i]].insert(part[i + 1]);
     for (const auto &pair : parameters.contact.pairs)
     {
-      // A surface in contact with itself holds no rigid-body motion.
+      // A surface in contact with itself holds no rigid-body motion,
+      // unless it spans several bodies: then it is their contact with
+      // each other, as a pair of two surfaces is.
       if (pair.self_contact())
-        continue;
+      {
+        std::set<unsigned int> spanned;
+        for (const auto id : pair.slave_boundary)
+          spanned.insert(bodies_of_id[id].begin(), bodies_of_id[id].end());
+        if (spanned.size() < 2)
+          continue;
+      }
       held.insert(pair.slave_boundary.begin(), pair.slave_boundary.end());
       held.insert(pair.master_boundary.begin(), pair.master_boundary.end());
     }

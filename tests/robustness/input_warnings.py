@@ -74,4 +74,11 @@ result = run(tribos, block, out + "/sensible")
 check("WARNING" not in result.stderr and
       "warning" not in open(out + "/sensible/summary.txt").read(),
       "sensible input: no warning")
+# A self-contact surface that spans two bodies is their contact with each
+# other: the patch test's upper block held only by it is held.
+result = run(tribos, tests + "/patch_test.prm", out + "/self_contact_two_bodies",
+             ["Boundary conditions/Symmetry=0, 2",
+              "Contact/Pairs=3, 12 : 3, 12"])
+check("nothing holds" not in result.stderr,
+      "a self-contact surface spanning two bodies holds them: no warning")
 finish()
