@@ -58,7 +58,9 @@ slave side per contact.
    the issue's 1 %); friction on the patch test sheared as one surface:
    Coulomb's law at every closed node, some sliding (|T| = mu p to 1e-9),
    some sticking (|T| <= mu p); with multipliers the one-pass pair of the
-   side the colouring chose, pressures and shear tractions to 1e-10.
+   side the colouring chose, pressures and shear tractions to 1e-10; the
+   ring with multipliers restarted after step 18 of 20 equal to the
+   uninterrupted run (1e-10).
 8. Bad input: the smoothed master on a self-contact pair, multipliers
    with Passes = two-pass, and mortar with multipliers on quadratic faces
    are refused (tests/robustness/bad_input.sh).
@@ -535,6 +537,31 @@ if "mortar" in selected:
               % (label, plate, closing, len(common), n_closed, bound,
                  len(full), sum(r["newton_iterations"]
                                 for r in full.values())))
+
+    # Restart: the ring with mortar and multipliers restarted from its
+    # checkpoint after step 18 of 20 (closed since step 18: the roles
+    # follow from the committed states).
+    folder = out + "/mortar_ring_restart"
+    copy = folder + "_restarted"
+    sets = ring + mortar + ["Contact/Method=lagrange multiplier",
+                            "Output/Checkpoint every=1"]
+    run(tribos, tube, folder, sets)
+    shutil.rmtree(copy, ignore_errors=True)
+    shutil.copytree(folder, copy)
+    run(tribos, tube, copy, sets,
+        extra=["--restart", folder + "/checkpoint-00018"])
+    for f in (folder, copy):
+        strip_columns(f + "/history.csv", f + "/h.csv",
+                      drop=("wall_time", "residual"))
+    for name in ("/h.csv", "/contact-00020.csv"):
+        numdiff(copy + name, folder + name, relative=1e-10, absolute=1e-14)
+    iterations = [[r["newton_iterations"] for r in read_csv(
+        f + "/history.csv")] for f in (folder, copy)]
+    check(iterations[0] == iterations[1] and
+          read_csv(folder + "/history.csv")[-1]["pair2_normal_force"] > 0,
+          "ring, mortar with multipliers, restarted after step 18 of 20 (in "
+          "contact): history.csv and the last contact CSV equal to 1e-10, "
+          "the same Newton iterations")
 
     # Friction: the patch test's upper block held only by contact, pushed
     # down and sheared at its top (the overturning moment unloads one
