@@ -8,12 +8,22 @@ body of tests/data/self_contact_u.prm with its contact given three ways,
   two_pass  the slot's faces as two boundaries (u_shape_split.msh,
             9 : 10) with Passes = two-pass: the two-body search,
 
-run alternately by one or more tribos builds (A B A B ...), --runs times.
-Writes one CSV row per run: build, case, run, wall time, the 'contact
-search' seconds of summary.txt, Newton iterations (all attempts).
+and the C-clip of tests/data/self_contact_clip.prm with multipliers
+(mortar does not converge on the U), its inner boundary as one surface
+
+  clip_nts     node to segment;
+  clip_mortar  mortar;
+  clip_pair    the tooth's end and the lower arm's top as two boundaries
+               (c_clip_split.msh, 9 : 10), mortar: the two-body search,
+
+run alternately by one or more tribos builds (A B A B ...), --runs times
+(--cases: which). Writes one CSV row per run: build, case, run, wall time,
+the 'contact search' seconds of summary.txt, Newton iterations (all
+attempts), the slave nodes of the pairs.
 
     python3 benchmarks/self_contact_search.py build/tribos [OTHER/tribos]
-        [--runs 3] [--out doc/data/self_contact_search.csv]"""
+        [--runs 3] [--cases slot whole ...]
+        [--out doc/data/self_contact_search.csv]"""
 
 import argparse
 import os
@@ -22,47 +32,64 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-PRM = os.path.join(ROOT, "tests", "data", "self_contact_u.prm")
+DATA = os.path.join(ROOT, "tests", "data")
+U = os.path.join(DATA, "self_contact_u.prm")
+CLIP = os.path.join(DATA, "self_contact_clip.prm")
+MULTIPLIERS = "Contact/Method=lagrange multiplier"
+MORTAR = "Contact/Discretization=mortar"
 CASES = {
-    "slot": ["Contact/Pairs=1 : 1"],
-    "whole": ["Contact/Pairs=1, 2, 3, 5, 6, 7, 8 : 1, 2, 3, 5, 6, 7, 8"],
-    "two_pass": ["Scene/Mesh file=u_shape_split.msh", "Contact/Pairs=9 : 10",
-                 "Contact/Passes=two-pass"],
+    "slot": (U, ["Contact/Pairs=1 : 1"]),
+    "whole": (U, ["Contact/Pairs=1, 2, 3, 5, 6, 7, 8 : 1, 2, 3, 5, 6, 7, 8"]),
+    "two_pass": (U, ["Scene/Mesh file=u_shape_split.msh",
+                     "Contact/Pairs=9 : 10", "Contact/Passes=two-pass"]),
+    "clip_nts": (CLIP, [MULTIPLIERS]),
+    "clip_mortar": (CLIP, [MULTIPLIERS, MORTAR]),
+    "clip_pair": (CLIP, [MULTIPLIERS, MORTAR,
+                         "Scene/Mesh file=c_clip_split.msh",
+                         "Contact/Pairs=9 : 10"]),
 }
 
 
-def run(tribos, sets, folder):
-    command = [tribos, PRM, "--set", "Output/Directory=" + folder]
+def run(tribos, prm, sets, folder):
+    command = [tribos, prm, "--set", "Output/Directory=" + folder]
     for s in sets:
         command += ["--set", s]
     start = time.time()
-    subprocess.run(command, stdout=subprocess.DEVNULL,
-                   stderr=subprocess.DEVNULL, check=True)
+    result = subprocess.run(command, capture_output=True, text=True,
+                            check=True)
     wall = time.time() - start
+    slaves = sum(int(line.split(" slave nodes")[0].split()[-1])
+                 for line in result.stdout.splitlines()
+                 if line.strip().startswith("contact pair <") and
+                 " slave nodes" in line)
     search, iterations = 0., 0
     for line in open(os.path.join(folder, "summary.txt")):
         if line.startswith("contact search"):
             search = float(line.split()[3])
         if line.startswith("newton iterations (all attempts)"):
             iterations = int(line.split()[-1])
-    return wall, search, iterations
+    return wall, search, iterations, slaves
 
 
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("builds", nargs="+")
     parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--cases", nargs="+", default=list(CASES),
+                        choices=list(CASES))
     parser.add_argument("--out", default="")
     args = parser.parse_args()
-    rows = ["build,case,run,wall_s,search_s,newton_iterations_all"]
+    rows = ["build,case,run,wall_s,search_s,newton_iterations_all,"
+            "slave_nodes"]
     with tempfile.TemporaryDirectory() as work:
         for r in range(args.runs):
             for b, tribos in enumerate(args.builds):
-                for case, sets in CASES.items():
-                    wall, search, its = run(tribos, sets,
-                                            os.path.join(work, case))
-                    rows.append("%s,%s,%d,%.3f,%.4f,%d" % (
-                        "ABCD"[b], case, r + 1, wall, search, its))
+                for case in args.cases:
+                    prm, sets = CASES[case]
+                    wall, search, its, slaves = run(
+                        tribos, prm, sets, os.path.join(work, case))
+                    rows.append("%s,%s,%d,%.3f,%.4f,%d,%d" % (
+                        "ABCD"[b], case, r + 1, wall, search, its, slaves))
                     print(rows[-1], flush=True)
     if args.out:
         with open(args.out, "w") as f:
