@@ -1,6 +1,7 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/contact/contact_pair.h>
 #include <tribos/contact/discretization/mortar_discretization.h>
+#include <tribos/contact/discretization/self_contact_roles.h>
 
 #include <algorithm>
 #include <cmath>
@@ -519,6 +520,28 @@ namespace tribos
       return {ElementOutcome::Kind::unpaired, false};
     state.point = point;
     return {ElementOutcome::Kind::element, true};
+  }
+
+
+
+  template <int dim>
+  void
+  MortarDiscretization<dim>::finish_pairing(ContactPair<dim> &pair,
+                                            const MPI_Comm    communicator)
+  {
+    if (!self_search.active() || pair.enforcement->n_node_unknowns() == 0)
+      return;
+    // A paired node has a face within its segment's length along the
+    // normal (find_faces()), or behind it however deep: every paired node
+    // is near. A slave at the last converged increment: closed or paired.
+    std::vector<bool> near(pair.n_nodes(), false),
+      was_slave(pair.n_nodes(), false);
+    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+    {
+      near[k]      = pair.current[k].paired && pair.current[k].face >= 0;
+      was_slave[k] = pair.committed[k].closed() || pair.committed[k].paired;
+    }
+    assign_self_contact_roles(pair, near, was_slave, communicator);
   }
 
 

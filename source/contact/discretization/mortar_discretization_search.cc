@@ -1,6 +1,5 @@
 #include <tribos/contact/contact_pair.h>
 #include <tribos/contact/discretization/mortar_discretization.h>
-#include <tribos/contact/discretization/self_contact_roles.h>
 
 #include <algorithm>
 #include <cmath>
@@ -166,12 +165,11 @@ namespace tribos
     /**
      * Self-contact: whether a master face whose farthest point lies
      * @p gap_max from a slave face (of size @p length) along its normal,
-     * and at the start of the increment @p old_gap_max (of size
-     * @p old_length), is on the far side of the slave's own body: wholly
-     * more than half the slave's size behind it, now and at the start. A
-     * face the slave was in front of at the start it has gone through in
-     * this increment: a penetration (a first iterate carries a fold's
-     * sides deep through each other).
+     * @p old_gap_max at the start of the increment (size @p old_length),
+     * is the far side of the slave's own body: wholly more than half the
+     * slave's size behind it, now and at the start. A face the slave was
+     * in front of at the start it has gone through in this increment: a
+     * penetration (a first iterate carries a fold's sides deep through).
      */
     inline bool
     far_side(const double gap_max,
@@ -592,28 +590,6 @@ namespace tribos
       state.paired = true;
       state.face   = found[0];
     }
-  }
-
-
-
-  template <int dim>
-  void
-  MortarDiscretization<dim>::finish_pairing(ContactPair<dim> &pair,
-                                            const MPI_Comm    communicator)
-  {
-    if (!self_search.active() || pair.enforcement->n_node_unknowns() == 0)
-      return;
-    // A paired node has a face within its segment's length along the
-    // normal (find_faces()), or behind it however deep: every paired node
-    // is near. A slave at the last converged increment: closed or paired.
-    std::vector<bool> near(pair.n_nodes(), false),
-      was_slave(pair.n_nodes(), false);
-    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-    {
-      near[k]      = pair.current[k].paired && pair.current[k].face >= 0;
-      was_slave[k] = pair.committed[k].closed() || pair.committed[k].paired;
-    }
-    assign_self_contact_roles(pair, near, was_slave, communicator);
   }
 
 
