@@ -133,6 +133,44 @@ def traction_difference(rows, reference):
                                          for r in reference.values())
 
 
+def multiplier_patch_tests(discretization, label, prefix):
+    """The patch test's blocks as one surface with multipliers against the
+    one-pass pairs (2D, 3D): its closed nodes must be one block's, their
+    pressures those of the one-pass pair with that block as its slave
+    (1e-10 of the largest), the normal force its (1e-9)."""
+    for dim, prm, pair, sides in (
+            (2, "patch_test.prm", "3, 12 : 3, 12", ("12 : 3", "3 : 12")),
+            (3, "patch_test_3d.prm", "14, 5 : 14, 5", ("14 : 5", "5 : 14"))):
+        lm = ["Contact/Discretization=" + discretization,
+              "Contact/Method=lagrange multiplier"]
+        name = out + "/%s_%dd_lm_" % (prefix, dim)
+        run(tribos, tests + "/" + prm, name + "self",
+            lm + ["Contact/Pairs=" + pair])
+        one_pass = []
+        for i, side in enumerate(sides):
+            run(tribos, tests + "/" + prm, name + str(i),
+                lm + ["Contact/Pairs=" + side])
+            one_pass.append(nodal_pressures(name + str(i)))
+        self_pressures = nodal_pressures(name + "self")
+        closed = {k for k, p in self_pressures.items() if p > 0}
+        match = [i for i in (0, 1)
+                 if closed == {k for k, p in one_pass[i].items() if p > 0}]
+        worst = max(abs(self_pressures[k] - one_pass[match[0]][k])
+                    for k in closed) / max(self_pressures.values()) \
+            if len(match) == 1 else math.inf
+        force = [read_csv(f + "/history.csv")[-1]["pair0_normal_force"]
+                 for f in (name + "self", name + str(match[0]))] \
+            if len(match) == 1 else [1, 2]
+        check(worst < 1e-10 and abs(force[0] / force[1] - 1) < 1e-9,
+              "%dD patch test, %s, one self-contact surface with "
+              "multipliers: its %d closed nodes are one block's, their "
+              "pressures those of the one-pass pair %s to %.1e of the "
+              "largest (bound 1e-10), the normal force to %.1e (bound 1e-9)"
+              % (dim, label, len(closed),
+                 sides[match[0]] if match else "none", worst,
+                 abs(force[0] / force[1] - 1)))
+
+
 def by_time(folder):
     return {round(r["time"], 9): r for r in read_csv(folder + "/history.csv")}
 
@@ -172,37 +210,7 @@ if "serial" in selected:
 
     # 2. Multipliers: one side of the contact the slave; the result is
     # the one-pass pair with that side as its slave.
-    for dim, prm, pair, sides in (
-            (2, "patch_test.prm", "3, 12 : 3, 12", ("12 : 3", "3 : 12")),
-            (3, "patch_test_3d.prm", "14, 5 : 14, 5", ("14 : 5", "5 : 14"))):
-        lm = ["Contact/Discretization=node to segment",
-              "Contact/Method=lagrange multiplier"]
-        name = out + "/patch_%dd_lm_" % dim
-        run(tribos, tests + "/" + prm, name + "self",
-            lm + ["Contact/Pairs=" + pair])
-        one_pass = []
-        for i, side in enumerate(sides):
-            run(tribos, tests + "/" + prm, name + str(i),
-                lm + ["Contact/Pairs=" + side])
-            one_pass.append(nodal_pressures(name + str(i)))
-        self_pressures = nodal_pressures(name + "self")
-        closed = {k for k, p in self_pressures.items() if p > 0}
-        match = [i for i in (0, 1)
-                 if closed == {k for k, p in one_pass[i].items() if p > 0}]
-        worst = max(abs(self_pressures[k] - one_pass[match[0]][k])
-                    for k in closed) / max(self_pressures.values()) \
-            if len(match) == 1 else math.inf
-        force = [read_csv(f + "/history.csv")[-1]["pair0_normal_force"]
-                 for f in (name + "self", name + str(match[0]))] \
-            if len(match) == 1 else [1, 2]
-        check(worst < 1e-10 and abs(force[0] / force[1] - 1) < 1e-9,
-              "%dD patch test, one self-contact surface with multipliers: "
-              "its %d closed nodes are one block's, their pressures those "
-              "of the one-pass pair %s to %.1e of the largest (bound "
-              "1e-10), the normal force to %.1e (bound 1e-9)"
-              % (dim, len(closed), sides[match[0]] if match else "none",
-                 worst,
-                 abs(force[0] / force[1] - 1)))
+    multiplier_patch_tests("node to segment", "node to segment", "patch")
 
     # 3. The U-shaped body against its half model.
     for method in ("penalty", "augmented lagrangian"):
@@ -469,32 +477,7 @@ if "mortar" in selected:
 
     # Multipliers: one slave side per contact (the colouring), the
     # one-pass mortar pair with that side as its slave.
-    for dim, prm, pair, sides in (
-            (2, "patch_test.prm", "3, 12 : 3, 12", ("12 : 3", "3 : 12")),
-            (3, "patch_test_3d.prm", "14, 5 : 14, 5", ("14 : 5", "5 : 14"))):
-        lm = mortar + ["Contact/Method=lagrange multiplier"]
-        name = out + "/mortar_patch_%dd_lm_" % dim
-        run(tribos, tests + "/" + prm, name + "self",
-            lm + ["Contact/Pairs=" + pair])
-        one_pass = []
-        for i, side in enumerate(sides):
-            run(tribos, tests + "/" + prm, name + str(i),
-                lm + ["Contact/Pairs=" + side])
-            one_pass.append(nodal_pressures(name + str(i)))
-        self_pressures = nodal_pressures(name + "self")
-        closed = {k for k, p in self_pressures.items() if p > 0}
-        match = [i for i in (0, 1)
-                 if closed == {k for k, p in one_pass[i].items() if p > 0}]
-        worst = max(abs(self_pressures[k] - one_pass[match[0]][k])
-                    for k in closed) / max(self_pressures.values()) \
-            if len(match) == 1 else math.inf
-        check(worst < 1e-10,
-              "%dD patch test, mortar, one self-contact surface with "
-              "multipliers: its %d closed nodes are one block's, their "
-              "pressures those of the one-pass pair %s to %.1e of the "
-              "largest (bound 1e-10)"
-              % (dim, len(closed), sides[match[0]] if match else "none",
-                 worst))
+    multiplier_patch_tests("mortar", "mortar", "mortar_patch")
 
     # The ring (2D, Q1 and Q2) and the tube (3D) against their quarters.
     tube = tests + "/self_contact_tube.prm"
