@@ -75,15 +75,19 @@ namespace tribos
       held.insert(d.boundary_id);
     held.insert(bc.symmetry.begin(), bc.symmetry.end());
     // The bodies each boundary id lies on (every process's).
-    std::vector<unsigned int> id_and_body;
+    std::set<std::pair<unsigned int, unsigned int>> local_ids;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary())
-          {
-            id_and_body.push_back(cell->face(f)->boundary_id());
-            id_and_body.push_back(cell->material_id());
-          }
+            local_ids.insert(
+              {cell->face(f)->boundary_id(), cell->material_id()});
+    std::vector<unsigned int> id_and_body;
+    for (const auto &[id, body] : local_ids)
+    {
+      id_and_body.push_back(id);
+      id_and_body.push_back(body);
+    }
     std::map<unsigned int, std::set<unsigned int>> bodies_of_id;
     for (const auto &part :
          Utilities::MPI::all_gather(mpi_communicator, id_and_body))

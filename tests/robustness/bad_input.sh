@@ -179,6 +179,9 @@ expect self_contact_mortar_multipliers_quadratic \
   --set "Finite element/Polynomial degree=2"
 expect self_contact_smoothed "without Master smoothing" "$tribos" \
   "$tests/self_contact_u.prm" --set "Contact/Master smoothing=averaged normals"
+expect self_contact_mortar_smoothed "without Master smoothing" "$tribos" \
+  "$tests/self_contact_u.prm" --set "Contact/Discretization=mortar" \
+  --set "Contact/Master smoothing=averaged normals"
 expect self_contact_two_faces "each of which shares a node with every other" \
   "$tribos" "$tests/patch_test.prm" --set "Contact/Pairs=13 : 13" \
   --set "Scene/Two blocks/Upper subdivisions=2, 2"

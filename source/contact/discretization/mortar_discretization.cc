@@ -325,7 +325,9 @@ namespace tribos
     const double size = pair.slave->nodes()[k].size;
     const double floor =
       1e-9 * std::pow(size, dim - 1) * (axisymmetric ? size : 1.);
-    input.min_weight  = 1e-3 * std::max(pair.area[k], floor);
+    // (The node's whole area: a self pair's area_factor halves pair.area
+    // but not the weight w_j.)
+    input.min_weight  = 1e-3 * std::max(pair.area[k] / pair.area_factor, floor);
     input.area_factor = pair.area_factor;
   }
 
@@ -533,15 +535,25 @@ namespace tribos
       return;
     // A paired node has a face within its segment's length along the
     // normal (find_faces()), or behind it however deep: every paired node
-    // is near. A slave at the last converged increment: closed or paired.
-    std::vector<bool> near(pair.n_nodes(), false),
-      was_slave(pair.n_nodes(), false);
+    // is near, joined to the nodes of every face its element integrates.
+    // A slave at the last converged increment: closed or paired.
+    std::vector<std::vector<unsigned int>> targets(pair.n_nodes());
+    std::vector<bool>                      was_slave(pair.n_nodes(), false);
+    std::vector<unsigned int>              faces;
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
     {
-      near[k]      = pair.current[k].paired && pair.current[k].face >= 0;
       was_slave[k] = pair.committed[k].closed() || pair.committed[k].paired;
+      if (!pair.current[k].paired || pair.current[k].face < 0)
+        continue;
+      element_master_faces(pair, k, faces);
+      for (const unsigned int f : faces)
+        for (unsigned int v = 0; v < pair.master->faces()[f].n_vertices; ++v)
+          targets[k].push_back(pair.master->faces()[f].nodes[v]);
+      std::sort(targets[k].begin(), targets[k].end());
+      targets[k].erase(std::unique(targets[k].begin(), targets[k].end()),
+                       targets[k].end());
     }
-    assign_self_contact_roles(pair, near, was_slave, communicator);
+    assign_self_contact_roles(pair, targets, was_slave, communicator);
   }
 
 

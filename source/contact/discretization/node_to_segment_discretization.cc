@@ -271,8 +271,8 @@ namespace tribos
     // node carried deep through the opposite side must have a role). A
     // slave at the last converged increment: closed, or paired within two
     // element sizes (the status survives a change of the mesh).
-    std::vector<bool> near(pair.n_nodes(), false),
-      was_slave(pair.n_nodes(), false);
+    std::vector<std::vector<unsigned int>> targets(pair.n_nodes());
+    std::vector<bool>                      was_slave(pair.n_nodes(), false);
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
     {
       const NodeState &state     = pair.current[k];
@@ -285,10 +285,15 @@ namespace tribos
         continue;
       Vec3<double> n, xbar;
       project(pair, state.face, pair.slave_positions[k], true, &n, &xbar);
-      near[k] = state.projection.distance < 2 * size ||
-                dot(pair.slave_positions[k] - xbar, n) < 0;
+      if (state.projection.distance < 2 * size ||
+          dot(pair.slave_positions[k] - xbar, n) < 0)
+      {
+        const auto &face = pair.master->faces()[state.face];
+        targets[k].assign(face.nodes.begin(),
+                          face.nodes.begin() + face.n_vertices);
+      }
     }
-    assign_self_contact_roles(pair, near, was_slave, communicator);
+    assign_self_contact_roles(pair, targets, was_slave, communicator);
   }
 
 

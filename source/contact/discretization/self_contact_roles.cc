@@ -12,25 +12,22 @@ namespace tribos
 {
   template <int dim>
   void
-  assign_self_contact_roles(ContactPair<dim>        &pair,
-                            const std::vector<bool> &near,
-                            const std::vector<bool> &was_slave,
-                            const MPI_Comm           communicator)
+  assign_self_contact_roles(
+    ContactPair<dim>                             &pair,
+    const std::vector<std::vector<unsigned int>> &targets_of,
+    const std::vector<bool>                      &was_slave,
+    const MPI_Comm                                communicator)
   {
-    const auto &faces = pair.master->faces();
-
     // Per owned near node: the node, whether it was a slave at the last
-    // converged increment, its face's nodes.
+    // converged increment, the nodes of its faces.
     std::vector<unsigned int> mine;
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-      if (pair.owned[k] && !pair.excluded[k] && near[k])
+      if (pair.owned[k] && !pair.excluded[k] && !targets_of[k].empty())
       {
-        const auto &face = faces[pair.current[k].face];
         mine.push_back(k);
         mine.push_back(was_slave[k] ? 1 : 0);
-        mine.push_back(face.n_vertices);
-        for (unsigned int v = 0; v < face.n_vertices; ++v)
-          mine.push_back(face.nodes[v]);
+        mine.push_back(targets_of[k].size());
+        mine.insert(mine.end(), targets_of[k].begin(), targets_of[k].end());
       }
 
     // The whole graph, on every process in the same order: each node's
@@ -133,12 +130,12 @@ namespace tribos
 
   template void
   assign_self_contact_roles(ContactPair<2> &,
-                            const std::vector<bool> &,
+                            const std::vector<std::vector<unsigned int>> &,
                             const std::vector<bool> &,
                             const MPI_Comm);
   template void
   assign_self_contact_roles(ContactPair<3> &,
-                            const std::vector<bool> &,
+                            const std::vector<std::vector<unsigned int>> &,
                             const std::vector<bool> &,
                             const MPI_Comm);
 } // namespace tribos

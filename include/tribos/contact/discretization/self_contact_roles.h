@@ -22,12 +22,13 @@ namespace tribos
    * from where the surface folds, not from the input.
    *
    * The rule (4C colours its self-contact elements alike): the graph
-   * whose edges join each paired node near its face (@p near: closer
-   * than twice its element size, or behind the face) to that face's
-   * nodes is coloured with two colours, component by component, breadth
-   * first from a seed; the seed's colour is slave, its neighbours'
-   * master, theirs slave, and so on, so that whole sides of a fold are
-   * slaves and the opposite sides masters. The seed is the component's
+   * whose edges join each paired node near its faces (closer than twice
+   * its element size, or behind a face) to those faces' nodes
+   * (@p targets: per node, empty if it is not near; node to segment's
+   * one face, a mortar element's faces) is coloured with two colours, component
+   * by component, breadth first from a seed; the seed's colour is slave, its
+   * neighbours' master, theirs slave, and so on, so that whole sides of a fold
+   * are slaves and the opposite sides masters. The seed is the component's
    * smallest paired node that was a slave at the last converged
    * increment (@p was_slave: closed, or paired near, as the
    * discretization judges), else its smallest paired node:
@@ -43,15 +44,16 @@ namespace tribos
    * depend on the partition.
    *
    * A master node loses its pairing (its multiplier's row then says
-   * Lambda = 0) where a slave holds the contact (it is a node of a
-   * slave's face); slaves keep theirs. Collective.
+   * Lambda = 0) where a slave holds the contact (it is a node of one of
+   * a slave's faces); slaves keep theirs. Collective.
    */
   template <int dim>
   void
-  assign_self_contact_roles(ContactPair<dim>        &pair,
-                            const std::vector<bool> &near,
-                            const std::vector<bool> &was_slave,
-                            const MPI_Comm           communicator);
+  assign_self_contact_roles(
+    ContactPair<dim>                             &pair,
+    const std::vector<std::vector<unsigned int>> &targets,
+    const std::vector<bool>                      &was_slave,
+    const MPI_Comm                                communicator);
 } // namespace tribos
 
 #endif
