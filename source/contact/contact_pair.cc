@@ -359,18 +359,13 @@ namespace tribos
         pair.rigid = rigid_surfaces.at(description.rigid_surface);
       pair.discretization =
         create_discretization<dim>(description, parameters, axisymmetric);
-      if (self)
-      {
-        const std::string name = pair.discretization->name();
-        AssertThrow(name == "node to segment" ||
-                      (name.rfind("mortar", 0) == 0 &&
-                       name.find("averaged") == std::string::npos),
-                    ExcMessage("Parameter <Contact/Pairs>: the self-contact "
-                               "pair <" +
-                               description.text + "> is discretized " + name +
-                               "; self-contact takes node to segment or "
-                               "mortar, without Master smoothing."));
-      }
+      AssertThrow(!self || pair.discretization->takes_self_contact(),
+                  ExcMessage("Parameter <Contact/Pairs>: the self-contact "
+                             "pair <" +
+                             description.text + "> is discretized " +
+                             pair.discretization->name() +
+                             "; self-contact takes node to segment or "
+                             "mortar, without Master smoothing."));
 
       set_up_nodes(pair,
                    pairs,

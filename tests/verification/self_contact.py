@@ -95,6 +95,47 @@ half = ["Scene/Mesh file=u_shape_half.msh",
         "Contact/Rigid surfaces=wall : plane : 0, 0, 0 : 1, 0, 0 : 0, 0"]
 
 
+# The tube of tests/data/tube.geo (3D) and its quarter with a rigid wall
+# at the plane of symmetry y = 0; the ring, its cross-section (2D).
+tube = tests + "/self_contact_tube.prm"
+quarter = ["Scene/Mesh file=tube_quarter.msh",
+           "Boundary conditions/Symmetry=3, 4, 5, 6",
+           "Contact/Rigid surfaces=top : plane : 0, 1, 0 : 0, -1, 0 :"
+           " 0, -0.7*t, 0 ; wall : plane : 0, 0, 0 : 0, 1, 0 : 0, 0, 0",
+           "Contact/Pairs=2 : top ; 1 : wall"]
+ring = ["Dimension=2", "Scene/Mesh file=ring_half.msh",
+        "Boundary conditions/Symmetry=5",
+        "Contact/Rigid surfaces=top : plane : 0, 1, 0 : 0, -1, 0 : 0, -0.7*t ;"
+        " bottom : plane : 0, -1, 0 : 0, 1, 0 : 0, 0.7*t"]
+ring_quarter = ["Dimension=2", "Scene/Mesh file=ring_quarter.msh",
+                "Boundary conditions/Symmetry=5, 6",
+                "Contact/Rigid surfaces=top : plane : 0, 1, 0 : 0, -1, 0 :"
+                " 0, -0.7*t ; wall : plane : 0, 0, 0 : 0, 1, 0 : 0, 0",
+                "Contact/Pairs=2 : top ; 1 : wall"]
+
+
+def against_quarter(full, reference):
+    """The largest relative difference of the plate force and of the
+    self-contact force (where the quarter's wall carries force; where it
+    does not, the self-contact force over the last wall force) between a
+    half ring or tube and its quarter, the common times and the number
+    of them in contact."""
+    common = [t for t in reference if t in full]
+    plate, closing, n_closed = 0, 0, 0
+    last = reference[max(common)]["pair1_normal_force"]
+    for t in common:
+        r = reference[t]
+        plate = max(plate, abs(full[t]["pair0_normal_force"] /
+                               r["pair0_normal_force"] - 1))
+        if r["pair1_normal_force"] > 1e-6:
+            n_closed += 1
+            closing = max(closing, abs(full[t]["pair2_normal_force"] /
+                                       r["pair1_normal_force"] - 1))
+        else:
+            closing = max(closing, full[t]["pair2_normal_force"] / last)
+    return plate, closing, common, n_closed
+
+
 def last_contact(folder):
     """The rows of the last contact CSV in folder."""
     last = sorted(f for f in os.listdir(folder) if f.startswith("contact-"))
@@ -302,12 +343,6 @@ if "serial" in selected:
     # The tube (3D): its right half crushed until the inner surface
     # closes, against the quarter with a rigid wall at y = 0 (the meshes
     # mirror each other, so the pairs of mirrored nodes are mutual).
-    tube = tests + "/self_contact_tube.prm"
-    quarter = ["Scene/Mesh file=tube_quarter.msh",
-               "Boundary conditions/Symmetry=3, 4, 5, 6",
-               "Contact/Rigid surfaces=top : plane : 0, 1, 0 : 0, -1, 0 :"
-               " 0, -0.7*t, 0 ; wall : plane : 0, 0, 0 : 0, 1, 0 : 0, 0, 0",
-               "Contact/Pairs=2 : top ; 1 : wall"]
     for method in ("penalty", "augmented lagrangian", "lagrange multiplier"):
         name = method.replace(" ", "_")
         sets = ["Contact/Method=" + method]
@@ -315,16 +350,7 @@ if "serial" in selected:
         run(tribos, tube, out + "/tube_quarter_" + name, sets + quarter)
         full = by_time(out + "/tube_" + name)
         reference = by_time(out + "/tube_quarter_" + name)
-        plate, closing, n_closed = 0, 0, 0
-        common = [t for t in reference if t in full]
-        for t in common:
-            r = reference[t]
-            plate = max(plate, abs(full[t]["pair0_normal_force"] /
-                                   r["pair0_normal_force"] - 1))
-            if r["pair1_normal_force"] > 1e-6:
-                n_closed += 1
-                closing = max(closing, abs(full[t]["pair2_normal_force"] /
-                                           r["pair1_normal_force"] - 1))
+        plate, closing, common, n_closed = against_quarter(full, reference)
         check(len(common) >= 20 and 1.0 in common and n_closed >= 3 and
               max(plate, closing) < 1e-3,
               "tube crushed until its inner surface closes (3D), %s: the "
@@ -419,39 +445,6 @@ if "serial" in selected:
           "Newton iterations")
 
 # 7. Mortar: both passes with half weights, as node to segment.
-ring = ["Dimension=2", "Scene/Mesh file=ring_half.msh",
-        "Boundary conditions/Symmetry=5",
-        "Contact/Rigid surfaces=top : plane : 0, 1, 0 : 0, -1, 0 : 0, -0.7*t ;"
-        " bottom : plane : 0, -1, 0 : 0, 1, 0 : 0, 0.7*t"]
-ring_quarter = ["Dimension=2", "Scene/Mesh file=ring_quarter.msh",
-                "Boundary conditions/Symmetry=5, 6",
-                "Contact/Rigid surfaces=top : plane : 0, 1, 0 : 0, -1, 0 :"
-                " 0, -0.7*t ; wall : plane : 0, 0, 0 : 0, 1, 0 : 0, 0",
-                "Contact/Pairs=2 : top ; 1 : wall"]
-
-
-def against_quarter(full, reference):
-    """The largest relative difference of the plate force and of the
-    self-contact force (where the quarter's wall carries force; where it
-    does not, the self-contact force over the last wall force) between a
-    half ring or tube and its quarter, the common times and the number
-    of them in contact."""
-    common = [t for t in reference if t in full]
-    plate, closing, n_closed = 0, 0, 0
-    last = reference[max(common)]["pair1_normal_force"]
-    for t in common:
-        r = reference[t]
-        plate = max(plate, abs(full[t]["pair0_normal_force"] /
-                               r["pair0_normal_force"] - 1))
-        if r["pair1_normal_force"] > 1e-6:
-            n_closed += 1
-            closing = max(closing, abs(full[t]["pair2_normal_force"] /
-                                       r["pair1_normal_force"] - 1))
-        else:
-            closing = max(closing, full[t]["pair2_normal_force"] / last)
-    return plate, closing, common, n_closed
-
-
 if "mortar" in selected:
     mortar = ["Contact/Discretization=mortar"]
     # The patch test as one surface: each pass carries half the contact
@@ -488,12 +481,6 @@ if "mortar" in selected:
     multiplier_patch_tests("mortar", "mortar", "mortar_patch")
 
     # The ring (2D, Q1 and Q2) and the tube (3D) against their quarters.
-    tube = tests + "/self_contact_tube.prm"
-    quarter = ["Scene/Mesh file=tube_quarter.msh",
-               "Boundary conditions/Symmetry=3, 4, 5, 6",
-               "Contact/Rigid surfaces=top : plane : 0, 1, 0 : 0, -1, 0 :"
-               " 0, -0.7*t, 0 ; wall : plane : 0, 0, 0 : 0, 1, 0 : 0, 0, 0",
-               "Contact/Pairs=2 : top ; 1 : wall"]
     q2 = ["Finite element/Polynomial degree=2"]
     for label, half_sets, quarter_sets, bound in (
             ("ring, Q1, node to segment, penalty", ring, ring_quarter, 1e-3),
@@ -697,7 +684,6 @@ if "mpi" in selected and mpi_part(selected):
                " 6 : 0, 0.06*t ; 2 : 0, -0.06*t",
                "Contact/Pairs=1 : 1 : mu=0.3",
                "Contact/Method=lagrange multiplier"]
-    tube = tests + "/self_contact_tube.prm"
     for name, prm, sets in (
             ("penalty", u_shape, []),
             ("multipliers_friction", u_shape, sheared),

@@ -204,12 +204,9 @@ namespace tribos
 
 
 
-    /**
-     * The start faces of a walk for slave node @p k: the closest face of
-     * the tree, or for self-contact the closest face (within the reach of
-     * @p self) that @p kind takes (class 2: overlapping, facing, not on
-     * the far side); the node's own faces and their neighbours never.
-     */
+    /** The start faces of a walk for slave node @p k: the tree's closest
+     * face, or for self-contact the closest face within the reach of
+     * @p self that @p kind takes (class 2). */
     template <int dim, class Kind>
     auto
     start_faces(const ContactPair<dim>       &pair,
@@ -283,17 +280,10 @@ namespace tribos
         const double        length_squared = dot(e, e);
         const Vec3<double>  n_s =
           scale(1. / std::sqrt(length_squared), cross(ez, e));
-        const double        slave_motion = largest_motion(pair.slave_positions,
+        const double slave_motion = largest_motion(pair.slave_positions,
                                                    pair.old_slave_positions,
                                                    slave_faces[f].nodes,
                                                    2);
-        const Vec3<double> &x_a_old =
-          pair.old_slave_positions[slave_faces[f].nodes[0]];
-        const Vec3<double> e_old =
-          pair.old_slave_positions[slave_faces[f].nodes[1]] - x_a_old;
-        const double       length_old = norm(e_old);
-        const Vec3<double> n_old = scale(1. / length_old, cross(ez, e_old));
-
         // Whether master face m overlaps this slave segment in the
         // projection onto its line, faces it and is not too deep behind
         // it (walk's classes); @p gap_min: its closest point along the
@@ -306,7 +296,8 @@ namespace tribos
           // but across a crease (SelfContactSearch::own()).
           if (self.active() && self.own(k, m) &&
               (self.of_node(pair, k, m) ||
-               dot(cross(ez, y_d - y_c), n_s) > -0.9 * norm(y_d - y_c)))
+               dot(cross(ez, y_d - y_c), n_s) >
+                 SelfContactSearch<2>::crease * norm(y_d - y_c)))
             return 0;
           const double s_c = dot(y_c - x_a, e) / length_squared;
           const double s_d = dot(y_d - x_a, e) / length_squared;
@@ -345,14 +336,21 @@ namespace tribos
           const double length = std::sqrt(length_squared);
           if (self.active())
           {
+            // The slave segment and the face at the start of the increment.
+            const Vec3<double> &a_old =
+              pair.old_slave_positions[slave_faces[f].nodes[0]];
+            const Vec3<double> e_old =
+              pair.old_slave_positions[slave_faces[f].nodes[1]] - a_old;
+            const Vec3<double> n_old =
+              scale(1. / norm(e_old), cross(ez, e_old));
             double old_gap_max = -std::numeric_limits<double>::max();
             for (unsigned int v = 0; v < 2; ++v)
               old_gap_max =
                 std::max(old_gap_max,
                          dot(pair.old_master_positions[faces[m].nodes[v]] -
-                               x_a_old,
+                               a_old,
                              n_old));
-            return far_side(gap_max, length, old_gap_max, length_old) ? 1 : 2;
+            return far_side(gap_max, length, old_gap_max, norm(e_old)) ? 1 : 2;
           }
           // Deeper than the reach (at least twice the length: the cheap
           // test first).
@@ -409,12 +407,9 @@ namespace tribos
       for (const unsigned int f : pair.slave->nodes()[k].faces)
       {
         const unsigned int n_s = slave_faces[f].n_vertices;
-        Vec3<double>       x[4], x_old[4];
+        Vec3<double>       x[4];
         for (unsigned int v = 0; v < n_s; ++v)
-        {
-          x[v]     = pair.slave_positions[slave_faces[f].nodes[v]];
-          x_old[v] = pair.old_slave_positions[slave_faces[f].nodes[v]];
-        }
+          x[v] = pair.slave_positions[slave_faces[f].nodes[v]];
         const internal::AuxiliaryPlane<double> plane =
           internal::auxiliary_plane(x, n_s);
         double height_min = std::numeric_limits<double>::max(),
@@ -434,6 +429,9 @@ namespace tribos
         internal::AuxiliaryPlane<double> old_plane;
         if (self.active())
         {
+          Vec3<double> x_old[4];
+          for (unsigned int v = 0; v < n_s; ++v)
+            x_old[v] = pair.old_slave_positions[slave_faces[f].nodes[v]];
           old_plane      = internal::auxiliary_plane(x_old, n_s);
           old_length     = std::sqrt(std::abs(old_plane.area));
           old_height_min = std::numeric_limits<double>::max();
@@ -461,7 +459,8 @@ namespace tribos
           // Self-contact: as in 2D.
           if (self.active() && self.own(k, m) &&
               (self.of_node(pair, k, m) ||
-               dot(internal::auxiliary_plane(y, n_m).n0, plane.n0) > -0.9))
+               dot(internal::auxiliary_plane(y, n_m).n0, plane.n0) >
+                 SelfContactSearch<3>::crease))
             return 0;
           if (!internal::overlaps_in_plane(plane, y, n_m))
             return 0;

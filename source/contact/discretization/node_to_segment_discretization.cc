@@ -35,17 +35,17 @@ namespace tribos
 
   template <int dim>
   Projection
-  NodeToSegmentDiscretization<dim>::project(
-    const ContactPair<dim>          &pair,
-    const unsigned int               f,
-    const Vec3<double>              &x,
-    const bool                       clamp,
-    Vec3<double>                    *normal,
-    Vec3<double>                    *point,
-    const std::vector<Vec3<double>> *at) const
+  NodeToSegmentDiscretization<dim>::project(const ContactPair<dim> &pair,
+                                            const unsigned int      f,
+                                            const Vec3<double>     &x,
+                                            const bool              clamp,
+                                            Vec3<double>           *normal,
+                                            Vec3<double>           *point,
+                                            const bool              old) const
   {
-    const auto  &face      = pair.master->faces()[f];
-    const auto  &positions = at != nullptr ? *at : pair.master_positions;
+    const auto &face = pair.master->faces()[f];
+    const auto &positions =
+      old ? pair.old_master_positions : pair.master_positions;
     Vec3<double> xm[4];
     for (unsigned int v = 0; v < face.n_vertices; ++v)
       xm[v] = positions[face.nodes[v]];
@@ -119,7 +119,7 @@ namespace tribos
                 true,
                 &n_old,
                 &xbar_old,
-                &pair.old_master_positions);
+                true);
         if (dot(pair.old_master_positions[k] - xbar_old, n_old) < -0.5 * size)
           return false;
       }
@@ -140,8 +140,8 @@ namespace tribos
     for (const unsigned int g : pair.master->faces()[best].neighbours)
     {
       double distance;
-      if (pair.face_known[g] && !self_search.own(k, g) &&
-          admissible(g, distance) && distance <= self_search.maximum_reach())
+      if (pair.face_known[g] && admissible(g, distance) &&
+          distance <= self_search.maximum_reach())
         candidates.push_back(g);
     }
     return candidates;

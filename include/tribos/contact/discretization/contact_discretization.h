@@ -141,6 +141,14 @@ namespace tribos
     virtual bool
     pair_node(ContactPair<dim> &pair, const unsigned int k) = 0;
 
+    /** Whether a self-contact pair (a surface its own master) may use this
+     * discretization. */
+    virtual bool
+    takes_self_contact() const
+    {
+      return false;
+    }
+
     /** Warnings about the pair found by initialize() (printed once, at
      * the start of the run). */
     virtual std::vector<std::string>

@@ -52,6 +52,13 @@ namespace tribos
     void
     initialize(const ContactPair<dim> &pair) override;
 
+    /** Not with the master's averaged normals. */
+    bool
+    takes_self_contact() const override
+    {
+      return !smoothed_master;
+    }
+
     std::vector<std::string>
     setup_warnings() const override
     {

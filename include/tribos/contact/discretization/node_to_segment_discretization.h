@@ -43,6 +43,12 @@ namespace tribos
     bool
     pair_node(ContactPair<dim> &pair, const unsigned int k) override;
 
+    bool
+    takes_self_contact() const override
+    {
+      return true;
+    }
+
     std::vector<std::string>
     setup_warnings() const override
     {
@@ -113,16 +119,15 @@ namespace tribos
 
     /** The projection of @p x onto face @p f (clamped to the face if
      * @p clamp), with the face's unit outward normal and point there; the
-     * face's vertices at @p at (node numbers of the surface) if given,
-     * else at their current positions. */
+     * face where it was at the last converged increment if @p old. */
     Projection
-    project(const ContactPair<dim>          &pair,
-            const unsigned int               f,
-            const Vec3<double>              &x,
-            const bool                       clamp,
-            Vec3<double>                    *normal = nullptr,
-            Vec3<double>                    *point  = nullptr,
-            const std::vector<Vec3<double>> *at     = nullptr) const;
+    project(const ContactPair<dim> &pair,
+            const unsigned int      f,
+            const Vec3<double>     &x,
+            const bool              clamp,
+            Vec3<double>           *normal = nullptr,
+            Vec3<double>           *point  = nullptr,
+            const bool              old    = false) const;
 
     /** Self-contact: the unit normal of slave node @p k, the mean of its
      * known faces' normals there. */

@@ -27,6 +27,14 @@ namespace tribos
       return "node to segment, smoothed master";
     }
 
+    /** Not the smoothed master (its nodal normals assume a master apart
+     * from the slave). */
+    bool
+    takes_self_contact() const override
+    {
+      return false;
+    }
+
     bool
     needs_nodes_beyond() const override
     {

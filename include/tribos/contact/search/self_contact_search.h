@@ -30,6 +30,10 @@ namespace tribos
   class SelfContactSearch
   {
   public:
+    /** The cosine of the unit normals of two neighbouring faces below which
+     * they meet across a crease (154 degrees apart), see own(). */
+    static constexpr double crease = -0.9;
+
     /**
      * For a self pair: each node's neighbourhood and the reach; refuses a
      * surface whose every face is in every node's neighbourhood (nothing
@@ -59,10 +63,10 @@ namespace tribos
     /**
      * Whether face @p f is one of node @p k's own faces or shares a node
      * with one. Node to segment never pairs a node with such a face; mortar
-     * pairs a slave face with a neighbour across a crease (normals opposed
-     * beyond 154 degrees), where a fold closes down to its tip (the quadratic
-     * ring's fold pinched its tip shut through the neighbours it could not
-     * see, and its elements inverted).
+     * pairs a slave face with a neighbour across a crease (the cosine of
+     * their unit normals below #crease), where a fold closes down to its
+     * tip (the quadratic ring's fold pinched its tip shut through the
+     * neighbours it could not see, and its elements inverted).
      */
     bool
     own(const unsigned int k, const unsigned int f) const
