@@ -91,8 +91,24 @@ namespace tribos
                     sizeof(NodeState));
       }
 
-    // Layout: number of pairs; per pair the number of nodes, ever_near and
-    // the states.
+    // The couplings of the sparsity pattern, gathered: a restart that
+    // rebuilt them from its first search would factorize a matrix of
+    // another pattern (another fill-reducing ordering, other rounding).
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> couplings(
+      contact_pairs.size());
+    for (unsigned int p = 0; p < contact_pairs.size(); ++p)
+    {
+      const std::vector<std::pair<unsigned int, unsigned int>> mine(
+        contact_pairs[p].couplings.begin(),
+        contact_pairs[p].couplings.end());
+      for (const auto &part :
+           Utilities::MPI::all_gather(mpi_communicator, mine))
+        couplings[p].insert(couplings[p].end(), part.begin(), part.end());
+      std::sort(couplings[p].begin(), couplings[p].end());
+    }
+
+    // Layout: number of pairs; per pair the number of nodes, ever_near,
+    // the states, the number of couplings and the couplings.
     std::vector<char> result;
     const auto        put = [&result](const void *data, const size_t size)
     {
@@ -107,6 +123,13 @@ namespace tribos
       put(&n, sizeof(n));
       put(&ever_near[p], 1);
       put(states[p].data(), n * sizeof(NodeState));
+      const unsigned int n_couplings = couplings[p].size();
+      put(&n_couplings, sizeof(n_couplings));
+      for (const auto &[k, face] : couplings[p])
+      {
+        put(&k, sizeof(k));
+        put(&face, sizeof(face));
+      }
     }
     return result;
   }
@@ -147,11 +170,36 @@ namespace tribos
                              "it."));
       get(&near, 1);
       get(pair.committed.data(), n * sizeof(NodeState));
+      // This process's couplings: those of the slave nodes it owns (the
+      // only ones it pairs).
+      unsigned int n_couplings;
+      get(&n_couplings, sizeof(n_couplings));
+      pair.couplings.clear();
+      for (unsigned int c = 0; c < n_couplings; ++c)
+      {
+        unsigned int k, face;
+        get(&k, sizeof(k));
+        get(&face, sizeof(face));
+        AssertThrow(k < n && (pair.master == nullptr ||
+                              face < pair.master->faces().size()),
+                    ExcMessage("The checkpoint's contact couplings do not "
+                               "fit this run's surfaces: the mesh must be "
+                               "that of the run that wrote it."));
+        if (pair.owned[k] && !pair.excluded[k])
+          pair.couplings.insert(pair.couplings.end(), {k, face});
+      }
       pair.current              = pair.committed;
       pair.ever_near            = near != 0;
       pair.old_slave_positions  = pair.slave_positions;
       pair.old_master_positions = pair.master_positions;
     }
+    AssertThrow(offset == state.size(),
+                ExcMessage("The checkpoint's contact state has " +
+                           std::to_string(state.size() - offset) +
+                           " bytes more than this run's contact pairs "
+                           "read: Contact/Pairs must be those of the run "
+                           "that wrote it."));
+    outdated       = true;
     committed_time = time;
   }
 

@@ -302,16 +302,18 @@ namespace tribos
 
 
   template <int dim>
-  BulkAssembler<dim>::BulkAssembler(const Parameters::AllParameters &parameters,
-                                    const DoFHandler<dim>     &dof_handler,
-                                    const Mapping<dim>        &mapping,
-                                    const FESystem<dim>       &fe,
-                                    const Quadrature<dim>     &quadrature,
-                                    const Quadrature<dim - 1> &face_quadrature,
-                                    MaterialState<dim>        &materials,
-                                    const MPI_Comm             mpi_communicator)
+  BulkAssembler<dim>::BulkAssembler(
+    const Parameters::AllParameters &parameters,
+    const std::vector<typename DoFHandler<dim>::active_cell_iterator>
+                              &owned_cells,
+    const Mapping<dim>        &mapping,
+    const FESystem<dim>       &fe,
+    const Quadrature<dim>     &quadrature,
+    const Quadrature<dim - 1> &face_quadrature,
+    MaterialState<dim>        &materials,
+    const MPI_Comm             mpi_communicator)
     : parameters(parameters)
-    , dof_handler(dof_handler)
+    , owned_cells(owned_cells)
     , fe(fe)
     , quadrature(quadrature)
     , face_quadrature(face_quadrature)
@@ -358,7 +360,6 @@ namespace tribos
       component[i] = fe.system_to_component_index(i).first;
 
     using CellIterator       = typename DoFHandler<dim>::active_cell_iterator;
-    using CellFilter         = FilteredIterator<CellIterator>;
     const auto assemble_cell = [&](const CellIterator   &cell,
                                    AssemblyScratch<dim> &scratch,
                                    AssemblyCopy         &copy)
@@ -447,10 +448,10 @@ namespace tribos
 
     const auto start = std::chrono::steady_clock::now();
     WorkStream::run(
-      CellFilter(IteratorFilters::LocallyOwnedCell(),
-                 dof_handler.begin_active()),
-      CellFilter(IteratorFilters::LocallyOwnedCell(), dof_handler.end()),
-      worker,
+      owned_cells.begin(),
+      owned_cells.end(),
+      [&](const auto &cell, AssemblyScratch<dim> &scratch, AssemblyCopy &copy)
+      { worker(*cell, scratch, copy); },
       copier,
       AssemblyScratch<dim>(*kinematics, face_quadrature),
       AssemblyCopy(dofs_per_cell, stabilization > 0, track_external, dynamic));
@@ -466,10 +467,8 @@ namespace tribos
                                               const PointFunction &f) const
   {
     const auto points = kinematics->clone();
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : owned_cells)
     {
-      if (!cell->is_locally_owned())
-        continue;
       points->reinit(cell, u);
       for (unsigned int q = 0; q < quadrature.size(); ++q)
         f(cell, *points, q, points->material_point(q));

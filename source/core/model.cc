@@ -7,11 +7,15 @@
 #include <tribos/core/vector_function.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_simplex_p.h>
 
+#include <algorithm>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace tribos
 {
@@ -75,6 +79,24 @@ namespace tribos
                              .template get_gauss_type_quadrature<dim - 1>(
                                parameters.finite_element.n_quadrature_points);
     dofs.distribute_dofs(*fe_storage);
+    const bool adapted =
+      dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
+        triangulation_storage.get()) != nullptr;
+    if (adapted)
+      DoFRenumbering::hierarchical(dofs);
+    std::vector<
+      std::pair<CellId, typename DoFHandler<dim>::active_cell_iterator>>
+      by_id;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        by_id.emplace_back(adapted ? cell->id() : CellId(), cell);
+    if (adapted)
+      std::sort(by_id.begin(),
+                by_id.end(),
+                [](const auto &a, const auto &b) { return a.first < b.first; });
+    owned_cells_.clear();
+    for (const auto &[id, cell] : by_id)
+      owned_cells_.push_back(cell);
     layout_.locally_owned_dofs = dofs.locally_owned_dofs();
     owned_per_process =
       Utilities::MPI::all_gather(mpi_communicator, layout_.locally_owned_dofs);
@@ -198,6 +220,15 @@ namespace tribos
   Model<dim>::dof_handler() const
   {
     return dofs;
+  }
+
+
+
+  template <int dim>
+  const std::vector<typename DoFHandler<dim>::active_cell_iterator> &
+  Model<dim>::owned_cells() const
+  {
+    return owned_cells_;
   }
 
 

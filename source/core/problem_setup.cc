@@ -92,7 +92,7 @@ namespace tribos
                                            mpi_communicator);
     bulk_assembler =
       std::make_unique<BulkAssembler<dim>>(parameters,
-                                           model.dof_handler(),
+                                           model.owned_cells(),
                                            model.mapping(),
                                            model.fe(),
                                            model.quadrature(),

@@ -187,6 +187,15 @@ namespace tribos
 
 
   void
+  LinearSolver::begin_increment()
+  {
+    if (suitesparse)
+      suitesparse->begin_increment();
+  }
+
+
+
+  void
   LinearSolver::release_matrix()
   {
     amesos.reset();

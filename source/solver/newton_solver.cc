@@ -250,6 +250,7 @@ namespace tribos
     const auto  &p   = parameters;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     problem.begin_increment(time, predictor);
+    linear_solver.begin_increment();
 
     // A new vector of the right-hand side's layout, not a copy: a copy
     // would take along entries for other processes that an interrupted

@@ -74,6 +74,19 @@ namespace tribos
 
 
 
+  void
+  SparseDirect::begin_increment()
+  {
+    n_failures = 0;
+    if (elimination)
+    {
+      elimination->n_failures         = 0;
+      elimination->reduced.n_failures = 0;
+    }
+  }
+
+
+
   SparseDirect::~SparseDirect()
   {
     free_factorizations();

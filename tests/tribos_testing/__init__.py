@@ -211,6 +211,75 @@ def numdiff(result, reference, relative=1e-6, absolute=1e-10):
         raise SystemExit("numdiff: %s differs from %s" % (result, reference))
 
 
+def identical_rows(result, reference, drop=("wall_time",)):
+    """Whether two CSV files hold the same text in every column but drop;
+    prints the first row that differs. What a restart on as many
+    processes as the run that wrote the checkpoint claims: bit for bit
+    (every number in the digits written), residual norms and iteration
+    counts included, whatever BLAS kernels run."""
+    tables = []
+    for path in (result, reference):
+        with open(path) as f:
+            rows = list(csv.reader(f))
+        keep = [i for i, name in enumerate(rows[0]) if name not in drop]
+        tables.append([[row[i] for i in keep] for row in rows])
+    if tables[0] == tables[1]:
+        return True
+    for n, (a, b) in enumerate(zip(*tables)):
+        if a != b:
+            columns = [tables[1][0][i] for i in range(len(a))
+                       if i >= len(b) or a[i] != b[i]]
+            print("%s line %d differs from %s in %s:\n  %s\n  %s"
+                  % (result, n + 1, reference, ", ".join(columns),
+                     ",".join(a), ",".join(b)))
+            return False
+    print("%s has %d lines, %s %d" % (result, len(tables[0]), reference,
+                                       len(tables[1])))
+    return False
+
+
+def restart_identical(reference, restarted):
+    """Whether a restarted run's history.csv (but its wall times) and last
+    contact CSV equal the uninterrupted run's to the last digit."""
+    contact = sorted(f for f in os.listdir(reference)
+                     if f.startswith("contact-"))[-1:]
+    return all([identical_rows(restarted + "/history.csv",
+                               reference + "/history.csv")] +
+               [identical_rows(restarted + "/" + f, reference + "/" + f,
+                               drop=()) for f in contact])
+
+
+#: What Newton's tolerances (Nonlinear solver/Increment tolerance, 1e-8 by
+#: default) allow two runs of the same increments to differ by, relative
+#: to the values: each stops when its remaining error is below the
+#: tolerance times the increment's change, so they differ by at most
+#: twice that. A restart on another number of processes (other rounding
+#: in every solve) is bounded by this, not by the digits.
+NEWTON_AGREEMENT = 2e-8
+
+
+def restart_agrees(reference, restarted):
+    """A restart on another number of processes: history.csv (without
+    wall times, residual norms and iteration counts, which rounding may
+    change) and the last contact CSV equal to NEWTON_AGREEMENT, relative
+    to each value or to the file's largest force (values near zero, a
+    reaction's tangential part, differ by the rounding of the large ones).
+    Raises on a difference."""
+    drop = ("wall_time", "residual", "newton_iterations",
+            "newton_iterations_all", "energy_error")
+    for folder in (reference, restarted):
+        strip_columns(folder + "/history.csv", folder + "/h.csv", drop=drop)
+    files = ["h.csv"] + sorted(f for f in os.listdir(reference)
+                               if f.startswith("contact-"))[-1:]
+    for f in files:
+        scale = max(abs(v) for row in read_csv(reference + "/" + f)
+                    for k, v in row.items()
+                    if k not in ("step", "increment", "time", "load_factor")
+                    and not math.isnan(v))
+        numdiff(restarted + "/" + f, reference + "/" + f,
+                relative=NEWTON_AGREEMENT, absolute=NEWTON_AGREEMENT * scale)
+
+
 def sphere_on_block(level, discretization):
     """--set overrides of parameters/hertz_3d.prm for the quarter sphere
     pressed 0.02 into an elastic block of its material (penalty 1000 E/h),

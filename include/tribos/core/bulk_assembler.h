@@ -57,18 +57,21 @@ namespace tribos
 
     /**
      * The loads of Boundary conditions (Neumann, Body force) and the
-     * @p kinematics' variant for @p fe with @p quadrature on the cells of
-     * @p dof_handler (their reference geometry @p mapping), whose materials
+     * @p kinematics' variant for @p fe with @p quadrature on the cells
+     * @p owned_cells (this process's, in the order of its sums; their
+     * reference geometry @p mapping), whose materials
      * and history are @p materials.
      */
-    BulkAssembler(const Parameters::AllParameters &parameters,
-                  const DoFHandler<dim>           &dof_handler,
-                  const Mapping<dim>              &mapping,
-                  const FESystem<dim>             &fe,
-                  const Quadrature<dim>           &quadrature,
-                  const Quadrature<dim - 1>       &face_quadrature,
-                  MaterialState<dim>              &materials,
-                  const MPI_Comm                   mpi_communicator);
+    BulkAssembler(
+      const Parameters::AllParameters &parameters,
+      const std::vector<typename DoFHandler<dim>::active_cell_iterator>
+                                &owned_cells,
+      const Mapping<dim>        &mapping,
+      const FESystem<dim>       &fe,
+      const Quadrature<dim>     &quadrature,
+      const Quadrature<dim - 1> &face_quadrature,
+      MaterialState<dim>        &materials,
+      const MPI_Comm             mpi_communicator);
 
     /**
      * Assemble at the displacement @p u (ghosted) and @p time into
@@ -117,12 +120,15 @@ namespace tribos
 
   private:
     const Parameters::AllParameters &parameters;
-    const DoFHandler<dim>           &dof_handler;
-    const FESystem<dim>             &fe;
-    const Quadrature<dim>           &quadrature;
-    const Quadrature<dim - 1>       &face_quadrature;
-    MaterialState<dim>              &materials;
-    MPI_Comm                         mpi_communicator;
+    /** This process's cells, in the order the sums take
+     * (Model::owned_cells()). */
+    const std::vector<typename DoFHandler<dim>::active_cell_iterator>
+                              &owned_cells;
+    const FESystem<dim>       &fe;
+    const Quadrature<dim>     &quadrature;
+    const Quadrature<dim - 1> &face_quadrature;
+    MaterialState<dim>        &materials;
+    MPI_Comm                   mpi_communicator;
     /** The kinematics every thread clones. */
     std::unique_ptr<Kinematics<dim>> kinematics;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>>

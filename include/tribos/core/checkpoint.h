@@ -28,7 +28,7 @@ namespace tribos
   struct Checkpoint
   {
     /** The layout version of this struct. */
-    static constexpr unsigned int format = 4;
+    static constexpr unsigned int format = 5;
 
     unsigned int dimension      = 0;
     unsigned int n_active_cells = 0;

@@ -115,6 +115,20 @@ namespace tribos
     triangulation() const;
     const DoFHandler<dim> &
     dof_handler() const;
+
+    /**
+     * The locally owned active cells, in the order every sum over them
+     * takes (the assembly). A mesh that is adapted during the run (p4est)
+     * stores its cells, and deal.II numbers their dofs, in an order that
+     * depends on the refinements and coarsenings that made it; a restart,
+     * which refines the coarse mesh to the checkpoint's cells at once,
+     * would sum in another order and round otherwise. There the cells are
+     * visited in the order of their CellIds and the dofs numbered
+     * hierarchically (both functions of the cells alone); a mesh that
+     * never changes keeps the triangulation's order.
+     */
+    const std::vector<typename DoFHandler<dim>::active_cell_iterator> &
+    owned_cells() const;
     const FESystem<dim> &
     fe() const;
     const Quadrature<dim> &
@@ -213,6 +227,7 @@ namespace tribos
     std::unique_ptr<parallel::TriangulationBase<dim>> triangulation_storage;
     std::unique_ptr<FESystem<dim>>                    fe_storage;
     DoFHandler<dim>                                   dofs;
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> owned_cells_;
     /** A second-order mesh's curved geometry per active cell (own cells
      * on a distributed mesh); empty: straight cells. */
     CurvedCells<dim> curved_cells;

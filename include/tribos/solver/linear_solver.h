@@ -67,6 +67,17 @@ namespace tribos
     set_multiplier_blocks(const types::global_dof_index first,
                           const unsigned int            size);
 
+    /**
+     * A new increment begins. What a direct solve does then depends only
+     * on the sparsity pattern and on the matrices of this increment (not
+     * on the failures of an earlier increment), so that a restart, whose
+     * solver starts afresh, reproduces the uninterrupted run bit for bit.
+     * An AMG hierarchy stays across increments (its setup costs several
+     * solves): iterative solves reproduce it to the Newton tolerance.
+     */
+    void
+    begin_increment();
+
     /** Time every solve in @p timer's section "linear solve". */
     void
     set_timer(TimerOutput &timer);

@@ -31,7 +31,11 @@ namespace tribos
    * two such failures in a row LU stays for the rest of the pattern's life
    * (a singular first iterate, a body not yet in contact, is no reason to
    * give up Cholesky for the whole run: 2D Hertz under load control, 49k
-   * unknowns, 280 against 130 ms per solve).
+   * unknowns, 280 against 130 ms per solve), and until the next increment
+   * (begin_increment()): what a solve does depends on the pattern and on
+   * the increment's own matrices only, so that a run restarted from a
+   * checkpoint, whose solver starts afresh, solves as the uninterrupted
+   * one to the last bit.
    *
    * Systems with Lagrange multipliers (set_multiplier_blocks()) are
    * indefinite and not symmetric positive definite, so they would all go
@@ -69,6 +73,11 @@ namespace tribos
      */
     void
     set_multiplier_blocks(const int first, const unsigned int size);
+
+    /** A new increment: Cholesky is tried again (the factorizations and
+     * their symbolic analyses stay). */
+    void
+    begin_increment();
 
     /**
      * Solve @p matrix @p x = @p rhs (one process owns every row). Returns
@@ -136,7 +145,8 @@ namespace tribos
     int          first_multiplier = 0;
     unsigned int block_size       = 0;
     unsigned int n_refinements    = 0;
-    /** Cholesky failures in a row (2: LU for the pattern's life). */
+    /** Cholesky failures in a row (2: LU for the rest of the pattern's
+     * life in this increment). */
     unsigned int n_failures = 0;
     std::string  last_method;
 
