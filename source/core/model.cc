@@ -3,6 +3,7 @@
  * the dofs of the Dirichlet conditions and their reaction forces.
  */
 
+#include <tribos/base/import_constraints.h>
 #include <tribos/core/model.h>
 #include <tribos/core/vector_function.h>
 
@@ -13,6 +14,7 @@
 #include <deal.II/fe/fe_simplex_p.h>
 
 #include <algorithm>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -174,6 +176,19 @@ namespace tribos
     L.system_coupled.compress();
 
     make_constraints(0, nullptr, homogeneous);
+    hanging.clear();
+    hanging.reinit(L.locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dofs, hanging);
+    // As make_constraints(): the owners' lines, where a process's own cells
+    // do not give the whole line of a dof it reads.
+    if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
+      import_constraints(hanging,
+                         owned_per_process,
+                         L.locally_relevant_dofs,
+                         mpi_communicator);
+    hanging.close();
+    any_hanging = Utilities::MPI::max(hanging.n_constraints() > 0 ? 1 : 0,
+                                      mpi_communicator) > 0;
 
     // Each dof's body (of the own and ghost cells) and component.
     components.assign(dofs.n_dofs(), 0);
@@ -331,14 +346,47 @@ namespace tribos
   Model<dim>::reaction_forces(const Vector &residual,
                               const Vector *inertia) const
   {
+    const auto force = [&](const types::global_dof_index dof) -> double
+    {
+      return residual[dof] + (inertia ? (*inertia)[dof] : 0.);
+    };
+    // Each hanging node's force handed to its parents with the weights of
+    // its constraint: the residual condensed onto the parents, zero at
+    // every free dof at convergence, so that the reactions balance the
+    // loads and the contact forces. The owner of a parent adds the shares
+    // of all its hanging nodes (their forces from the ghost values: a
+    // hanging node lies on a cell at its parent, which the parent's owner
+    // has); the hanging nodes themselves count no more.
+    std::map<types::global_dof_index, double> shares;
+    if (any_hanging)
+    {
+      Vector owned(layout_.locally_owned_dofs, mpi_communicator);
+      for (const auto dof : layout_.locally_owned_dofs)
+        owned[dof] = force(dof);
+      owned.compress(VectorOperation::insert);
+      Vector ghosted(layout_.locally_owned_dofs,
+                     layout_.locally_relevant_dofs,
+                     mpi_communicator);
+      ghosted = owned;
+      for (const auto &line : hanging.get_lines())
+        for (const auto &[parent, weight] : line.entries)
+          if (layout_.locally_owned_dofs.is_element(parent))
+            shares[parent] += weight * ghosted[line.index];
+    }
     std::vector<double> forces;
     for (const auto &per_component : dirichlet_dofs)
       for (unsigned int d = 0; d < dim; ++d)
       {
         double sum = 0;
         for (const auto dof : per_component[d])
-          if (layout_.locally_owned_dofs.is_element(dof))
-            sum += residual[dof] + (inertia ? (*inertia)[dof] : 0.);
+          if (layout_.locally_owned_dofs.is_element(dof) &&
+              !hanging.is_constrained(dof))
+          {
+            sum += force(dof);
+            const auto share = shares.find(dof);
+            if (share != shares.end())
+              sum += share->second;
+          }
         forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
       }
     return forces;

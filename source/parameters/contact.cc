@@ -28,6 +28,8 @@ namespace tribos
           "faces) or the name of a rigid surface. A list (e.g. '10, 11, 12') "
           "makes one connected surface: a node on the edge between two of its "
           "parts is one node, and master faces continue across that edge. "
+          "Each slave id meets each master id in one pair only (a self "
+          "pair 'a, b : a, b' holds a against b; two-pass adds 'b : a'). "
           "Per-pair keys: method, penalty, tangential penalty, mu, "
           "discretization (" +
             discretization_registry().join(" | ") +

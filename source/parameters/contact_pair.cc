@@ -336,11 +336,60 @@ namespace tribos
 
 
 
+    namespace
+    {
+      /** Whether the sets @p a and @p b share an id. */
+      bool
+      meet(const std::set<unsigned int> &a, const std::set<unsigned int> &b)
+      {
+        for (const auto id : a)
+          if (b.count(id) > 0)
+            return true;
+        return false;
+      }
+
+
+
+      /** The smallest id that the sets @p a and @p b share (they meet). */
+      unsigned int
+      first_shared(const std::set<unsigned int> &a,
+                   const std::set<unsigned int> &b)
+      {
+        for (const auto id : a)
+          if (b.count(id) > 0)
+            return id;
+        return 0;
+      }
+
+
+
+      /**
+       * One pass of the contact: the nodes of the slave ids checked
+       * against the faces of the master ids or a rigid surface. An item of
+       * Contact/Pairs is one pass, and with Contact/Passes = two-pass a
+       * deformable pair that is not a self pair a second one, slave and
+       * master swapped (ContactHandler's descriptions). A self pair is one
+       * pass that checks every face of its surface against every other,
+       * in both directions at once.
+       */
+      struct Pass
+      {
+        unsigned int                  item;
+        bool                          second;
+        const std::set<unsigned int> *slave;
+        const std::set<unsigned int> *master;
+      };
+    } // namespace
+
+
+
     /**
      * Refuse pairs of @p contact that repeat an interface: an exact
-     * duplicate would apply its contact twice; the same interface written
-     * twice with slave and master swapped, with a method that holds the
-     * gap exactly, holds the same gap twice.
+     * duplicate would apply its contact twice; two passes that check the
+     * faces of one slave id against those of one master id (or the same
+     * rigid surface) apply that contact twice too; the same interface
+     * written twice with slave and master swapped, with a method that
+     * holds the gap exactly, holds the same gap twice.
      */
     void
     check_interfaces(const Contact &contact)
@@ -362,6 +411,73 @@ namespace tribos
                         "> are the same slave surface against the "
                         "same master: its contact would be "
                         "applied twice. Keep one of them."));
+
+      // Surfaces that only overlap do the same where they overlap: a
+      // slave node on the faces of an id that two passes share, checked
+      // in both against master faces of an id they share, carries its
+      // contact twice (penalty: twice the force, half the penetration the
+      // penalty states). A self pair already holds the contact between
+      // any two of its ids; two-pass adds the swapped pass of a pair, so
+      // that '9 : 10 ; 10 : 9' repeats both directions. A slave node
+      // that two passes share only through a corner (slave ids 9 and
+      // 11 meeting there) is not refused: each pass gives it the area of
+      // its own faces. Nor are two masters for one slave id, or a pair
+      // and its own second pass.
+      std::vector<Pass> passes;
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        passes.push_back(
+          {i, false, &pairs[i].slave_boundary, &pairs[i].master_boundary});
+        if (contact.two_pass && pairs[i].rigid_surface.empty() &&
+            !pairs[i].self_contact())
+          passes.push_back(
+            {i, true, &pairs[i].master_boundary, &pairs[i].slave_boundary});
+      }
+      const auto describe = [&pairs](const Pass &pass)
+      {
+        const ContactPair &pair = pairs[pass.item];
+        std::string        text =
+          "item " + std::to_string(pass.item + 1) + " <" + pair.text + ">";
+        if (pass.second)
+          text += "'s second pass (Contact/Passes = two-pass: the pair "
+                  "with slave and master swapped)";
+        return text;
+      };
+      for (unsigned int a = 0; a < passes.size(); ++a)
+        for (unsigned int b = a + 1; b < passes.size(); ++b)
+        {
+          const Pass        &p = passes[a], &q = passes[b];
+          const ContactPair &first = pairs[p.item], &second = pairs[q.item];
+          if (p.item == q.item || !meet(*p.slave, *q.slave))
+            continue;
+          const bool rigid = !first.rigid_surface.empty();
+          if (rigid ?
+                first.rigid_surface != second.rigid_surface :
+                !second.rigid_surface.empty() || !meet(*p.master, *q.master))
+            continue;
+          const std::string master =
+            rigid ? "the rigid surface " + first.rigid_surface :
+                    "master boundary " +
+                      std::to_string(first_shared(*p.master, *q.master));
+          AssertThrow(
+            false,
+            dealii::ExcMessage(
+              "Parameter <" + pair_entry + ">: " + describe(p) + " and " +
+              describe(q) + " both check slave boundary " +
+              std::to_string(first_shared(*p.slave, *q.slave)) + " against " +
+              master +
+              ": each slave node there would carry that contact twice "
+              "(with penalty twice the force for the same penetration). " +
+              (first.self_contact() || second.self_contact() ?
+                 "A self-contact pair checks every face of its surface "
+                 "against every other, so it holds the contact between "
+                 "any two of its boundary ids already. " :
+                 "") +
+              "Give each slave boundary against each master boundary in "
+              "one pair only: drop the id from one of the two pairs, or "
+              "the pair."));
+        }
+
       // The same interface written twice with slave and master swapped:
       // with multipliers both sets of node-to-segment constraints hold the
       // same gap (a singular saddle-point system). Penalty may sum both.
@@ -369,14 +485,6 @@ namespace tribos
       {
         return contact.enforcement_method(pair.method)
           ->constrains_gap_exactly();
-      };
-      const auto meet =
-        [](const std::set<unsigned int> &a, const std::set<unsigned int> &b)
-      {
-        for (const auto id : a)
-          if (b.count(id) > 0)
-            return true;
-        return false;
       };
       for (unsigned int i = 0; i < pairs.size(); ++i)
         for (unsigned int j = i + 1; j < pairs.size(); ++j)

@@ -24,14 +24,15 @@ namespace tribos
     /**
      * The sets of the parameter Scene/@p entry = @p text: items 'set : id'
      * separated by commas (the id after the last colon, so that a name may
-     * be SURFACE:name or NSET:name). @p kinds and @p example for the
-     * message.
+     * be SURFACE:name or NSET:name). @p kinds, @p example and the
+     * smallest id allowed, @p smallest, for the message.
      */
     std::vector<std::pair<std::string, int>>
     parse_sets(const std::string &text,
                const std::string &entry,
                const std::string &kinds,
-               const std::string &example)
+               const std::string &example,
+               const int          smallest)
     {
       std::vector<std::pair<std::string, int>> sets;
       for (const std::string &item : Text::split_top_level(text, ','))
@@ -53,7 +54,8 @@ namespace tribos
                       "commas, is the name of " +
                       kinds +
                       " of the deck, a colon and its id, an integer "
-                      "from 0 to " +
+                      "from " +
+                      std::to_string(smallest) + " to " +
                       std::to_string(INT_MAX) + ", e.g. '" + example +
                       "'; empty, the deck's sets get ids by default (the "
                       "README's scene abaqus)."));
@@ -109,7 +111,8 @@ namespace tribos
           "all of whose nodes it holds; SURFACE:name or NSET:name where a "
           "surface and a node set share a name). Empty: every surface and "
           "node set that holds boundary faces, ids 1, 2, ... in the deck's "
-          "order (but a set of every node, such as CalculiX's Nall).");
+          "order (but a set of every node, such as CalculiX's Nall). Ids "
+          "from 1: the boundary faces in no set have id 0.");
       }
 
       void
@@ -121,11 +124,28 @@ namespace tribos
         ids.bodies     = parse_sets(body_sets,
                                 "Body sets",
                                 "an element set",
-                                "PLATE : 1, BLOCK : 2");
+                                "PLATE : 1, BLOCK : 2",
+                                0);
         ids.boundaries = parse_sets(boundary_sets,
                                     "Boundary sets",
                                     "a surface or a node set",
-                                    "BOTTOM : 1, TOP : 2");
+                                    "BOTTOM : 1, TOP : 2",
+                                    1);
+        // Boundary id 0 is the faces in no set (the deck's untagged faces,
+        // as a gmsh mesh's, whose physical tags start at 1): a set given 0
+        // would merge with them, and a condition on it would move the
+        // bodies' other sides too.
+        for (const auto &[name, id] : ids.boundaries)
+          AssertThrow(
+            id != 0,
+            ExcMessage("Parameter <Scene/Boundary sets> = <" +
+                       Text::abbreviate(boundary_sets) + ">: the set <" + name +
+                       "> is given boundary id 0, the id of the boundary "
+                       "faces that are in no boundary set (untagged, as in "
+                       "a gmsh mesh): a condition or contact pair on 0 "
+                       "would take those faces too. Give it an id from 1 "
+                       "to " +
+                       std::to_string(INT_MAX) + "."));
         deck.reset();
       }
 

@@ -224,6 +224,22 @@ expect mortar_rigid "needs a deformable master" "$tribos" \
 blocks=$tests/sliding_blocks_3d.prm
 expect duplicate_pair "are the same slave surface against the same master" \
   "$tribos" "$blocks" --set "Contact/Pairs=14 : 5 ; 14 : 5"
+# Pairs that overlap: a self pair holding a pair's two ids, two pairs that
+# share a slave id and a master id, and the swapped pair that two-pass
+# adds a second time (penalty ran them, each contact applied twice).
+expect pair_inside_self_pair "both check slave boundary 12 against master boundary 3" \
+  "$tribos" "$tests/patch_test.prm" --set "Contact/Pairs=3, 12 : 3, 12 ; 12 : 3"
+expect pair_shared_ids "would carry that contact twice" "$tribos" \
+  "$tests/patch_test.prm" --set "Contact/Pairs=12 : 3 ; 12, 13 : 3, 2"
+expect pair_two_pass_swapped "second pass (Contact/Passes = two-pass" \
+  "$tribos" "$tests/patch_test.prm" --set "Contact/Pairs=12 : 3 ; 3 : 12" \
+  --set "Contact/Passes=two-pass"
+# Boundary id 0 of an abaqus deck is its faces in no set: a set given 0
+# merged with them, and a condition on it moved the bodies' sides.
+expect abaqus_boundary_0 "is given boundary id 0" "$tribos" \
+  "$tests/blocks_on_plate.prm" \
+  --set "Scene/Boundary sets=BOTTOM : 0, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4" \
+  --set "Boundary conditions/Dirichlet=0 : xy : 0, 0 ; 2 : xy : 0, -1e-4*t"
 expect extra_body_values "lists 3 values, but the mesh's body ids run from 0 to 1" \
   "$tribos" "$blocks" --set "Materials/Young's modulus=10, 1, 5"
 for value in inf 1e308 nan -inf 1e-308; do

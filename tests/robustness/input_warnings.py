@@ -81,4 +81,14 @@ result = run(tribos, tests + "/patch_test.prm", out + "/self_contact_two_bodies"
               "Contact/Pairs=3, 12 : 3, 12"])
 check("nothing holds" not in result.stderr,
       "a self-contact surface spanning two bodies holds them: no warning")
+# Pairs near the overlapping ones refused (tests/robustness/bad_input.sh)
+# that are legal: with one pass, penalty may sum an interface written both
+# ways; two slave ids that meet at a corner node against one master (each
+# pair gives the node the area of its own faces).
+for name, pairs in (("swapped_one_pass", "12 : 3 ; 3 : 12"),
+                    ("corner_slaves", "12 : 3 ; 10 : 3")):
+    result = run(tribos, tests + "/patch_test.prm", out + "/" + name,
+                 ["Contact/Pairs=" + pairs])
+    check(result.returncode == 0,
+          "Pairs = %s runs (not an overlap)" % pairs)
 finish()

@@ -162,8 +162,16 @@ namespace tribos
     const std::vector<types::material_id> &
     dof_body() const;
 
-    /** Per Dirichlet condition and component, the sum of @p residual (and
-     * of @p inertia if given) over its dofs (collective). */
+    /**
+     * Per Dirichlet condition and component, the sum over its dofs of
+     * @p residual (and of @p inertia if given), the unconstrained forces
+     * of the assembly, after each hanging node's force has gone to its
+     * parents with the weights of its constraint (collective). A hanging
+     * node moves with its parents, so its force acts on them: where a
+     * parent is a support's dof and the hanging node is not (the edge of
+     * a refined region that meets the support), the support carries a
+     * share of it, which the raw residual at the support's dofs misses.
+     */
     std::vector<double>
     reaction_forces(const Vector &residual, const Vector *inertia) const;
 
@@ -241,6 +249,15 @@ namespace tribos
     /** Every process's locally owned dofs. */
     std::vector<IndexSet>     owned_per_process;
     AffineConstraints<double> homogeneous;
+    /**
+     * The hanging nodes' constraints alone, on the locally relevant dofs
+     * (reaction_forces()): without the Dirichlet lines, which would take
+     * the supports' dofs out of the hanging nodes' lines (close() puts
+     * their values in), so that their shares of the forces were lost.
+     */
+    AffineConstraints<double> hanging;
+    /** Whether any process has a hanging node (the same on all). */
+    bool any_hanging = false;
 
     std::vector<std::unique_ptr<FunctionParser<dim>>> dirichlet_functions;
     std::vector<std::vector<IndexSet>>                dirichlet_dofs;

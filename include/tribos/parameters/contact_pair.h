@@ -138,9 +138,13 @@ namespace tribos
 
     /**
      * Refuse pairs of @p contact that repeat an interface: an exact
-     * duplicate would apply its contact twice; the same interface written
-     * twice with slave and master swapped, with a method that holds the
-     * gap exactly, holds the same gap twice.
+     * duplicate would apply its contact twice; so would two passes (the
+     * pairs, the swapped ones Contact/Passes = two-pass adds, a self pair
+     * for all of its ids in both directions) whose slave ids share one and
+     * whose master ids share one, or that name the same rigid surface;
+     * the same interface written twice with slave and master swapped,
+     * with a method that holds the gap exactly, holds the same gap twice.
+     * Needs Contact::two_pass parsed.
      */
     void
     check_interfaces(const Contact &contact);
