@@ -326,12 +326,28 @@ namespace tribos
       pair.description = description;
       pair.enforcement =
         create_enforcement<dim>(description.method, parameters);
-      AssertThrow(pair.enforcement->n_node_unknowns() == 0 ||
-                    !parameters.two_pass,
-                  ExcMessage("Contact/Passes = two-pass with Contact/Method "
-                             "= lagrange multiplier: node-to-segment "
-                             "constraints of both passes over-constrain the "
-                             "interface (singular system). Use one-pass."));
+      // The method and formulation the pair has (its own method= or
+      // Contact/Method): Method = penalty with Penalty formulation = mixed
+      // has the multipliers' unknowns too, and was refused as "Method =
+      // lagrange multiplier", which the input did not say.
+      AssertThrow(
+        pair.enforcement->n_node_unknowns() == 0 || !parameters.two_pass,
+        ExcMessage(
+          "Contact/Passes = two-pass with Contact/Method = " +
+          description.method +
+          (pair.enforcement->uses_normal_penalty() ?
+             " and Contact/Penalty formulation = mixed (pair <" +
+               description.text +
+               ">): two passes are for contact forces that follow from "
+               "the displacements (Penalty formulation = primal, "
+               "augmented lagrangian); the mixed form adds a traction "
+               "unknown per slave node, as Lagrange multipliers do, and "
+               "is one-pass. Use one-pass, or Penalty formulation = "
+               "primal." :
+             " (pair <" + description.text +
+               ">): node-to-segment constraints of both passes "
+               "over-constrain the interface (singular system). Use "
+               "one-pass.")));
       const bool self = description.self_contact();
       pair.slave      = surface(description.slave_boundary);
       double E_s      = std::numeric_limits<double>::max();
@@ -399,8 +415,16 @@ namespace tribos
     {
       for (const auto &w : pair.discretization->setup_warnings())
         warnings.push_back(w);
-      if (pair.enforcement->n_node_unknowns() > 0)
+      // Exact multipliers have no penalty. The penalty law in mixed form
+      // (Penalty formulation = mixed: the tractions as unknowns) has the
+      // primal form's solution: a penalty too soft lets the bodies sink
+      // through each other alike (1e-6 E/h: the block's whole stroke,
+      // exit 0 and no word, where the primal form warned); a stiff one
+      // only approaches exact contact, which its unknowns solve without
+      // the primal form's round-off.
+      if (!pair.enforcement->uses_normal_penalty())
         continue;
+      const bool mixed = pair.enforcement->n_node_unknowns() > 0;
       const auto check = [&](const Parameters::PenaltyValue &penalty,
                              const std::string              &what,
                              const std::string              &entry)
@@ -414,7 +438,7 @@ namespace tribos
           k_min = std::min(k_min, k);
           k_max = std::max(k_max, k);
         }
-        if (k_min < 1e-3 || k_max > 1e8)
+        if (k_min < 1e-3 || (k_max > 1e8 && !mixed))
           warnings.push_back(
             "contact pair <" + pair.description.text + ">: the " + what +
             " is " + to_scientific(k_min) + " to " + to_scientific(k_max) +

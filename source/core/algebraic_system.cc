@@ -2,8 +2,12 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace tribos
 {
@@ -130,6 +134,36 @@ namespace tribos
   AlgebraicSystem::stagnation_residual_bound() const
   {
     return scales.stagnation_bound;
+  }
+
+
+
+  double
+  AlgebraicSystem::residual_round_off() const
+  {
+    const types::global_dof_index n_dofs = layout.locally_owned_dofs.size();
+    const Epetra_CrsMatrix       &A      = matrix.trilinos_matrix();
+    int                           length;
+    double                       *values;
+    int                          *indices;
+    double                        squared = 0;
+    for (int r = 0; r < A.NumMyRows(); ++r)
+    {
+      // Constrained rows are no part of the free residual (a row's
+      // global index is a dof's below n_dofs, a multiplier's above).
+      const types::global_dof_index i = A.RowMap().GID(r);
+      if (i < n_dofs && homogeneous_constraints.is_constrained(i))
+        continue;
+      A.ExtractMyRowView(r, length, values, indices);
+      double sum = 0;
+      for (int k = 0; k < length; ++k)
+        if (types::global_dof_index(A.ColMap().GID(indices[k])) < n_dofs)
+          sum += std::abs(values[k]);
+      squared += sum * sum;
+    }
+    const double position = scales.position + displacement().linfty_norm();
+    return std::numeric_limits<double>::epsilon() * position *
+           std::sqrt(Utilities::MPI::sum(squared, mpi_communicator));
   }
 
 

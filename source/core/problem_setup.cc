@@ -167,7 +167,7 @@ namespace tribos
   Problem<dim>::setup_vectors()
   {
     {
-      double        volume = 0, E_max = 0;
+      double        volume = 0, E_max = 0, position = 0;
       FEValues<dim> fe_values(model.mapping(),
                               model.fe(),
                               model.quadrature(),
@@ -178,6 +178,9 @@ namespace tribos
           continue;
         E_max =
           std::max(E_max, material_state->youngs_modulus(cell->material_id()));
+        for (const auto v : cell->vertex_indices())
+          for (unsigned int d = 0; d < dim; ++d)
+            position = std::max(position, std::abs(cell->vertex(v)[d]));
         fe_values.reinit(cell);
         for (unsigned int q = 0; q < model.quadrature().size(); ++q)
           volume += fe_values.JxW(q) *
@@ -185,8 +188,9 @@ namespace tribos
                        2 * numbers::PI * fe_values.quadrature_point(q)[0] :
                        1.);
       }
-      volume = Utilities::MPI::sum(volume, mpi_communicator);
-      E_max  = Utilities::MPI::max(E_max, mpi_communicator);
+      volume   = Utilities::MPI::sum(volume, mpi_communicator);
+      E_max    = Utilities::MPI::max(E_max, mpi_communicator);
+      position = Utilities::MPI::max(position, mpi_communicator);
       const double exponent =
         parameters.finite_element.axisymmetric ? 2. / 3. : (dim - 1.) / dim;
       Scales round_off;
@@ -196,6 +200,7 @@ namespace tribos
         std::pow(volume,
                  parameters.finite_element.axisymmetric ? 1. / 3. : 1. / dim);
       round_off.traction_floor = 1e-12 * E_max;
+      round_off.position       = position;
       reinit(round_off);
     }
     stabilization_springs.reinit(layout.system_owned,

@@ -1,5 +1,6 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/base/interruption.h>
+#include <tribos/core/model_checks.h>
 #include <tribos/run/simulation.h>
 #include <tribos/scene/scene.h>
 
@@ -131,9 +132,7 @@ namespace tribos
       throw;
     }
 
-    if (problem.contact() != nullptr)
-      for (const auto &w : problem.contact()->run_warnings())
-        warnings.warn(w);
+    end_of_run_warnings();
     output->write_summary("completed", totals());
     const auto        &sums = stepper->totals();
     std::ostringstream line;
@@ -271,10 +270,28 @@ namespace tribos
   void
   Simulation<dim>::failed(const std::string &reason)
   {
-    if (problem.contact() != nullptr)
-      for (const auto &w : problem.contact()->run_warnings())
-        warnings.warn(w);
+    end_of_run_warnings();
     output->write_summary("FAILED: " + reason, totals());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulation<dim>::end_of_run_warnings()
+  {
+    if (problem.contact() == nullptr)
+      return;
+    for (const auto &w : problem.contact()->run_warnings())
+      warnings.warn(w);
+    // Unloaded by the parameters, a model is loaded by its contact only
+    // where bodies were meshed overlapping: a contact force above the
+    // round-off bound (a stress of 1e-10 E_max on the model's area; two
+    // bodies that merely touch carry round-off) says it was.
+    const std::string unloaded = nothing_loads_warning(parameters);
+    if (!unloaded.empty() && problem.contact_forces().linfty_norm() <=
+                               problem.stagnation_residual_bound())
+      warnings.warn(unloaded);
   }
 
 

@@ -125,10 +125,14 @@ namespace tribos
       MshFile::Node node{label(tokens[0], "a node label"), {{0, 0, 0}}, 0};
       node.line = at.line;
       for (std::size_t k = 1; k < tokens.size(); ++k)
-        if (!tokens[k].empty() &&
-            !ReaderText::parse_finite(tokens[k], node.x[k - 1]))
-          fail(ReaderText::quote(tokens[k]) +
-               " where a coordinate is expected (a finite number)");
+        if (!tokens[k].empty())
+        {
+          if (!ReaderText::parse_finite(tokens[k], node.x[k - 1]))
+            fail(ReaderText::quote(tokens[k]) +
+                 " where a coordinate is expected (a finite number)");
+          if (!ReaderText::coordinate_in_range(node.x[k - 1]))
+            fail(ReaderText::coordinate_out_of_range(tokens[k]));
+        }
       const auto [it, inserted] =
         node_of.emplace(node.tag, deck.mesh.nodes.size());
       if (!inserted)
@@ -237,6 +241,15 @@ namespace tribos
         if (last < first)
           fail("GENERATE from " + str(first) + " to " + str(last) +
                ": the first label must not exceed the last");
+        // An increment beyond the range generates the first label alone:
+        // the set lost the rest silently, and a boundary set of no face
+        // shifted the default ids of the sets after it, reported as a
+        // Contact/Pairs or Dirichlet id that the scene does not have.
+        if (step > last - first && last > first)
+          fail("GENERATE from " + str(first) + " to " + str(last) + " by " +
+               str(step) + ": the increment exceeds the range, so the set " +
+               "would hold label " + str(first) + " alone (the increment " +
+               "steps from the first label to the last)");
         // Each label must be defined, so that the loop ends within as
         // many steps as there are nodes or elements.
         for (std::uint64_t l = first;; l += step)

@@ -140,7 +140,11 @@ namespace tribos
             tags.push_back(listed_tag(s, h, "node"));
           MshFile::Node node{tags[mesh.nodes.size()], {{0, 0, 0}}, line_no};
           for (unsigned int k = 0; k < 3; ++k)
+          {
             node.x[k] = number(k + !version4, "a coordinate");
+            if (!ReaderText::coordinate_in_range(node.x[k]))
+              fail(ReaderText::coordinate_out_of_range(tokens[k + !version4]));
+          }
           for (std::size_t k = 3 + !version4; k < n_numbers; ++k)
             number(k, "a parametric coordinate");
           mesh.nodes.push_back(node);

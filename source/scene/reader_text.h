@@ -7,6 +7,8 @@
  * parse numbers and quote a file's text for their messages the same way.
  */
 
+#include <tribos/base/text.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -71,6 +73,27 @@ namespace tribos
         return false;
 #endif
       return std::isfinite(value);
+    }
+
+    /**
+     * Whether a node's coordinate @p value is within the input's range,
+     * |value| <= Text::largest_value (1e150, the README's bound on every
+     * number of the input): the geometry multiplies coordinates (lengths,
+     * areas, Jacobians), and x = 1e300 overflowed there, to a cell
+     * reported as degenerate without a word of the number or its line.
+     */
+    inline bool
+    coordinate_in_range(const double value)
+    {
+      return std::abs(value) <= Text::largest_value;
+    }
+
+    /** The message of a coordinate @p s out of that range. */
+    inline std::string
+    coordinate_out_of_range(const std::string_view s)
+    {
+      return quote(s) + " is out of range for a coordinate (numbers of the "
+                        "input are at most 1e150 in magnitude)";
     }
   } // namespace internal::ReaderText
 } // namespace tribos

@@ -10,15 +10,122 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace tribos
 {
+  namespace
+  {
+    /** MUMPS's own report of a failed phase: INFOG(1) and INFOG(2). */
+    struct MumpsError
+    {
+      int infog1 = 0;
+      int infog2 = 0;
+
+      /**
+       * Whether MUMPS ran out of a workspace it sized from ICNTL(14)
+       * (MUMPS 5 user's guide, "Error diagnostics": -8, -14 and -15 the
+       * integer workspace IS, -9 the real workspace S, -17 and -20 the
+       * send and reception buffers); for each the guide's remedy is a
+       * larger ICNTL(14). Not -13: a failed allocation, which more
+       * workspace makes worse.
+       */
+      bool
+      out_of_workspace() const
+      {
+        return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 ||
+               infog1 == -17 || infog1 == -20;
+      }
+
+      /** For the message: the codes and what the guide says of them. */
+      std::string
+      describe() const
+      {
+        std::string meaning;
+        switch (infog1)
+        {
+          case -5:
+          case -7:
+          case -13:
+            meaning = "a workspace could not be allocated (out of memory)";
+            break;
+          case -6:
+            meaning = "the matrix is structurally singular (INFOG(2): its "
+                      "structural rank)";
+            break;
+          case -10:
+            meaning = "the matrix is numerically singular (INFOG(2): the "
+                      "pivots eliminated)";
+            break;
+          default:
+            meaning = out_of_workspace() ?
+                        "a workspace too small for the factorization "
+                        "(ICNTL(14))" :
+                        "see the MUMPS user's guide, error diagnostics";
+        }
+        return "MUMPS INFOG(1) = " + std::to_string(infog1) +
+               ", INFOG(2) = " + std::to_string(infog2) + ": " + meaning;
+      }
+    };
+
+
+
+    /**
+     * Standard error captured while it lives: Amesos_Mumps prints every
+     * failed phase ("Amesos_Mumps : ERROR", INFOG(1), ...) whether or not
+     * a retry with more workspace then succeeds; solve_amesos() reports
+     * what failed in the end itself.
+     */
+    class QuietAmesos
+    {
+    public:
+      QuietAmesos()
+        : old(std::cerr.rdbuf(captured.rdbuf()))
+      {
+      }
+
+      ~QuietAmesos()
+      {
+        std::cerr.rdbuf(old);
+      }
+
+    private:
+      std::ostringstream captured;
+      std::streambuf    *old;
+    };
+
+
+
+    /**
+     * The error of @p mumps's last phase, on every process of
+     * @p communicator: INFOG is defined on the host only (the first
+     * process; the others may not even be among MUMPS's processes, which
+     * Amesos limits for small matrices).
+     */
+    MumpsError
+    mumps_error(Amesos_Mumps &mumps, const MPI_Comm communicator)
+    {
+      int codes[2] = {0, 0};
+      if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        codes[0] = mumps.GetINFOG()[0];
+        codes[1] = mumps.GetINFOG()[1];
+      }
+      MPI_Bcast(codes, 2, MPI_INT, 0, communicator);
+      return {codes[0], codes[1]};
+    }
+  } // namespace
+
+
+
   struct LinearSolver::Amesos
   {
     Epetra_LinearProblem               problem;
@@ -111,8 +218,8 @@ namespace tribos
       solve_iterative(matrix, pattern_version, x, rhs, tolerance);
       return;
     }
-    const bool serial =
-      Utilities::MPI::n_mpi_processes(matrix.get_mpi_communicator()) == 1;
+    const bool serial = dealii::Utilities::MPI::n_mpi_processes(
+                          matrix.get_mpi_communicator()) == 1;
     const std::string name = parameters.direct_solver_for(serial);
     if (name == "suitesparse")
     {
@@ -211,6 +318,22 @@ namespace tribos
                              const Vector       &rhs,
                              const std::string  &name)
   {
+    // Every process takes the same branch: Amesos_Lapack, for one,
+    // reports a failed factorization on its first process only, and a
+    // process that skipped Solve() would leave the others waiting in it.
+    const MPI_Comm communicator = matrix.get_mpi_communicator();
+    const auto     failed       = [&](const int code)
+    {
+      return dealii::Utilities::MPI::max(code != 0 ? 1 : 0, communicator) > 0;
+    };
+    // What MUMPS says of a failed phase, for the message (collective).
+    const auto mumps_report = [&](Amesos_Mumps *mumps)
+    {
+      return mumps != nullptr ?
+               " (" + mumps_error(*mumps, communicator).describe() + ")" :
+               std::string();
+    };
+
     // The symbolic factorization once per pattern (and matrix object),
     // the numeric one at every solve.
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
@@ -224,34 +347,69 @@ namespace tribos
       AssertThrow(amesos->solver != nullptr,
                   ExcMessage("Linear solver/Direct solver = <" + name +
                              ">: Trilinos has no such Amesos solver."));
+      auto *const mumps = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
+      // The workspace that an earlier factorization needed.
+      if (mumps != nullptr)
+        mumps->SetICNTL(14, mumps_workspace_percent);
       amesos->name    = name;
       amesos->matrix  = &A;
       amesos->version = pattern_version;
-      if (Utilities::MPI::max(amesos->solver->SymbolicFactorization() != 0 ? 1 :
-                                                                             0,
-                              matrix.get_mpi_communicator()) > 0)
+      if (failed(amesos->solver->SymbolicFactorization()))
       {
+        const std::string report = mumps_report(mumps);
         amesos.reset();
         throw NonConvergence("the direct solver " + name +
-                             " failed in its symbolic factorization");
+                             " failed in its symbolic factorization" + report);
       }
     }
     amesos->problem.SetLHS(
       static_cast<Epetra_MultiVector *>(&x.trilinos_vector()));
     amesos->problem.SetRHS(const_cast<Epetra_MultiVector *>(
       static_cast<const Epetra_MultiVector *>(&rhs.trilinos_vector())));
-    // Every process takes the same branch: Amesos_Lapack, for one,
-    // reports a failed factorization on its first process only, and a
-    // process that skipped Solve() would leave the others waiting in it.
-    const MPI_Comm communicator = matrix.get_mpi_communicator();
-    const auto     failed       = [&](const int code)
+
+    // MUMPS sizes the workspace of its factorization from the analysis's
+    // estimate plus ICNTL(14) percent. Pivoting on the multipliers' zero
+    // diagonal, chosen for the values the analysis saw, can outgrow that
+    // (INFOG(1) = -9: every increment of a 2 x 2 x 1 block with friction
+    // under -np 2 was cut back as a "singular system"). Each retry doubles
+    // the workspace, to at most about 50 times the estimate; Amesos hands
+    // ICNTL over to MUMPS in its analysis only, so a retry analyses again
+    // (with the current values: a pivot order of their own too).
+    constexpr int most_workspace_percent = 5000;
+    auto *const   mumps = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
+    const auto    factorize = [&]()
     {
-      return Utilities::MPI::max(code != 0 ? 1 : 0, communicator) > 0;
+      const QuietAmesos quiet;
+      return amesos->solver->NumericFactorization();
     };
-    if (failed(amesos->solver->NumericFactorization()) ||
-        failed(amesos->solver->Solve()))
+    while (failed(factorize()))
+    {
+      if (mumps == nullptr)
+        throw NonConvergence("the direct solver " + name +
+                             " failed (singular system?)");
+      const MumpsError error = mumps_error(*mumps, communicator);
+      if (!error.out_of_workspace() ||
+          mumps_workspace_percent >= most_workspace_percent)
+        throw NonConvergence(
+          "the direct solver " + name + " failed (" + error.describe() +
+          (error.out_of_workspace() ?
+             ", with ICNTL(14) = " + std::to_string(mumps_workspace_percent) :
+             std::string()) +
+          ")");
+      mumps_workspace_percent =
+        std::min(2 * mumps_workspace_percent + 100, most_workspace_percent);
+      mumps->SetICNTL(14, mumps_workspace_percent);
+      if (failed(amesos->solver->SymbolicFactorization()))
+      {
+        const std::string report = mumps_report(mumps);
+        amesos.reset();
+        throw NonConvergence("the direct solver " + name +
+                             " failed in its symbolic factorization" + report);
+      }
+    }
+    if (failed(amesos->solver->Solve()))
       throw NonConvergence("the direct solver " + name +
-                           " failed (singular system?)");
+                           " failed in its solve" + mumps_report(mumps));
   }
 
 

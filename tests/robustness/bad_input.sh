@@ -158,6 +158,12 @@ expect contact_q2_axisymmetric_standard "Mortar basis = standard is not availabl
 expect contact_lagrange_two_pass "Contact/Passes = two-pass" "$tribos" \
   "$contact" --set "Contact/Method=lagrange multiplier" \
   --set "Contact/Passes=two-pass"
+# The mixed penalty has the multipliers' unknowns: refused by its own
+# name (it was refused as "Method = lagrange multiplier").
+expect contact_mixed_penalty_two_pass \
+  "Contact/Method = penalty and Contact/Penalty formulation = mixed" \
+  "$tribos" "$contact" --set "Contact/Penalty formulation=mixed" \
+  --set "Contact/Passes=two-pass"
 # 3D masters are smoothed for node to segment; 3D mortar keeps the slave's
 # normals.
 expect contact_smoothing_3d_mortar "with Discretization = mortar is available in Dimension = 2 only" \

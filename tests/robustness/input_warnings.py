@@ -1,11 +1,13 @@
 """Suspicious but legal input runs (exit status 0) and warns on stderr and in
 summary.txt, naming the entry: a parameter file that sets nothing; a
-penalty below 1e-3 E/h or above 1e8 E/h (relative or absolute); a contact
+penalty below 1e-3 E/h or above 1e8 E/h (relative or absolute; the mixed
+form's below only); a contact
 pair whose slave never comes within the search distance of its master;
 a self-contact surface no node of which faces a face of it within the
 search distance;
 a model that nothing loads (no load, no nonzero Dirichlet value, no moving
-rigid surface); a body without support or contact surface.
+rigid surface; with contact pairs judged at the run's end, so that bodies
+meshed overlapping are not); a body without support or contact surface.
 Sensible input warns about nothing."""
 
 import sys
@@ -26,6 +28,12 @@ cases = [
     ("soft_tangential_penalty", block,
      ["Contact/Tangential penalty factor=1e-5*E/h"],
      "Contact/Tangential penalty factor"),
+    # The mixed form solves the same penalty law: 1e-6 E/h let the block
+    # sink through its whole stroke without a word.
+    ("soft_mixed_penalty", block,
+     ["Contact/Penalty formulation=mixed",
+      "Contact/Penalty factor=1e-6*E/h"],
+     "Contact/Penalty factor"),
     # Issue 47: nothing loads or prescribes anything (ran to "completed"
     # silently before); a body that nothing holds.
     ("nothing_loaded", tests + "/ironing_2d.prm",
@@ -69,6 +77,26 @@ for name, prm, sets, expected in cases:
     check(result.returncode == 0 and any(expected in w for w in warnings) and
           expected in summary,
           "%s: runs, warns <%s>" % (name, warnings[0] if warnings else ""))
+
+# Bodies meshed overlapping are loaded by their contact: the 2D Abaqus
+# deck with its block lowered by 0.01 and both sets held in place (a
+# contact force of about 1.4e3) warned that nothing loads the model.
+lines, in_nodes = [], False
+for line in open(tests + "/blocks_on_plate.inp").read().split("\n"):
+    if line.startswith("*"):
+        in_nodes = line.upper().startswith("*NODE")
+    f = [x.strip() for x in line.split(",")]
+    if in_nodes and len(f) == 3 and f[0].isdigit() and int(f[0]) > 100:
+        line = "%s, %s, %r" % (f[0], f[1], float(f[2]) - 0.01)
+    lines.append(line)
+overlap = out + "/overlap.inp"
+with open(overlap, "w") as f:
+    f.write("\n".join(lines))
+result = run(tribos, tests + "/blocks_on_plate.prm", out + "/overlap",
+             ["Scene/Input deck=" + overlap,
+              "Boundary conditions/Dirichlet=1 : xy : 0, 0 ; 2 : xy : 0, 0"])
+check("nothing loads" not in result.stderr,
+      "a meshed overlap is loaded by its contact: no 'nothing loads' warning")
 
 result = run(tribos, block, out + "/sensible")
 check("WARNING" not in result.stderr and

@@ -4,7 +4,9 @@ no output; nothing crashes, hangs or reports "unknown exception" (deal.II's
 reader and libgmsh crashed, hung or silently changed the mesh on several
 of these). Legal files the earlier readers failed on run: MSH 4.1 node
 tags of 2^31 and more give the same result as small tags. A second-order
-mesh runs with Q2 by default (Polynomial degree = as meshed).
+mesh runs with Q2 by default (Polynomial degree = as meshed). A node
+coordinate beyond the input's range (1e300) is refused as such, at its
+line (it was reported as a degenerate cell).
 
 Each case is the two squares of tests/data/two_squares.msh (two bodies side by
 side, uniaxial tension: the exact reaction is 0.015) written with one
@@ -149,6 +151,11 @@ refused("huge_count", msh2(n_nodes=10**18),
 refused("nan_coordinate",
         msh2(nodes=NODES[:4] + ["5 nan 1 0"] + NODES[5:]),
         "where a coordinate is expected (a finite number)")
+# A coordinate beyond the input's range (1e150) overflowed the geometry
+# and was reported as a degenerate cell at the element's line.
+refused("huge_coordinate",
+        msh2(nodes=NODES[:4] + ["5 1e300 1 0"] + NODES[5:]),
+        "huge_coordinate.msh:10: '1e300' is out of range for a coordinate")
 refused("zero_area",
         msh2(nodes=NODES[:4] + ["5 1 0 0", "6 2 0 0"]),
         "is degenerate (zero area")

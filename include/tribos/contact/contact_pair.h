@@ -166,7 +166,9 @@ namespace tribos
 
   /**
    * Warnings about @p pairs known after setup: a normal or tangential
-   * penalty below 1e-3 E/h or above 1e8 E/h at some slave node.
+   * penalty below 1e-3 E/h or above 1e8 E/h at some slave node (in the
+   * mixed form below 1e-3 E/h only: a stiff penalty is no round-off
+   * problem there).
    */
   template <int dim>
   std::vector<std::string>

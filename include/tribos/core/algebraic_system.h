@@ -43,6 +43,10 @@ namespace tribos
        * (axisymmetric: V with the ring factor, A = V^(2/3)).
        */
       double stagnation_bound = 0;
+      /** The largest magnitude of a coordinate of the reference mesh: the
+       * positions' scale for the residual's round-off
+       * (residual_round_off()). */
+      double position = 0;
     };
 
     /** The linear solver that holds on to the system matrix (released
@@ -96,6 +100,21 @@ namespace tribos
      * (collective). */
     void
     reinit(const Scales &scales);
+
+    /**
+     * The round-off level of the free residual assembled with the current
+     * matrix (collective): eps |x| times the l2 norm, over the free rows,
+     * of sum_j |A_ij| over the displacement columns, |x| the largest
+     * position (Scales::position plus the largest displacement). A row's
+     * terms that evaluate positions, as a contact gap x_s - x_m does, carry
+     * eps |x| times their stiffness whatever the forces; the bulk's, from
+     * displacement gradients, carry less, so this bounds the level rather
+     * than matching it. Eps times the forces missed the contact's round-off
+     * by orders of magnitude: a stiff penalty's gap of round-off size is
+     * a force.
+     */
+    double
+    residual_round_off() const;
 
     /** The dof part (the first n_dofs entries) of the system vector
      * @p system into @p ghosted (a vector on the locally relevant dofs).

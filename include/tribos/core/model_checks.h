@@ -7,6 +7,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 
+#include <string>
+
 namespace tribos
 {
   using namespace dealii;
@@ -42,8 +44,21 @@ namespace tribos
                       const Triangulation<dim>        &triangulation,
                       Warnings                        &warnings);
 
-  /** Warnings about the model's support: nothing loads it, or a body that
-   * nothing holds (statics). Collective over the mesh's communicator. */
+  /**
+   * The warning that nothing in @p parameters loads the model (no Neumann
+   * load, no body force, no Dirichlet value other than 0, no moving rigid
+   * surface, no dynamics), or an empty string where something does.
+   */
+  std::string
+  nothing_loads_warning(const Parameters::AllParameters &parameters);
+
+  /**
+   * Warnings about the model's support: nothing loads it (without contact
+   * pairs: with them, bodies meshed overlapping are loaded by their
+   * contact, which only the run shows; Simulation warns at its end if no
+   * contact force exceeds round-off), or a body that nothing holds
+   * (statics). Collective over the mesh's communicator.
+   */
   template <int dim>
   void
   support_warnings(const Parameters::AllParameters &parameters,

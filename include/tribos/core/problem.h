@@ -258,6 +258,9 @@ namespace tribos
 
     /** The current increment's end time. */
     double time = 0;
+    /** The residual's round-off level at the last assembly with a matrix
+     * (residual_round_off()): a residual-only assembly reports it too. */
+    double residual_floor = 0;
     /** The springs (they read the Model's dof maps). */
     Stabilization<dim> stabilization_springs;
     /** The contact's counters of this attempt and of the last committed

@@ -128,6 +128,16 @@ namespace tribos
     RunTotals
     totals() const;
 
+    /**
+     * The warnings the run's end knows (collective): contact pairs whose
+     * slave never came near, and a model with contact pairs that nothing
+     * loaded, its contact forces at round-off (support_warnings() leaves
+     * that to the run: bodies meshed overlapping are loaded by their
+     * contact).
+     */
+    void
+    end_of_run_warnings();
+
     /** Write the converged state after nominal @p step into
      * @p directory. */
     void

@@ -217,6 +217,15 @@ namespace tribos
     types::global_dof_index          first_multiplier = 0;
     unsigned int                     multiplier_block = 0;
     std::string                      last;
+    /**
+     * MUMPS's ICNTL(14): the percentage by which its factorization's
+     * workspace exceeds the estimate of its analysis (MUMPS's default 20).
+     * Numerical pivoting on the zero diagonal of the multipliers' rows can
+     * need more than that (INFOG(1) = -9 on a 2 x 2 x 1 block with
+     * friction, -np 2): solve_amesos() then raises it and factorizes again,
+     * and the later factorizations keep the raised value.
+     */
+    int mumps_workspace_percent = 20;
 
     /** Amesos: the solver, its problem and the pattern it analysed. */
     struct Amesos;

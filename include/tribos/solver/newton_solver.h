@@ -26,6 +26,11 @@ namespace tribos
    *   accepted as stagnation only when the residual is below the problem's
    *   stagnation bound, so that a tiny correction against a large
    *   displacement does not pass off an unconverged iterate;
+   * - so is a correction within the round-off of the positions (the
+   *   problem's length floor) while the residual is within ten times its
+   *   round-off level (NonlinearProblem::Residual::floor) and the bound:
+   *   where the contact's round-off exceeds the relative tolerance (a
+   *   stiff penalty on second-order faces), no iterate meets it;
    * - the problem has the last word at every converged iterate
    *   (NonlinearProblem::at_convergence()).
    *

@@ -53,6 +53,15 @@ namespace tribos
       /** l2 norm of the unconstrained residual f_int - f_ext (essentially
        * the reactions): the force scale of the relative test. */
       double force_scale = 0;
+      /**
+       * The round-off level of free, below which no iterate's residual
+       * goes: the problem's estimate from its last tangent (0: none).
+       * Contact evaluates gaps as differences of positions, so a stiff
+       * penalty's rows carry eps |x| times their stiffness, far above eps
+       * times the forces, and they set it (C3D20 with mortar at 1000 E/h:
+       * 1.2e-7, above the relative tolerance's 5e-8).
+       */
+      double floor = 0;
     };
 
     /** A norm per kind of unknown. */
@@ -142,8 +151,9 @@ namespace tribos
     change_scale() const = 0;
 
     /**
-     * Absolute floors below which a norm is round-off (per kind), and the
-     * residual below which round-off stagnation may be accepted.
+     * Absolute floors below which a norm of the unknowns is round-off (per
+     * kind; the displacements': of the positions), and the residual below
+     * which round-off stagnation may be accepted.
      */
     virtual Norms
     round_off_floor() const = 0;
