@@ -67,8 +67,11 @@ namespace
     {
       return {128 + signal.signal_number(),
               std::string("INTERRUPTED: ") + signal.what() +
-                "; summary.txt says so, outputs of the converged steps are "
-                "kept"};
+                (signal.in_setup() ?
+                   "; nothing was written (the output directory is as it "
+                   "was)" :
+                   "; summary.txt says so, outputs of the converged steps "
+                   "are kept")};
     }
     catch (const dealii::ExceptionBase &error)
     {
@@ -308,7 +311,8 @@ main(int argc, char **argv)
   const bool       root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   FailureHandshake handshake;
   // SIGTERM and SIGINT stop the run between Newton iterations with a
-  // summary (after MPI's start, which may install handlers of its own).
+  // summary, or between the stages of its setup before any output (after
+  // MPI's start, which may install handlers of its own).
   tribos::Interruption::install();
 
   try

@@ -19,9 +19,11 @@ namespace tribos
 
 
 
-  Interrupted::Interrupted(const int signal_number)
-    : std::runtime_error("interrupted by " + name(signal_number))
+  Interrupted::Interrupted(const int signal_number, const bool in_setup)
+    : std::runtime_error("interrupted by " + name(signal_number) +
+                         (in_setup ? " during the setup" : ""))
     , number(signal_number)
+    , setup(in_setup)
   {
   }
 
@@ -58,13 +60,34 @@ namespace tribos
 
 
 
+    namespace
+    {
+      /** The signal noted on any process of @p communicator, or 0. */
+      int
+      any_signal(const MPI_Comm communicator)
+      {
+        int here = pending_signal, any = 0;
+        MPI_Allreduce(&here, &any, 1, MPI_INT, MPI_MAX, communicator);
+        return any;
+      }
+    } // namespace
+
+
+
     void
     check(const MPI_Comm communicator)
     {
-      int here = pending_signal, any = 0;
-      MPI_Allreduce(&here, &any, 1, MPI_INT, MPI_MAX, communicator);
-      if (any != 0)
+      if (const int any = any_signal(communicator))
         throw Interrupted(any);
+    }
+
+
+
+    void
+    check_setup(const MPI_Comm communicator)
+    {
+      if (const int any = any_signal(communicator))
+        throw Interrupted(any, true);
     }
   } // namespace Interruption
 } // namespace tribos

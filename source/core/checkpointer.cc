@@ -7,6 +7,7 @@
  */
 
 #include <tribos/base/exceptions.h>
+#include <tribos/base/text.h>
 #include <tribos/core/checkpointer.h>
 #include <tribos/material/material_model.h>
 
@@ -16,14 +17,81 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace tribos
 {
   namespace
   {
     using CellKey = std::array<unsigned int, 4>;
+
+    /**
+     * The entries a restart may change (Checkpointer::may_change_at_restart();
+     * "Section/": all of its entries). Time stepping's entries here size the
+     * increments; its integrator's (Integrator, Newmark beta, ..., Initial
+     * velocity) define the model and are compared.
+     */
+    constexpr const char *may_change[] = {
+      "Time stepping/End time",
+      "Time stepping/Number of steps",
+      "Time stepping/Maximum cutbacks",
+      "Time stepping/Growth factor",
+      "Time stepping/Easy iterations",
+      "Time stepping/Growth after converged increments",
+      "Time stepping/Extrapolation",
+      "Nonlinear solver/",
+      "Linear solver/",
+      "Parallel/",
+      "Output/",
+      "Verification/",
+      "Scene/Mesh file",
+      "Scene/Input deck"};
+
+    /**
+     * @p text as compared: blanks around the separators , ; : = ( ) and
+     * repeated blanks dropped, and every item that is a number in one form
+     * (0.3, 0.30 and 3e-1 alike), so that an entry written otherwise but
+     * with the same meaning is the same. Expressions and names stay as
+     * written.
+     */
+    std::string
+    comparable(const std::string &text)
+    {
+      std::string result, item;
+      const auto  flush = [&]()
+      {
+        std::istringstream words(item);
+        std::string        word, collapsed;
+        while (words >> word)
+          collapsed += (collapsed.empty() ? "" : " ") + word;
+        char        *end   = nullptr;
+        const double value = std::strtod(collapsed.c_str(), &end);
+        if (!collapsed.empty() && end == collapsed.c_str() + collapsed.size() &&
+            std::isfinite(value))
+        {
+          std::ostringstream number;
+          number.precision(17);
+          number << value;
+          collapsed = number.str();
+        }
+        result += collapsed;
+        item.clear();
+      };
+      for (const char c : text)
+        if (std::string(",;:=()").find(c) != std::string::npos)
+        {
+          flush();
+          result += c;
+        }
+        else
+          item += c;
+      flush();
+      return result;
+    }
 
     /** CellId order on the binary form. */
     bool
@@ -246,8 +314,57 @@ namespace tribos
 
 
   template <int dim>
+  bool
+  Checkpointer<dim>::may_change_at_restart(const std::string &path)
+  {
+    for (const char *entry : may_change)
+    {
+      const std::string allowed(entry);
+      // "Section/" allows the whole subsection.
+      if (allowed.back() == '/' ?
+            path.compare(0, allowed.size(), allowed) == 0 :
+            path == allowed)
+        return true;
+    }
+    return false;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Checkpointer<dim>::may_change_at_restart_list()
+  {
+    std::string list;
+    for (const char *entry : may_change)
+      list += (list.empty() ? "" : ", ") + std::string(entry) +
+              (std::string(entry).back() == '/' ? "*" : "");
+    return list;
+  }
+
+
+
+  template <int dim>
   std::map<std::string, std::string>
   Checkpointer<dim>::fingerprint() const
+  {
+    std::map<std::string, std::string> fingerprint;
+    for (const auto &[path, entry] : parameters.entries)
+      if (!may_change_at_restart(path))
+        fingerprint[path] = entry.value;
+    // The parsed material constants replace their entries' text (the same
+    // numbers written otherwise are the same model), and each pair's
+    // method and discretization is named: format 4 compared these alone.
+    for (const auto &[name, value] : format_4_fingerprint())
+      fingerprint[name] = value;
+    return fingerprint;
+  }
+
+
+
+  template <int dim>
+  std::map<std::string, std::string>
+  Checkpointer<dim>::format_4_fingerprint() const
   {
     const auto &m    = parameters.materials;
     const auto  list = [](const auto &values)
@@ -358,19 +475,6 @@ namespace tribos
     require(c.dofs_per_cell, model.fe().n_dofs_per_cell(), "dofs per cell");
     require(c.n_dofs, model.dof_handler().n_dofs(), "dofs");
     require(c.n_multipliers, layout.n_multipliers, "contact multipliers");
-    // The same sizes on another geometry or other materials would restart
-    // a state that does not belong to the model.
-    for (const auto &[name, value] : fingerprint())
-    {
-      const auto stored = c.fingerprint.find(name);
-      AssertThrow(stored != c.fingerprint.end() && stored->second == value,
-                  ExcMessage(
-                    where + "the checkpoint was written with " + name + " <" +
-                    (stored == c.fingerprint.end() ? "" : stored->second) +
-                    ">, this run has <" + value +
-                    ">: restart with the parameter file of the run "
-                    "that wrote it."));
-    }
     for (const auto &[name, value] : geometry_moments())
     {
       const auto   stored = c.geometry.find(name);
@@ -390,6 +494,46 @@ namespace tribos
                              "with the scene and mesh of the run that wrote "
                              "it."));
     }
+    // The same sizes with another model (materials, friction, contact
+    // discretization, adaptivity, ...) would go on from a state that does
+    // not belong to it: exit 0 and another history (it did for Adaptivity/
+    // Maximum level and Contact/Friction coefficient). Each entry that
+    // differs is named with both values.
+    std::vector<std::string> changed;
+    for (const auto &[name, value] : fingerprint())
+    {
+      const auto  stored = c.fingerprint.find(name);
+      std::string there;
+      if (stored != c.fingerprint.end())
+        there = stored->second;
+      else
+      {
+        // An entry that the checkpoint's tribos did not have: that run
+        // did what its default does.
+        const auto entry = parameters.entries.find(name);
+        if (entry != parameters.entries.end())
+          there = entry->second.default_value;
+      }
+      if (comparable(there) != comparable(value))
+        changed.push_back(name + " <" + Text::abbreviate(there) + "> there, <" +
+                          Text::abbreviate(value) + "> here");
+    }
+    if (!changed.empty())
+    {
+      std::string list;
+      for (const auto &line : changed)
+        list += (list.empty() ? "" : "; ") + line;
+      AssertThrow(false,
+                  ExcMessage(where + "the checkpoint was written with " +
+                             (changed.size() == 1 ?
+                                std::string("another value of an entry") :
+                                std::to_string(changed.size()) +
+                                  " other values of entries") +
+                             " that define the model: " + list +
+                             ". Restart with the parameter file of the run "
+                             "that wrote it; a restart may change only " +
+                             may_change_at_restart_list() + "."));
+    }
     AssertThrow(c.stepper.time < parameters.time_stepping.end_time,
                 ExcMessage(where + "the checkpoint is at t = " +
                            to_scientific(c.stepper.time) +
@@ -403,6 +547,27 @@ namespace tribos
                            std::to_string(parameters.time_stepping.n_steps) +
                            " (Time stepping/Number of steps): nothing is "
                            "left to do."));
+    // A restart may change End time and Number of steps, which place the
+    // steps' ends (step k ends at k End time / Number of steps): the next
+    // one must lie after the checkpoint's time, or the steps up to it would
+    // be reported with nothing done.
+    const auto  &ts       = parameters.time_stepping;
+    const double next_end = (c.stepper.step + 1) * (ts.end_time / ts.n_steps);
+    AssertThrow(next_end > c.stepper.time + 1e-12 * ts.end_time,
+                ExcMessage(where + "the checkpoint is at step " +
+                           std::to_string(c.stepper.step) +
+                           ", t = " + to_scientific(c.stepper.time) +
+                           "; with Time stepping/End time = " +
+                           to_scientific(ts.end_time) +
+                           " and Number of steps "
+                           "= " +
+                           std::to_string(ts.n_steps) + " step " +
+                           std::to_string(c.stepper.step + 1) +
+                           " would end "
+                           "at t = " +
+                           to_scientific(next_end) +
+                           ", not after it: keep the step size of the run "
+                           "that wrote it or make it larger."));
     AssertThrow(c.cell_values.count("velocity") ==
                   (problem.dynamics() != nullptr ? 1 : 0),
                 ExcMessage(where +

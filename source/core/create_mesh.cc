@@ -154,7 +154,7 @@ namespace tribos
       const unsigned int n_ranks =
         Utilities::MPI::n_mpi_processes(mpi_communicator);
       // Collective, so before the first process builds the scene.
-      const double       memory = machines_memory(mpi_communicator);
+      const double       memory = run_memory(mpi_communicator);
       Triangulation<dim> serial;
       CurvedCells<dim>   serial_curved;
       std::string        error;
@@ -281,7 +281,7 @@ namespace tribos
                           parallel::TriangulationBase<dim> &triangulation)
     {
       const MPI_Comm     mpi_communicator = triangulation.get_communicator();
-      const double       memory           = machines_memory(mpi_communicator);
+      const double       memory           = run_memory(mpi_communicator);
       Triangulation<dim> serial;
       CurvedCells<dim>   curved;
       create_scene(parameters,
@@ -371,7 +371,7 @@ namespace tribos
       create_adaptive_scene(parameters, triangulation);
     else if (parameters.parallel.mesh == Parameters::Parallel::Mesh::shared)
     {
-      const double memory = machines_memory(mpi_communicator);
+      const double memory = run_memory(mpi_communicator);
       create_scene(parameters,
                    triangulation,
                    curved_cells,

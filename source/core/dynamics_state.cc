@@ -33,14 +33,12 @@ namespace tribos
     const auto     &dof_handler  = *layout.dof_handler;
     const IndexSet &owned        = layout.owned;
     const MPI_Comm  communicator = layout.communicator;
-    // Ids the mesh lacks get the smallest present body's density (never
-    // used), so that a list's error names an id the mesh has.
-    const auto &bodies = materials.bodies();
-    for (unsigned int body = 0; body < materials.n_materials(); ++body)
-      densities.push_back(Parameters::Materials::for_body(
-        parameters.materials.densities,
-        bodies.count(body) > 0 ? body : *bodies.begin(),
-        "Density"));
+    // The bodies of the mesh only (a list's error names an id it has).
+    for (const types::material_id body : materials.bodies())
+      densities[body] =
+        Parameters::Materials::for_body(parameters.materials.densities,
+                                        body,
+                                        "Density");
 
     for (Vector *v : {&velocity_owned,
                       &acceleration,
@@ -215,7 +213,7 @@ namespace tribos
         cell_mass_matrix(fe_values,
                          dof_indices,
                          component,
-                         densities[cell->material_id()],
+                         densities.at(cell->material_id()),
                          cell_mass,
                          remove_contact_mass);
         f(dof_indices, cell_mass);
@@ -249,7 +247,11 @@ namespace tribos
     auto        &mass                   = scratch.mass;
     auto        &a_mid                  = scratch.mid_acceleration;
     auto        &a_end                  = scratch.end_acceleration;
-    cell_mass_matrix(fe_values, dof_indices, component, densities[body], mass);
+    cell_mass_matrix(fe_values,
+                     dof_indices,
+                     component,
+                     densities.at(body),
+                     mass);
     auto &mass_weight = scratch.mass_weight;
     a_mid.resize(dofs_per_cell);
     a_end.resize(dofs_per_cell);

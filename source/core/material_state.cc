@@ -39,16 +39,11 @@ namespace tribos
                                                                          E,
                                                                          nu);
     };
-    // Indexed by body id; an id the mesh lacks gets the smallest present
-    // body's material (never used), so that a list's error names an id
-    // the mesh has (it named the first absent one).
-    const auto present = [&](const unsigned int body)
-    {
-      return body_ids.count(body) > 0 ? body : *body_ids.begin();
-    };
-    for (unsigned int body = 0; body <= max_body; ++body)
-      materials.push_back(
-        make(std::integral_constant<int, dim>(), present(body)));
+    // One material per body of the mesh, in the order of its id (a list's
+    // error names an id the mesh has; the ids between them get nothing).
+    ids.assign(body_ids.begin(), body_ids.end());
+    for (const types::material_id body : ids)
+      materials.push_back(make(std::integral_constant<int, dim>(), body));
     if (parameters.finite_element.axisymmetric)
     {
       // The most negative radius, relative to its cell's size, anywhere.
@@ -68,9 +63,9 @@ namespace tribos
                   ExcMessage("Finite element/Axisymmetric = true needs "
                              "the mesh in x = r >= 0; vertex at x = " +
                              std::to_string(worst_x) + "."));
-      for (unsigned int body = 0; body <= max_body; ++body)
+      for (const types::material_id body : ids)
         axisymmetric_materials.push_back(
-          make(std::integral_constant<int, 3>(), present(body)));
+          make(std::integral_constant<int, 3>(), body));
     }
 
     // History only where a material has memory: elastic bodies pay nothing.
@@ -97,10 +92,10 @@ namespace tribos
           double *history =
             &history_old[history_offset[cell->active_cell_index()] + q * n];
           if (axisymmetric_materials.empty())
-            materials[cell->material_id()]->initialize_history(history);
+            material(cell->material_id()).initialize_history(history);
           else
-            axisymmetric_materials[cell->material_id()]->initialize_history(
-              history);
+            axisymmetric_material(cell->material_id())
+              .initialize_history(history);
         }
       }
     history_new = history_old;

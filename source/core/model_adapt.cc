@@ -5,6 +5,7 @@
  */
 
 #include <tribos/core/model.h>
+#include <tribos/core/model_checks.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/cell_data_transfer.templates.h>
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <sstream>
 
 namespace tribos
 {
@@ -179,29 +181,70 @@ namespace tribos
     };
     auto [n_refine, n_coarsen] = count();
 
-    // The dof budget, estimated on the safe side: a refined cell adds
-    // (children - 1) cells of 1.25 times the mean dofs per cell (a cell at
-    // a boundary or next to a coarser one adds more than the mean), a
-    // coarsened group of siblings removes only the dofs of its centre. The
-    // refinement is cut until the estimate fits (p4est's balance may add
+    // The budgets. Dofs (Maximum dofs), estimated on the safe side: a
+    // refined cell adds (children - 1) cells of 1.25 times the mean dofs
+    // per cell (a cell at a boundary or next to a coarser one adds more
+    // than the mean), a coarsened group of siblings removes only the dofs
+    // of its centre. Cells, always: as many as the memory holds by the
+    // estimate that refuses a Scene/Refinement (adaptive_cell_limit()),
+    // so that no input (Maximum level 20, Refine fraction 0.98, 20 initial
+    // cycles: 6 GB in 3 minutes) outgrows the machine, and a run under a
+    // limit of its address space stops refining before std::bad_alloc. The
+    // refinement is cut until both estimates fit (p4est's balance may add
     // cells to any cut: counted again each time).
-    if (a.maximum_dofs > 0)
+    const double n_cells    = tria.n_global_active_cells();
+    const double n_children = GeometryInfo<dim>::max_children_per_cell;
+    const double n_dofs     = dofs.n_dofs();
+    const double added      = 1.25 * n_dofs / n_cells * (n_children - 1);
+    const double removed    = fe().n_components();
+    const double dof_limit  = a.maximum_dofs > 0 ?
+                                double(a.maximum_dofs) :
+                                std::numeric_limits<double>::infinity();
+    const double cell_limit =
+      adaptive_cell_limit<dim>(parameters, n_cells, mpi_communicator);
+    const auto expected = [&](const double refine, const double coarsen)
     {
-      const double n_cells    = tria.n_global_active_cells();
-      const double n_children = GeometryInfo<dim>::max_children_per_cell;
-      const double n_dofs     = dofs.n_dofs();
-      const double added      = 1.25 * n_dofs / n_cells * (n_children - 1);
-      const double removed    = fe().n_components();
-      const auto   expected   = [&](const double refine, const double coarsen)
+      return n_dofs + refine * added - coarsen / n_children * removed;
+    };
+    const auto expected_cells = [&](const double refine, const double coarsen)
+    {
+      return n_cells + (refine - coarsen / n_children) * (n_children - 1);
+    };
+    const auto too_many = [&](const double refine, const double coarsen)
+    {
+      return expected(refine, coarsen) > dof_limit ||
+             expected_cells(refine, coarsen) > cell_limit;
+    };
+    if (too_many(n_refine, n_coarsen))
+    {
+      // The memory's limit (not the user's) is noted once: the run goes on
+      // on a coarser mesh than its entries ask for.
+      if (expected_cells(n_refine, n_coarsen) > cell_limit && !memory_limited)
       {
-        return n_dofs + refine * added - coarsen / n_children * removed;
-      };
+        memory_limited = true;
+        std::ostringstream text;
+        text.precision(3);
+        text << "Adaptivity: a refinement to about "
+             << expected_cells(n_refine, n_coarsen)
+             << " cells was limited to about " << cell_limit
+             << ", as many as the memory of this run holds (its machines', "
+                "or the address space its processes have left under their "
+                "limit) at about "
+             << adaptive_memory_factor *
+                  bytes_per_cell(dim, parameters.finite_element.degree) / 1e3
+             << " kB per cell; the run goes on on the coarser mesh. "
+                "Adaptivity/Maximum dofs, a smaller Maximum level or Refine "
+                "fraction refine less; a finer mesh needs more memory or "
+                "processes on more machines.";
+        warnings.warn(text.str());
+      }
       const double coarsen_fraction = n_coarsen / n_cells;
       double       fraction         = n_refine / n_cells;
-      while (fraction > 0 && expected(n_refine, n_coarsen) > a.maximum_dofs)
+      while (fraction > 0 && too_many(n_refine, n_coarsen))
       {
-        const double room =
-          (a.maximum_dofs - n_dofs + n_coarsen / n_children * removed) / added;
+        const double room = std::min(
+          (dof_limit - n_dofs + n_coarsen / n_children * removed) / added,
+          (cell_limit - n_cells) / (n_children - 1) + n_coarsen / n_children);
         fraction = std::min(0.8 * fraction, std::max(0., room) / n_cells);
         if (fraction * n_cells < 1)
           fraction = 0;

@@ -1,5 +1,6 @@
 #include <tribos/base/cells_from_first_process.h>
 #include <tribos/base/import_constraints.h>
+#include <tribos/base/interruption.h>
 #include <tribos/base/text.h>
 #include <tribos/core/model_checks.h>
 #include <tribos/core/problem.h>
@@ -62,10 +63,14 @@ namespace tribos
   {
     for (const auto &w : parameters.input_warnings)
       warnings.warn(w);
+    // A signal stops the setup after the stage it arrived in, before any
+    // output exists (the first Newton iteration may be minutes away).
     model.create_mesh(weights);
+    Interruption::check_setup(mpi_communicator);
     setup_system();
     support_warnings<dim>(parameters, model.triangulation(), warnings);
     setup_dynamics();
+    Interruption::check_setup(mpi_communicator);
   }
 
 
@@ -76,6 +81,7 @@ namespace tribos
   {
     TimerOutput::Scope t(timer, "setup");
     model.distribute_dofs();
+    Interruption::check_setup(mpi_communicator);
     setup_physics();
   }
 
@@ -205,7 +211,7 @@ namespace tribos
     }
     stabilization_springs.reinit(layout.system_owned,
                                  layout.system_relevant,
-                                 material_state->n_materials());
+                                 material_state->bodies());
   }
 
 

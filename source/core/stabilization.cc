@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -38,11 +39,11 @@ namespace tribos
 
   template <int dim>
   void
-  Stabilization<dim>::reinit(const IndexSet    &system_owned,
-                             const IndexSet    &system_relevant,
-                             const unsigned int n_materials)
+  Stabilization<dim>::reinit(const IndexSet &system_owned,
+                             const IndexSet &system_relevant,
+                             const std::set<types::material_id> &body_ids)
   {
-    this->n_materials = n_materials;
+    bodies.assign(body_ids.begin(), body_ids.end());
     anchor_vector.reinit(system_owned, system_relevant, communicator);
     force_vector.reinit(system_owned, communicator);
   }
@@ -116,11 +117,13 @@ namespace tribos
     // Axisymmetric: radial resultants cancel around the ring; only the
     // axial component is a force.
     const unsigned int first = parameters.finite_element.axisymmetric ? 1 : 0;
-    std::vector<Tensor<1, dim>> per_body(n_materials);
+    std::vector<Tensor<1, dim>> per_body(bodies.size());
     Tensor<1, dim>              applied;
     for (const auto i : owned_dofs)
     {
-      per_body[dof_body[i]][dof_component[i]] += force_vector[i];
+      const auto body =
+        std::lower_bound(bodies.begin(), bodies.end(), dof_body[i]);
+      per_body[body - bodies.begin()][dof_component[i]] += force_vector[i];
       applied[dof_component[i]] += external_forces[i];
     }
     double springs = 0;

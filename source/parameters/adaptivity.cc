@@ -70,7 +70,11 @@ namespace tribos
                         "A refinement that would exceed this many dofs "
                         "(estimated on the safe side before it is made) is "
                         "cut to the cells with the largest indicators that "
-                        "fit; 0: no limit.");
+                        "fit; 0: no limit of its own. Every refinement is "
+                        "also cut to as many cells as the memory of the run "
+                        "holds (its machines', or the address space left "
+                        "under a ulimit -v), by the estimate that refuses a "
+                        "Scene/Refinement, with a warning.");
       prm.declare_entry("Bulk indicator",
                         "kelly",
                         dealii::Patterns::Selection("kelly|none"),

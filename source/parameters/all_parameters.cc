@@ -36,9 +36,37 @@ namespace tribos
 
 
 
+    namespace
+    {
+      /** The entries of @p tree (a handler's JSON description, or one of
+       * its subsections at @p path) into @p entries. */
+      void
+      collect_entries(const boost::property_tree::ptree           &tree,
+                      const std::string                           &path,
+                      std::map<std::string, AllParameters::Entry> &entries)
+      {
+        for (const auto &[name, node] : tree)
+          if (node.get_child_optional("value"))
+            entries[path + name] = {node.get<std::string>("value"),
+                                    node.get<std::string>("default_value")};
+          else
+            collect_entries(node, path + name + "/", entries);
+      }
+    } // namespace
+
+
+
     void
     AllParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
+      {
+        std::stringstream json;
+        prm.print_parameters(json, dealii::ParameterHandler::JSON);
+        boost::property_tree::ptree tree;
+        boost::property_tree::read_json(json, tree);
+        entries.clear();
+        collect_entries(tree, "", entries);
+      }
       dimension = prm.get_integer("Dimension");
       scene.parse_parameters(prm);
       finite_element.parse_parameters(prm);

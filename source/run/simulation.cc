@@ -64,6 +64,8 @@ namespace tribos
       }
       checkpointer.check(*restart);
     }
+    // The last moment a signal leaves the output directory untouched.
+    Interruption::check_setup(mpi_communicator);
     output = std::make_unique<RunOutput<dim>>(parameters,
                                               model,
                                               problem,

@@ -16,6 +16,13 @@ with np 2 from the serial run's; with Lagrange multipliers from np 2 to 3. Bad r
 another mesh; the same cells on a moved mesh, other materials, an end time
 before the checkpoint, a checkpoint with one byte changed) exit 1 with a
 message and leave the output alone.
+Every entry that defines the model is compared (the global friction
+coefficient, the mortar basis and each entry of Adaptivity were accepted
+with exit 0 and another history after the checkpoint): each one that
+differs is refused, named with both values; what a restart may change
+(End time and Number of steps with the same step size, the linear
+solver, the output, a number written otherwise) is accepted and continues
+the uninterrupted history. A checkpoint of another format is refused.
 
 Cases (argv[4]; without one, all run):
   core    the frictional penalty slide restarted, the bad restarts from its
@@ -157,13 +164,74 @@ if "core" in selected:
             # Issue 58: a fixed mesh's checkpoint with Adaptivity.
             ("adaptivity added", ["Adaptivity/Enable=true"],
              reference + "/checkpoint-00004",
-             "written without Adaptivity/Enable")]:
+             "written without Adaptivity/Enable"),
+            # Every entry that defines the model, named with both values (the
+            # first two were accepted: exit 0, another history; the same mu
+            # as a pair key was refused).
+            ("global friction coefficient",
+             ["Contact/Friction coefficient=0.5"],
+             reference + "/checkpoint-00004",
+             "Contact/Friction coefficient <0.3> there, <0.5> here"),
+            ("mortar basis", ["Contact/Mortar basis=standard"],
+             reference + "/checkpoint-00004",
+             "Contact/Mortar basis <dual> there, <standard> here"),
+            ("two entries", ["Contact/Friction coefficient=0.5",
+                             "Materials/Density=2"],
+             reference + "/checkpoint-00004",
+             "2 other values of entries that define the model: "
+             "Contact/Friction coefficient <0.3> there, <0.5> here; "
+             "Materials/Density <0> there, <2> here"),
+            # End time and Number of steps may change, but not so that the
+            # next step ends before the checkpoint's t = 1.
+            ("step 5 before the checkpoint",
+             ["Time stepping/Number of steps=48"],
+             reference + "/checkpoint-00004", "not after it")]:
         result = run(tribos, tests + "/sliding_block.prm", reference, sets,
                      expect_success=False, extra=["--restart", directory])
         check(result.returncode == 1 and message in result.stderr and
               open(reference + "/history.csv").read() == before,
               "bad restart (%s): exit 1, message <%s>, output kept"
               % (name, message))
+
+    # What a restart may change: the end (the same step size, four more
+    # steps), the linear solver, the output, a number written otherwise.
+    # The history goes on from the uninterrupted one's.
+    longer = out + "/longer"
+    shutil.rmtree(longer, ignore_errors=True)
+    shutil.copytree(reference, longer)
+    result = run(tribos, tests + "/sliding_block.prm", longer,
+                 ["Time stepping/End time=4", "Time stepping/Number of steps=16",
+                  "Linear solver/Type=direct", "Output/Checkpoint every=0",
+                  "Contact/Friction coefficient=0.30"],
+                 extra=["--restart", reference + "/checkpoint-00004"])
+    rows = read_csv(longer + "/history.csv")
+    ref = read_csv(reference + "/history.csv")
+    # (The load factor is t / End time.)
+    kept = [k for k in ref[0] if k not in noisy + ("load_factor",)]
+    check(len(rows) > len(ref) and rows[-1]["time"] == 4 and
+          all(abs(r[k] - q[k]) <= 1e-10 * max(abs(q[k]), 1e-4)
+              for r, q in zip(rows, ref) for k in kept),
+          "restart with End time 4 and 16 steps, another linear solver and "
+          "output, mu written 0.30: accepted, the uninterrupted history "
+          "(%d rows) continued to t = 4 (%d rows)" % (len(ref), len(rows)))
+
+    # A checkpoint of another format (format 4 recorded neither the
+    # contact couplings nor every entry): refused, naming the format.
+    old = out + "/format_4_checkpoint"
+    shutil.rmtree(old, ignore_errors=True)
+    shutil.copytree(reference + "/checkpoint-00004", old)
+    with open(old + "/state.bin", "r+b") as f:
+        data = bytearray(f.read())
+        at = data.index(b"tribos checkpoint") + len("tribos checkpoint")
+        data[at:at + 4] = (4).to_bytes(4, "little")
+        f.seek(0)
+        f.write(data)
+    result = run(tribos, tests + "/sliding_block.prm", reference, [],
+                 expect_success=False, extra=["--restart", old])
+    check(result.returncode == 1 and
+          "not a tribos checkpoint of format 5" in result.stderr and
+          open(reference + "/history.csv").read() == before,
+          "a checkpoint of format 4: exit 1, the format named, output kept")
 
     # Issue 56: history.csv on restart. A restart that adds Output/Probes keeps
     # the earlier rows (it dropped rows 1-30: the header differed), the new
@@ -201,6 +269,29 @@ if "core" in selected:
           "restart with a malformed history.csv row: exit 1, the line named, "
           "no file removed")
 if "serial" in selected:
+    # Each entry of Adaptivity that was accepted (exit 0, another history
+    # after the checkpoint), named with both values; the output untouched.
+    adaptive = out + "/adaptive"
+    sets = ["Adaptivity/Enable=true", "Adaptivity/Maximum level=2"]
+    run(tribos, tests + "/sliding_block.prm", adaptive,
+        sets + ["Output/Checkpoint every=5"])
+    before = open(adaptive + "/history.csv").read()
+    for entry, there, here in [("Maximum level", "2", "3"),
+                               ("Refine fraction", "0.3", "0.5"),
+                               ("Every", "1", "2"),
+                               ("Contact zone depth", "0.25", "0.5"),
+                               ("Strategy", "fixed fraction", "fixed number"),
+                               ("Maximum dofs", "0", "100000")]:
+        result = run(tribos, tests + "/sliding_block.prm", adaptive,
+                     sets + ["Adaptivity/%s=%s" % (entry, here)],
+                     expect_success=False,
+                     extra=["--restart", adaptive + "/checkpoint-00005"])
+        message = "Adaptivity/%s <%s> there, <%s> here" % (entry, there, here)
+        check(result.returncode == 1 and message in result.stderr and
+              open(adaptive + "/history.csv").read() == before,
+              "bad restart (adaptive, %s): exit 1, <%s>, output kept"
+              % (entry, message))
+
     # Issue 56: another discretization of a pair between two deformable
     # bodies (a rigid surface is always met node to surface).
     patch = out + "/patch"

@@ -12,12 +12,15 @@ namespace tribos
    * A run stopped by SIGTERM or SIGINT: thrown between Newton iterations,
    * so that every file written so far is whole, the summary says so and
    * the process exits with 128 + the signal's number, as the shell expects
-   * of a killed program.
+   * of a killed program; or between two stages of the setup, before any
+   * output is written (a setup can take minutes: a large mesh, its dofs
+   * and matrix), which leaves the output directory as it was.
    */
   class Interrupted : public std::runtime_error
   {
   public:
-    explicit Interrupted(const int signal_number);
+    /** @p in_setup: thrown by Interruption::check_setup(). */
+    explicit Interrupted(const int signal_number, const bool in_setup = false);
 
     /** The signal's number. */
     int
@@ -26,12 +29,20 @@ namespace tribos
       return number;
     }
 
+    /** Whether the run stopped in its setup, before any output. */
+    bool
+    in_setup() const
+    {
+      return setup;
+    }
+
     /** Its name (SIGTERM, SIGINT). */
     static std::string
     name(const int signal_number);
 
   private:
-    int number;
+    int  number;
+    bool setup;
   };
 
 
@@ -53,6 +64,14 @@ namespace tribos
      * same iteration). */
     void
     check(const MPI_Comm communicator);
+
+    /** The same between two stages of the setup (collective): a signal
+     * that arrived while the mesh, the dofs or the materials were built
+     * stops the run there, with nothing written, and not only at the
+     * first Newton iteration, which a setup that outgrows the memory
+     * never reaches (a single SIGTERM, as timeout sends, was ignored). */
+    void
+    check_setup(const MPI_Comm communicator);
   } // namespace Interruption
 } // namespace tribos
 

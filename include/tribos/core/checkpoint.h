@@ -27,7 +27,10 @@ namespace tribos
    */
   struct Checkpoint
   {
-    /** The layout version of this struct. */
+    /** The layout version of this struct. 5: the contact couplings of the
+     * sparsity pattern in the contact state, and the fingerprint holds
+     * every entry of the parameters but those a restart may change (4:
+     * the scene, the pairs and the materials only). */
     static constexpr unsigned int format = 5;
 
     unsigned int dimension      = 0;
@@ -63,7 +66,9 @@ namespace tribos
     /** The VTU series written so far (time, file). */
     std::vector<std::pair<double, std::string>> pvd_records;
     /** What the state depends on beyond the sizes above, by name: the
-     * scene, the contact pairs, the materials (Checkpointer::fingerprint()). */
+     * entries of the parameters that define the model, as written, and
+     * what the materials and pairs resolved to
+     * (Checkpointer::fingerprint()). */
     std::map<std::string, std::string> fingerprint;
     /** Moments of the mesh's vertex coordinates (a moved or reshaped mesh
      * with the same cells and dofs changes them). */

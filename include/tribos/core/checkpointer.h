@@ -57,10 +57,33 @@ namespace tribos
           const std::map<std::string, double>               &run_scalars,
           const std::string                                 &directory) const;
 
-    /** Whether @p checkpoint fits this run (mesh, dofs, pairs, integrator,
-     * steps): a clear error before any output is touched. Collective. */
+    /** Whether @p checkpoint fits this run (mesh, dofs, the entries that
+     * define the model, steps): a clear error before any output is
+     * touched, naming every entry that differs with both values.
+     * Collective. */
     void
     check(const Checkpoint &checkpoint) const;
+
+    /**
+     * Whether a restart may give the entry @p path ("Section/Entry")
+     * another value than the run that wrote the checkpoint: where the run
+     * ends (Time stepping/End time, Number of steps), how its remaining
+     * increments are sized and solved (the other entries of Time stepping
+     * but the integrator's, Nonlinear solver, Linear solver, Parallel), what
+     * it writes (Output, Verification) and the name of the mesh file (its
+     * mesh is compared: cells, dofs, the vertices' and ids' moments). Every
+     * other entry defines the model the checkpoint's state belongs to (the
+     * scene, the element, materials, loads, contact, Adaptivity) and must
+     * be the checkpoint's: an allow-list, so that an entry added later is
+     * compared unless it is put here on purpose.
+     */
+    static bool
+    may_change_at_restart(const std::string &path);
+
+    /** The entries of may_change_at_restart(), for messages and the
+     * README. */
+    static std::string
+    may_change_at_restart_list();
 
     /** Read @p checkpoint into the state of the (set up) problem.
      * Collective. */
@@ -77,9 +100,16 @@ namespace tribos
 
   private:
     /** What a checkpoint's state depends on beyond the sizes of the
-     * mesh and dofs, by name (scene, pairs, materials), as text. */
+     * mesh and dofs, by name, as text: every entry but those of
+     * may_change_at_restart(), as written, and under the names of format
+     * 4 what the materials and pairs resolved to (format_4_fingerprint()). */
     std::map<std::string, std::string>
     fingerprint() const;
+    /** All that a checkpoint of format 4 recorded (and is compared on):
+     * the scene's name, the pairs, each pair's method and discretization,
+     * the material models and constants (parsed). */
+    std::map<std::string, std::string>
+    format_4_fingerprint() const;
     /** Moments of the vertex coordinates of the mesh (collective). */
     std::map<std::string, double>
     geometry_moments() const;

@@ -250,7 +250,8 @@ namespace tribos
     TimeIntegrator                   time_integrator;
     bool                             inertia_on     = true;
     double                           committed_time = 0;
-    std::vector<double>              densities;
+    /** The density of each body of the mesh, by its id. */
+    std::map<types::material_id, double> densities;
     Vector velocity_owned, acceleration, ghosted_velocity, ghosted_acceleration,
       ghosted_start;
     /** R = f_int - f_contact - f_ext at t_n (a massless row: 0). */

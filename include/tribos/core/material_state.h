@@ -8,8 +8,10 @@
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
 
+#include <algorithm>
 #include <memory>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace tribos
@@ -41,6 +43,11 @@ namespace tribos
    * quadrature point of the own cells, converged (old) and current (new).
    * Elastic bodies store nothing. The history is committed with a
    * converged increment and restored after a failed one.
+   *
+   * Only the bodies the mesh has get a material, found by their id: an id
+   * is a name (a gmsh physical tag, an Abaqus set's id, up to 2^31 - 1),
+   * not a size, and a table indexed by it took 5.5 GB for one body of
+   * id 10^8.
    */
   template <int dim>
   class MaterialState
@@ -63,31 +70,24 @@ namespace tribos
       return body_ids;
     }
 
-    /** The number of materials (the largest body id plus one). */
-    unsigned int
-    n_materials() const
-    {
-      return materials.size();
-    }
-
-    /** The material of @p body (in-plane or 3D). */
+    /** The material of @p body (in-plane or 3D), a body of the mesh. */
     const Material<dim> &
     material(const types::material_id body) const
     {
-      return *materials[body];
+      return *materials[index(body)];
     }
 
     /** Axisymmetric models: the 3D material of @p body. */
     const Material<3> &
     axisymmetric_material(const types::material_id body) const
     {
-      return *axisymmetric_materials[body];
+      return *axisymmetric_materials[index(body)];
     }
 
     double
     youngs_modulus(const types::material_id body) const
     {
-      return materials[body]->youngs_modulus();
+      return material(body).youngs_modulus();
     }
 
     /** The Cauchy stress (3 x 3) at @p point of @p body with the converged
@@ -98,8 +98,8 @@ namespace tribos
                   const double             *history) const
     {
       return point.axisymmetric ?
-               axisymmetric_materials[body]->cauchy_stress(point.F3, history) :
-               materials[body]->cauchy_stress(point.F, history);
+               axisymmetric_material(body).cauchy_stress(point.F3, history) :
+               material(body).cauchy_stress(point.F, history);
     }
 
     /** The equivalent plastic strain of @p body with @p history. */
@@ -108,8 +108,8 @@ namespace tribos
                               const double            *history) const
     {
       return axisymmetric_materials.empty() ?
-               materials[body]->equivalent_plastic_strain(history) :
-               axisymmetric_materials[body]->equivalent_plastic_strain(history);
+               material(body).equivalent_plastic_strain(history) :
+               axisymmetric_material(body).equivalent_plastic_strain(history);
     }
 
     /** The stored energy per reference volume at @p point of @p body. */
@@ -119,8 +119,8 @@ namespace tribos
                   const double             *history) const
     {
       return point.axisymmetric ?
-               axisymmetric_materials[body]->stored_energy(point.F3, history) :
-               materials[body]->stored_energy(point.F, history);
+               axisymmetric_material(body).stored_energy(point.F3, history) :
+               material(body).stored_energy(point.F, history);
     }
 
     /** Whether some material has history (PEEQ is written). */
@@ -132,8 +132,8 @@ namespace tribos
     n_history_variables(const types::material_id body) const
     {
       return axisymmetric_materials.empty() ?
-               materials[body]->n_history_variables() :
-               axisymmetric_materials[body]->n_history_variables();
+               material(body).n_history_variables() :
+               axisymmetric_material(body).n_history_variables();
     }
 
     /** Whether @p cell (own, active) stores history. */
@@ -214,7 +214,22 @@ namespace tribos
     }
 
   private:
-    std::set<types::material_id>                body_ids;
+    /** The position of @p body, a body of the mesh, in @p ids (and of
+     * its material in @p materials). */
+    unsigned int
+    index(const types::material_id body) const
+    {
+      const auto it = std::lower_bound(ids.begin(), ids.end(), body);
+      Assert(it != ids.end() && *it == body,
+             ExcMessage("body " + std::to_string(body) +
+                        " is not one of the mesh's"));
+      return static_cast<unsigned int>(it - ids.begin());
+    }
+
+    std::set<types::material_id> body_ids;
+    /** The same ids in ascending order, searched by index(). */
+    std::vector<types::material_id> ids;
+    /** The material of each body of @p ids, in their order. */
     std::vector<std::unique_ptr<Material<dim>>> materials;
     /** Axisymmetric models: the materials in 3D (empty otherwise). */
     std::vector<std::unique_ptr<Material<3>>> axisymmetric_materials;

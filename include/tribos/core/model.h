@@ -183,13 +183,14 @@ namespace tribos
     /**
      * Adaptivity: flag the cells by @p indicator (per active cell) with
      * the strategy, the levels and the dof budget of the subsection
-     * Adaptivity; with a nonempty @p zone, the cells whose centres lie
-     * within Contact zone depth times a box's width of one of its boxes
-     * are refined to the finest level flagged among its slave cells, and
-     * its master cells until their faces are no larger than 1.5 times
-     * the finest slave face (a node-to-segment pressure oscillates with
-     * the period of a master coarser than its slave); none of these is
-     * coarsened. True if some cell is flagged. Collective.
+     * Adaptivity, and no more cells than the memory holds
+     * (adaptive_cell_limit(); warned once); with a nonempty @p zone, the cells
+     * whose centres lie within Contact zone depth times a box's width of one of
+     * its boxes are refined to the finest level flagged among its slave cells,
+     * and its master cells until their faces are no larger than 1.5 times the
+     * finest slave face (a node-to-segment pressure oscillates with the period
+     * of a master coarser than its slave); none of these is coarsened. True if
+     * some cell is flagged. Collective.
      */
     bool
     mark(const dealii::Vector<float> &indicator, const ContactZone<dim> &zone);
@@ -263,6 +264,8 @@ namespace tribos
     std::vector<std::vector<IndexSet>>                dirichlet_dofs;
     std::vector<unsigned char>                        components;
     std::vector<types::material_id>                   bodies;
+    /** Whether mark() has cut a refinement to the memory (warned once). */
+    bool memory_limited = false;
   };
 } // namespace tribos
 

@@ -88,7 +88,8 @@ namespace tribos
     /**
      * Build the scene (partitioned with @p weights, per CellId, if given:
      * a rebalanced run), the dofs, constraints, materials, contact and
-     * dynamics.
+     * dynamics. A SIGTERM or SIGINT noted meanwhile throws Interrupted
+     * after the stage it arrived in (Interruption::check_setup()).
      */
     void
     setup(const CellWeights *weights = nullptr);

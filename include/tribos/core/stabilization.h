@@ -8,6 +8,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -63,12 +64,12 @@ namespace tribos
     bool
     enabled() const;
 
-    /** The anchors and forces on the system's unknowns, for
-     * @p n_materials bodies (collective). */
+    /** The anchors and forces on the system's unknowns, for the mesh's
+     * bodies @p body_ids (the same on every process; collective). */
     void
-    reinit(const IndexSet    &system_owned,
-           const IndexSet    &system_relevant,
-           const unsigned int n_materials);
+    reinit(const IndexSet                     &system_owned,
+           const IndexSet                     &system_relevant,
+           const std::set<types::material_id> &body_ids);
 
     /** A Newton solve starts at @p ghosted_solution: the anchors are set
      * there, its re-anchorings counted from zero. */
@@ -131,7 +132,9 @@ namespace tribos
     const IndexSet                        &owned_dofs;
     const std::vector<unsigned char>      &dof_component;
     const std::vector<types::material_id> &dof_body;
-    unsigned int                           n_materials = 0;
+    /** The mesh's body ids in ascending order: the resultants are summed
+     * per body found among them (an id is no index: it may be 2^31 - 1). */
+    std::vector<types::material_id> bodies;
 
     Vector anchor_vector;
     Vector force_vector;

@@ -62,8 +62,10 @@ namespace tribos
 
     /**
      * The model's own entries that a checkpoint's state depends on (the
-     * history of its points), with their values: a restart refuses a
-     * checkpoint written with others.
+     * history of its points), with their parsed values: a restart refuses
+     * a checkpoint written with others. (Since checkpoint format 5 every
+     * entry is compared as written anyway; these are the names and values
+     * a checkpoint of format 4 recorded, and numbers compared parsed.)
      */
     virtual std::vector<std::pair<std::string, std::vector<double>>>
     fingerprint() const

@@ -38,7 +38,8 @@ namespace tribos
       unsigned int maximum_level;
       /** Coarsening stops at this many levels above the scene's mesh. */
       unsigned int minimum_level;
-      /** No refinement beyond this many dofs (0: no limit). */
+      /** No refinement beyond this many dofs (0: no limit of its own;
+       * the memory's applies anyway, Model::mark()). */
       unsigned long maximum_dofs;
       /** Kelly's jump of the displacement gradient across faces (or none). */
       bool kelly;

@@ -16,6 +16,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -44,6 +45,20 @@ namespace tribos
       Parallel           parallel;
       Verification       verification;
       Adaptivity         adaptivity;
+
+      /** An entry of the ParameterHandler: its value after the file and
+       * the overrides, and its default. */
+      struct Entry
+      {
+        std::string value;
+        std::string default_value;
+      };
+      /** Every entry the ParameterHandler declares, by its path
+       * ("Section/Subsection/Entry"; a plugin's too), as parse_parameters()
+       * read it: a checkpoint is compared with a restart entry by entry
+       * (Checkpointer::fingerprint()), so that no entry added later is
+       * forgotten there. Empty if the struct was filled by hand. */
+      std::map<std::string, Entry> entries;
 
       /** Warnings about the input itself (e.g. a file that sets nothing),
        * reported by the run with its own. */
