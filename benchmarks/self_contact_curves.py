@@ -10,7 +10,7 @@ and their difference over the half model's force at t = 1.
 
 Scenes: the U-shaped body (tests/data/self_contact_u.prm, node to segment,
 penalty; the half model the right half), the ring (the tube's
-cross-section, plane strain, mortar: penalty, multipliers, Q2 penalty)
+cross-section, plane strain, mortar: penalty, mixed penalty, Q2 penalty)
 and the tube (3D, mortar with penalty, Q1 and Q2) against their
 quarters."""
 
@@ -44,15 +44,15 @@ TUBE_QUARTER = ["Scene/Mesh file=tube_quarter.msh",
                 " 0, -0.7*t, 0 ; wall : plane : 0, 0, 0 : 0, 1, 0 : 0, 0, 0",
                 "Contact/Pairs=2 : top ; 1 : wall"]
 MORTAR = ["Contact/Discretization=mortar"]
-MULTIPLIERS = ["Contact/Method=lagrange multiplier"]
+MIXED = ["Contact/Penalty formulation=mixed"]
 Q2 = ["Finite element/Polynomial degree=2"]
 # scene, method, prm, full model's sets and force column, half model's.
 SCENES = [
     ("U", "node to segment, penalty", U, [], "pair0", U_HALF, "pair0"),
     ("ring", "mortar, penalty", TUBE, RING + MORTAR, "pair2", RING_QUARTER,
      "pair1"),
-    ("ring", "mortar, multipliers", TUBE, RING + MORTAR + MULTIPLIERS,
-     "pair2", RING_QUARTER + MULTIPLIERS, "pair1"),
+    ("ring", "mortar, mixed penalty", TUBE, RING + MORTAR + MIXED,
+     "pair2", RING_QUARTER + MIXED, "pair1"),
     ("ring", "mortar, penalty, Q2", TUBE, RING + MORTAR + Q2, "pair2",
      RING_QUARTER + Q2, "pair1"),
     ("tube", "mortar, penalty", TUBE, MORTAR, "pair2", TUBE_QUARTER,

@@ -2,6 +2,7 @@
 #include <tribos/base/import_constraints.h>
 #include <tribos/base/text.h>
 #include <tribos/contact/contact_pair.h>
+#include <tribos/contact/enforcement/enforcement_method.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -326,28 +327,23 @@ namespace tribos
       pair.description = description;
       pair.enforcement =
         create_enforcement<dim>(description.method, parameters);
-      // The method and formulation the pair has (its own method= or
-      // Contact/Method): Method = penalty with Penalty formulation = mixed
-      // has the multipliers' unknowns too, and was refused as "Method =
-      // lagrange multiplier", which the input did not say.
-      AssertThrow(
-        pair.enforcement->n_node_unknowns() == 0 || !parameters.two_pass,
-        ExcMessage(
-          "Contact/Passes = two-pass with Contact/Method = " +
-          description.method +
-          (pair.enforcement->uses_normal_penalty() ?
-             " and Contact/Penalty formulation = mixed (pair <" +
-               description.text +
-               ">): two passes are for contact forces that follow from "
-               "the displacements (Penalty formulation = primal, "
-               "augmented lagrangian); the mixed form adds a traction "
-               "unknown per slave node, as Lagrange multipliers do, and "
-               "is one-pass. Use one-pass, or Penalty formulation = "
-               "primal." :
-             " (pair <" + description.text +
-               ">): node-to-segment constraints of both passes "
-               "over-constrain the interface (singular system). Use "
-               "one-pass.")));
+      // Two passes with exact constraints hold each gap twice (a node's
+      // row and that of the node opposite it: a singular system). The
+      // penalty in mixed form takes them: each pass's traction unknowns
+      // have rows g_N + t_N / eps_N = 0 with the compliance on their
+      // diagonal, as its self pairs do (area_factor below).
+      AssertThrow(!parameters.enforcement_method(description.method)
+                      ->constrains_gap_exactly() ||
+                    !parameters.two_pass,
+                  ExcMessage("Contact/Passes = two-pass with Contact/Method "
+                             "= " +
+                             description.method + " (pair <" +
+                             description.text +
+                             ">): node-to-segment constraints of both "
+                             "passes over-constrain the interface (singular "
+                             "system). Use one-pass, or Contact/Method = "
+                             "penalty (Penalty formulation = mixed has the "
+                             "multipliers' unknowns and solvers)."));
       const bool self = description.self_contact();
       pair.slave      = surface(description.slave_boundary);
       double E_s      = std::numeric_limits<double>::max();
@@ -363,13 +359,13 @@ namespace tribos
         for (const auto body : pair.master->bodies())
           E_m = std::min(E_m, youngs_modulus(body));
         pair.contact_modulus = E_s * E_m / (E_s + E_m);
-        // Two passes (or a self pair, which is both): each carries half;
-        // a self pair with multipliers has one slave side per contact
-        // (assign_self_contact_roles()), which carries it all.
-        pair.area_factor = (parameters.two_pass || self) &&
-                               pair.enforcement->n_node_unknowns() == 0 ?
-                             0.5 :
-                             1.;
+        // Two passes (or a self pair, which is both): each carries half.
+        // The penalty in mixed form too: each pass's node has its own
+        // traction unknowns, whose rows g_N + t_N/eps_N = 0 have the
+        // compliance 1/eps_N on their diagonal, so the two passes' rows on
+        // one gap are not equal (multipliers, whose rows would be, are
+        // refused on self pairs: Parameters::check_interfaces()).
+        pair.area_factor = parameters.two_pass || self ? 0.5 : 1.;
       }
       else
         pair.rigid = rigid_surfaces.at(description.rigid_surface);

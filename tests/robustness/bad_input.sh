@@ -158,12 +158,6 @@ expect contact_q2_axisymmetric_standard "Mortar basis = standard is not availabl
 expect contact_lagrange_two_pass "Contact/Passes = two-pass" "$tribos" \
   "$contact" --set "Contact/Method=lagrange multiplier" \
   --set "Contact/Passes=two-pass"
-# The mixed penalty has the multipliers' unknowns: refused by its own
-# name (it was refused as "Method = lagrange multiplier").
-expect contact_mixed_penalty_two_pass \
-  "Contact/Method = penalty and Contact/Penalty formulation = mixed" \
-  "$tribos" "$contact" --set "Contact/Penalty formulation=mixed" \
-  --set "Contact/Passes=two-pass"
 # 3D masters are smoothed for node to segment; 3D mortar keeps the slave's
 # normals.
 expect contact_smoothing_3d_mortar "with Discretization = mortar is available in Dimension = 2 only" \
@@ -174,15 +168,19 @@ expect contact_lagrange_reverse_pair "are the same interface with slave and mast
   --set "Contact/Method=lagrange multiplier"
 expect contact_slave_is_master "both slave and master" "$tribos" \
   "$tests/ironing_2d.prm" --set "Contact/Pairs=10, 3 : 3"
-# Self-contact takes node to segment; multipliers one-pass only.
-expect self_contact_two_pass_multipliers "Use one-pass" \
+# Self-contact takes node to segment or mortar, without multipliers: one
+# side of each contact lets the other through where the surface's two
+# sides end together (the U's force then depended on the load steps).
+expect self_contact_multipliers "self-contact pair <1 : 1> with method lagrange multiplier" \
   "$tribos" "$tests/self_contact_u.prm" \
-  --set "Contact/Method=lagrange multiplier" --set "Contact/Passes=two-pass"
-expect self_contact_mortar_multipliers_quadratic \
-  "takes mortar on linear faces only" "$tribos" "$tests/self_contact_u.prm" \
+  --set "Contact/Method=lagrange multiplier"
+expect self_contact_mortar_multipliers "augmented lagrangian: both sides" \
+  "$tribos" "$tests/self_contact_u.prm" \
   --set "Contact/Discretization=mortar" \
-  --set "Contact/Method=lagrange multiplier" \
-  --set "Finite element/Polynomial degree=2"
+  --set "Contact/Method=lagrange multiplier"
+expect self_contact_pair_multipliers "Penalty formulation = mixed" \
+  "$tribos" "$tests/self_contact_clip.prm" \
+  --set "Contact/Pairs=1 : 1 : method=lagrange multiplier"
 expect self_contact_smoothed "without Master smoothing" "$tribos" \
   "$tests/self_contact_u.prm" --set "Contact/Master smoothing=averaged normals"
 expect self_contact_mortar_smoothed "without Master smoothing" "$tribos" \

@@ -107,6 +107,27 @@ for name in ("one-pass coarse slave", "one-pass fine slave",
           "%s: node-to-segment fails the patch test (force error %.3f)"
           % (name, measured[name][0]))
 
+# The penalty in mixed form takes both passes too (it was refused, as
+# multipliers are): each pass's traction unknowns are its own, and the
+# solution is the primal form's, node by node (to Newton's tolerance).
+pressures = {}
+for form in ("primal", "mixed"):
+    folder = out + "/two_pass_" + form
+    run(tribos, tests + "/patch_test.prm", folder,
+        ["Contact/Passes=two-pass", "Contact/Penalty formulation=" + form])
+    pressures[form] = {(round(r["X"], 9), round(r["Y"], 9), r["pair"]):
+                       r["CPRESS"]
+                       for r in read_csv(folder + "/contact-00001.csv")
+                       if r["CSTATUS"] > 0}
+largest = max(pressures["primal"].values())
+worst = max(abs(pressures["mixed"].get(k, 0.) - v)
+            for k, v in pressures["primal"].items()) / largest
+check(len(pressures["mixed"]) == len(pressures["primal"]) > 0 and
+      worst < 1e-6,
+      "two-pass, penalty in mixed form: %d closed nodes as the primal form, "
+      "their pressures the primal form's to %.1e of the largest (bound 1e-6)"
+      % (len(pressures["mixed"]), worst))
+
 result = out + "/patch_test.csv"
 with open(result, "w") as f:
     f.write("\n".join(lines) + "\n")

@@ -1,7 +1,8 @@
 """Self-contact (issue 59): a pair whose slave surface is its own master
-(Contact/Pairs = 1 : 1), node to segment: with penalty and the augmented
-Lagrangian both passes in one pair with half weights, with multipliers one
-slave side per contact.
+(Contact/Pairs = 1 : 1), node to segment: penalty (primal or mixed) and
+the augmented Lagrangian take both passes in one pair with half weights;
+multipliers are refused (one slave side lets the other side through where
+the surface's two sides end together, tests/robustness/bad_input.sh).
 
 1. The patch test's two blocks as one surface (Pairs = 3, 12 : 3, 12) give
    the two-pass pair 12 : 3 (Passes = two-pass) to round-off: every node
@@ -15,21 +16,21 @@ slave side per contact.
    rigid wall at the symmetry plane) gives the same contact force at
    every step: within 1 % (the left arm's nodes do not meet the right
    arm's, so the discretizations differ). The same with the augmented
-   Lagrangian. (Not with multipliers: one-pass, see doc/self_contact.md.)
+   Lagrangian and with the penalty in mixed form (both arms closed).
    The U's whole boundary as one self-contact surface closes only the
    slot's faces, with the slot alone's force to 1e-3. In 3D: a tube
    (tests/data/tube.geo, tests/data/self_contact_tube.prm) crushed between
    two plates until its inner surface closes, against its quarter with a
    rigid wall at the symmetry plane: plate force and self-contact force
    within 1e-3 at every step (the meshes mirror each other; penalty,
-   augmented Lagrangian and multipliers).
-3. Multipliers: every node of a self-contact surface has its multiplier,
-   and each contact one slave side (the other side's nodes unpaired, as
-   masters), chosen by colouring the graph of near contacts (source/
-   contact/discretization/self_contact_roles.cc). The patch test's blocks
-   as one surface with multipliers give the one-pass pair whose slave is
-   the block the colouring chose: the same closed nodes, their pressures
-   to 1e-10 of the largest (2D and 3D).
+   augmented Lagrangian and the mixed penalty).
+3. The penalty in mixed form (Penalty formulation = mixed: a traction
+   unknown per node, the multipliers' rows and solvers) takes both passes
+   with half weights as the primal form does, each pass's node with its
+   own unknowns: the patch test's blocks as one surface give the primal
+   form's nodal pressures on both blocks to 1e-6 of the largest (2D and
+   3D; it took one slave side like the multipliers, and left one block
+   open).
 4. Friction (mu = 0.3): the U's arms closed and sheared against each other
    (tractions up on the right arm's top, down on the left one's) as one
    self-contact surface give what the same U gives with its slot's faces
@@ -37,41 +38,41 @@ slave side per contact.
    the existing two-body friction: nodal pressures and shear tractions to
    1e-6 of the largest at the end. Coulomb's law at the nodes: sliding
    nodes carry |T| = mu p (so the dissipation at a node is mu p times its
-   slip increment), sticking ones |T| <= mu p. With multipliers the
-   self pair equals the one-pass pair (9 : 10 or 10 : 9) whose slave is
-   the arm the colouring chose, to 1e-8.
+   slip increment), sticking ones |T| <= mu p. The penalty in mixed
+   form: Coulomb's law at its closed nodes, its normal force within 1 %
+   of the primal form's (1.9 % above it with one slave side).
 5. Restart: the frictional run restarted from its checkpoint after step 5
    equals the uninterrupted run in every digit of history.csv (but the
    wall times) and of the last contact CSV.
 6. -np 2 equal to serial (1e-8): the U with penalty, the sheared U with
-   multipliers and friction, the tube with multipliers, the ring with
-   mortar (penalty and multipliers).
-7. Mortar (case mortar; penalty and the augmented Lagrangian both passes
-   with half weights, multipliers one slave side as in 3): the patch
-   test's blocks as one surface, each block's pressure uniform to 1e-9,
-   the two blocks' mean that of the one-pass mortar pair to 1e-9 (each
-   side reports its own penalty's traction), with multipliers the
-   one-pass pair of the block the colouring chose to 1e-10; the ring of
+   the mixed penalty and friction, the tube with the mixed penalty, the
+   ring with mortar (penalty, primal and mixed).
+7. Mortar (case mortar; penalty, primal and mixed, and the augmented
+   Lagrangian both passes with half weights): the patch test's blocks as
+   one surface, each block's pressure uniform to 1e-9, the two blocks'
+   mean that of the one-pass mortar pair to 1e-9 (each side reports its
+   own penalty's traction), the mixed form the primal one's to 1e-6; the
+   U with the mixed penalty within 1 % of its half model up to t = 1
+   (8 % above it with one slave side); the ring of
    tests/data/tube.geo (planar = 1, plane strain, Q1 and Q2) and the tube
    against their quarters with a rigid wall at the symmetry plane: plate
    and self-contact force within 1e-3 (Q2: 1e-2, the issue's 1 %; the
    tube with Q2, its curve within 1 % of the final force); friction on the patch test sheared as one surface:
    Coulomb's law at every closed node, some sliding (|T| = mu p to 1e-9),
-   some sticking (|T| <= mu p); with multipliers the one-pass pair of the
-   side the colouring chose, pressures and shear tractions to 1e-10; the
-   ring with multipliers restarted after step 18 of 20 equal to the
-   uninterrupted run in every digit.
-8. Bad input: the smoothed master on a self-contact pair, multipliers
-   with Passes = two-pass, and mortar with multipliers on quadratic faces
-   are refused (tests/robustness/bad_input.sh).
+   some sticking (|T| <= mu p), the same with the mixed penalty, both
+   blocks closed; the ring with the mixed penalty restarted after step
+   18 of 20 equal to the uninterrupted run in every digit.
+8. Bad input: the smoothed master on a self-contact pair and multipliers
+   (node to segment, mortar, a pair's method=) are refused
+   (tests/robustness/bad_input.sh).
 9. The C-clip (case clip; tests/data/c_clip.geo, self_contact_clip.prm):
    a lower arm, a spine and an upper arm with a rounded tooth, closed by
    a load on the arm above the tooth until the tooth touches the lower
    arm: the self pair equals the two-body pair of the tooth's end and the
    lower arm's top (two passes) to 1e-8; the penetration is the
-   penalty's (ten times the penalty, a tenth of the penetration, to 1 %;
-   none with multipliers, 1e-10); the contact force grows with the load
-   after closure (0.8 to 1.2 times its growth)."""
+   penalty's (ten times the penalty, a tenth of the penetration, to 1 %);
+   the contact force grows with the load after closure (0.8 to 1.2 times
+   its growth; penalty, primal and mixed, node to segment and mortar)."""
 # ctest: cases serial mortar clip mpi
 # ctest: mpirun-cases mpi
 # ctest: quick-cases serial
@@ -174,42 +175,38 @@ def traction_difference(rows, reference):
                                          for r in reference.values())
 
 
-def multiplier_patch_tests(discretization, label, prefix):
-    """The patch test's blocks as one surface with multipliers against the
-    one-pass pairs (2D, 3D): its closed nodes must be one block's, their
-    pressures those of the one-pass pair with that block as its slave
-    (1e-10 of the largest), the normal force its (1e-9)."""
-    for dim, prm, pair, sides in (
-            (2, "patch_test.prm", "3, 12 : 3, 12", ("12 : 3", "3 : 12")),
-            (3, "patch_test_3d.prm", "14, 5 : 14, 5", ("14 : 5", "5 : 14"))):
-        lm = ["Contact/Discretization=" + discretization,
-              "Contact/Method=lagrange multiplier"]
-        name = out + "/%s_%dd_lm_" % (prefix, dim)
-        run(tribos, tests + "/" + prm, name + "self",
-            lm + ["Contact/Pairs=" + pair])
-        one_pass = []
-        for i, side in enumerate(sides):
-            run(tribos, tests + "/" + prm, name + str(i),
-                lm + ["Contact/Pairs=" + side])
-            one_pass.append(nodal_pressures(name + str(i)))
-        self_pressures = nodal_pressures(name + "self")
-        closed = {k for k, p in self_pressures.items() if p > 0}
-        match = [i for i in (0, 1)
-                 if closed == {k for k, p in one_pass[i].items() if p > 0}]
-        worst = max(abs(self_pressures[k] - one_pass[match[0]][k])
-                    for k in closed) / max(self_pressures.values()) \
-            if len(match) == 1 else math.inf
-        force = [read_csv(f + "/history.csv")[-1]["pair0_normal_force"]
-                 for f in (name + "self", name + str(match[0]))] \
-            if len(match) == 1 else [1, 2]
-        check(worst < 1e-10 and abs(force[0] / force[1] - 1) < 1e-9,
-              "%dD patch test, %s, one self-contact surface with "
-              "multipliers: its %d closed nodes are one block's, their "
-              "pressures those of the one-pass pair %s to %.1e of the "
-              "largest (bound 1e-10), the normal force to %.1e (bound 1e-9)"
-              % (dim, label, len(closed),
-                 sides[match[0]] if match else "none", worst,
-                 abs(force[0] / force[1] - 1)))
+def mixed_patch_tests(discretization, label, prefix):
+    """The patch test's blocks as one surface with the penalty in mixed
+    form against the primal form (2D, 3D): both take both passes with half
+    weights, so the same nodes of both blocks close with the same
+    pressures (1e-6 of the largest: the two forms' Newton tolerances; one
+    slave side, as the multipliers had it, left one block open), and the
+    normal force is the same (1e-6)."""
+    for dim, prm, pair in ((2, "patch_test.prm", "3, 12 : 3, 12"),
+                           (3, "patch_test_3d.prm", "14, 5 : 14, 5")):
+        sets = ["Contact/Discretization=" + discretization,
+                "Contact/Pairs=" + pair]
+        name = out + "/%s_%dd_" % (prefix, dim)
+        run(tribos, tests + "/" + prm, name + "primal", sets)
+        run(tribos, tests + "/" + prm, name + "mixed",
+            sets + ["Contact/Penalty formulation=mixed"])
+        primal, mixed = (nodal_pressures(name + form)
+                         for form in ("primal", "mixed"))
+        worst = max(abs(mixed.get(k, math.inf) - p)
+                    for k, p in primal.items()) / max(primal.values())
+        closed = [sum(1 for p in nodal.values() if p > 0)
+                  for nodal in (primal, mixed)]
+        blocks = {k[0] for k, p in mixed.items() if p > 0}
+        force = [read_csv(name + form + "/history.csv")[-1]
+                 ["pair0_normal_force"] for form in ("primal", "mixed")]
+        check(worst < 1e-6 and len(blocks) == 2 and
+              abs(force[1] / force[0] - 1) < 1e-6,
+              "%dD patch test, %s, one self-contact surface with the "
+              "penalty in mixed form: %d nodes closed on %d blocks (primal "
+              "%d), their pressures the primal form's to %.1e of the "
+              "largest, the normal force to %.1e (bounds 1e-6)"
+              % (dim, label, closed[1], len(blocks), closed[0], worst,
+                 abs(force[1] / force[0] - 1)))
 
 
 def by_time(folder):
@@ -249,14 +246,17 @@ if "serial" in selected:
               "digits)"
               % (dim, len(pressures[0]), worst, force))
 
-    # 2. Multipliers: one side of the contact the slave; the result is
-    # the one-pass pair with that side as its slave.
-    multiplier_patch_tests("node to segment", "node to segment", "patch")
+    # 2. The penalty in mixed form: both passes, as the primal form.
+    mixed_patch_tests("node to segment", "node to segment", "patch")
 
-    # 3. The U-shaped body against its half model.
-    for method in ("penalty", "augmented lagrangian"):
+    # 3. The U-shaped body against its half model (the mixed penalty took
+    # one slave side, closed one arm and one node of the other).
+    for method, sets in (
+            ("penalty", ["Contact/Method=penalty"]),
+            ("augmented lagrangian",
+             ["Contact/Method=augmented lagrangian"]),
+            ("mixed penalty", ["Contact/Penalty formulation=mixed"])):
         name = method.replace(" ", "_")
-        sets = ["Contact/Method=" + method]
         run(tribos, u_shape, out + "/u_" + name, sets)
         run(tribos, u_shape, out + "/u_half_" + name, sets + half)
         full, reference = by_time(out + "/u_" + name), \
@@ -300,51 +300,15 @@ if "serial" in selected:
           "slot alone to %.1e at %d common times (bound 1e-3)"
           % (worst, len(common)))
 
-    # Multipliers on the U: one slave side. The first iterate of an
-    # increment carries the arms' tips through each other by more than
-    # half an element; the search must take that for a penetration (the
-    # faces the nodes were in front of at the start of the increment),
-    # not for the other side of the body (it did, and Newton diverged).
-    lm_u = out + "/u_lagrange_multiplier"
-    run(tribos, u_shape, lm_u, ["Contact/Method=lagrange multiplier"])
-    history = read_csv(lm_u + "/history.csv")
-    arms = closed_per_arm(lm_u)
-    check(len(history) == 10 and history[-1]["cutbacks"] == 0 and
-          max(r["max_penetration"] for r in history) < 1e-10 and
-          min(arms) == 0 and max(arms) >= 3,
-          "U-shaped body, multipliers: 10 increments without a cutback, "
-          "no penetration (%.1e, bound 1e-10), %d nodes closed on one arm "
-          "only (final force %.5f; the half model's %.5f: one-pass node to "
-          "segment, doc/self_contact.md)"
-          % (max(r["max_penetration"] for r in history), max(arms),
-             history[-1]["pair0_normal_force"],
-             by_time(out + "/u_half_penalty")[1.0]["pair0_normal_force"]))
-
-    # Multipliers through changes of the mesh (adapted after every step):
-    # the roles follow the carried contact status; the search after an
-    # adaptation knows the increment's start (it took the reference
-    # configuration for it, and Newton diverged at t = 0.81).
-    adapted = out + "/u_lagrange_multiplier_adaptive"
-    run(tribos, u_shape, adapted, ["Contact/Method=lagrange multiplier",
-                                   "Adaptivity/Enable=true",
-                                   "Adaptivity/Maximum level=1"])
-    history = read_csv(adapted + "/history.csv")
-    arms = closed_per_arm(adapted)
-    check(history[-1]["time"] == 1 and
-          max(r["max_penetration"] for r in history) < 1e-10 and
-          min(arms) == 0 and max(arms) >= 3,
-          "U-shaped body, multipliers, adapted after every step: reaches "
-          "t = 1 (%d increments, %d dofs at the end), no penetration "
-          "(%.1e), %d nodes closed on one arm only"
-          % (len(history), history[-1]["dofs"],
-             max(r["max_penetration"] for r in history), max(arms)))
-
     # The tube (3D): its right half crushed until the inner surface
     # closes, against the quarter with a rigid wall at y = 0 (the meshes
     # mirror each other, so the pairs of mirrored nodes are mutual).
-    for method in ("penalty", "augmented lagrangian", "lagrange multiplier"):
+    for method, sets in (
+            ("penalty", ["Contact/Method=penalty"]),
+            ("augmented lagrangian",
+             ["Contact/Method=augmented lagrangian"]),
+            ("mixed penalty", ["Contact/Penalty formulation=mixed"])):
         name = method.replace(" ", "_")
-        sets = ["Contact/Method=" + method]
         run(tribos, tube, out + "/tube_" + name, sets)
         run(tribos, tube, out + "/tube_quarter_" + name, sets + quarter)
         full = by_time(out + "/tube_" + name)
@@ -397,29 +361,35 @@ if "serial" in selected:
           "sticking with |T| <= mu p, to %.1e of the largest pressure "
           "(bound 1e-9)" % (sliding, sticking, coulomb))
 
-    # Friction with multipliers: the one-pass pair whose slave is the arm
-    # the colouring chose.
-    lm = shear + ["Contact/Method=lagrange multiplier"]
-    run(tribos, u_shape, out + "/u_friction_lm",
-        lm + ["Contact/Pairs=1 : 1 : mu=%g" % mu])
-    nodal = {}
-    for side in ("9 : 10", "10 : 9"):
-        name = out + "/u_friction_lm_" + side.replace(" : ", "_")
-        run(tribos, u_shape, name,
-            lm + ["Scene/Mesh file=u_shape_split.msh",
-                  "Contact/Pairs=%s : mu=%g" % (side, mu)])
-        nodal[side] = closed_rows(name)
-    mine = closed_rows(out + "/u_friction_lm")
-    match = [side for side in nodal if sorted(nodal[side]) == sorted(mine)]
-    worst = traction_difference(mine, nodal[match[0]]) \
-        if len(match) == 1 else math.inf
-    sliding = sum(1 for r in mine.values() if r["CSTATUS"] == 2)
-    check(worst < 1e-8 and sliding >= 1,
-          "U sheared with friction and multipliers: the self-contact pair's "
-          "%d closed nodes (%d sliding) are those of the one-pass pair %s, "
-          "pressure and shear traction to %.1e of the largest pressure "
-          "(bound 1e-8)" % (len(mine), sliding,
-                            match[0] if match else "none", worst))
+    # Friction with the penalty in mixed form: both passes, as the
+    # primal form (with one slave side its force was 1.9 % above the
+    # primal form's). Its increments are its own, and friction follows
+    # the path: the force to 1 %, Coulomb's law to round-off.
+    mixed = out + "/u_friction_mixed"
+    run(tribos, u_shape, mixed,
+        shear + ["Contact/Pairs=1 : 1 : mu=%g" % mu,
+                 "Contact/Penalty formulation=mixed"])
+    rows = closed_rows(mixed)
+    largest = max(r["CPRESS"] for r in rows.values())
+    sliding, coulomb = 0, 0.
+    for r in rows.values():
+        shear_traction = math.hypot(r["CSHEAR_x"], r["CSHEAR_y"])
+        if r["CSTATUS"] == 2:
+            sliding += 1
+            coulomb = max(coulomb, abs(shear_traction - mu * r["CPRESS"]) /
+                          largest)
+        else:
+            coulomb = max(coulomb, max(0, shear_traction - mu * r["CPRESS"])
+                          / largest)
+    force = [read_csv(f + "/history.csv")[-1]["pair0_normal_force"]
+             for f in (mixed, out + "/u_friction")]
+    check(sliding >= 1 and coulomb < 1e-9 and
+          abs(force[0] / force[1] - 1) < 0.01,
+          "U sheared with friction, the penalty in mixed form: %d closed "
+          "nodes (%d sliding), Coulomb's law to %.1e of the largest "
+          "pressure (bound 1e-9), the normal force %.5f, the primal "
+          "form's %.5f (bound 1 %%)"
+          % (len(rows), sliding, coulomb, force[0], force[1]))
 
     # 5. Restart from the checkpoint after step 5.
     folder = out + "/u_friction"
@@ -471,9 +441,30 @@ if "mortar" in selected:
               "pair's to %.1e, the normal force to %.1e (bounds 1e-9)"
               % (dim, spread, off, abs(force[0] / force[1] - 1)))
 
-    # Multipliers: one slave side per contact (the colouring), the
-    # one-pass mortar pair with that side as its slave.
-    multiplier_patch_tests("mortar", "mortar", "mortar_patch")
+    # The penalty in mixed form: both passes, as the primal form.
+    mixed_patch_tests("mortar", "mortar", "mortar_patch")
+
+    # The U with mortar and the penalty in mixed form against its half
+    # model: with one slave side it was 8 % above it (one arm closed);
+    # with both passes it reaches t = 1 (the primal form stops at the
+    # first touch, doc/self_contact.md).
+    name = out + "/u_mortar_mixed"
+    sets = ["Contact/Penalty formulation=mixed"]
+    run(tribos, u_shape, name, mortar + sets)
+    run(tribos, u_shape, name + "_half", sets + half)
+    full, reference = by_time(name), by_time(name + "_half")
+    common = [t for t in reference
+              if t in full and reference[t]["pair0_normal_force"] > 0]
+    worst = max(abs(full[t]["pair0_normal_force"] /
+                    reference[t]["pair0_normal_force"] - 1) for t in common)
+    arms = closed_per_arm(name)
+    check(1.0 in full and len(common) >= 8 and worst < 0.01 and
+          min(arms) >= 3,
+          "U-shaped body, mortar, the penalty in mixed form: the "
+          "self-contact force within %.2f %% (bound 1 %%) of the half "
+          "model's at its %d steps in contact up to t = %g; %d and %d "
+          "nodes closed on the left and right arms"
+          % (100 * worst, len(common), max(full), arms[0], arms[1]))
 
     # The ring (2D, Q1 and Q2) and the tube (3D) against their quarters.
     q2 = ["Finite element/Polynomial degree=2"]
@@ -485,16 +476,16 @@ if "mortar" in selected:
              ring_quarter + ["Contact/Method=augmented lagrangian"], 1e-3),
             ("ring, Q2, mortar, penalty", ring + mortar + q2,
              ring_quarter + q2, 1e-2),
-            ("ring, Q1, mortar, multipliers",
-             ring + mortar + ["Contact/Method=lagrange multiplier"],
-             ring_quarter + ["Contact/Method=lagrange multiplier"], 1e-3),
+            ("ring, Q1, mortar, mixed penalty",
+             ring + mortar + ["Contact/Penalty formulation=mixed"],
+             ring_quarter + ["Contact/Penalty formulation=mixed"], 1e-3),
             ("tube, mortar, penalty", mortar, quarter, 1e-3),
             ("tube, mortar, augmented Lagrangian",
              mortar + ["Contact/Method=augmented lagrangian"],
              quarter + ["Contact/Method=augmented lagrangian"], 1e-3),
-            ("tube, mortar, multipliers",
-             mortar + ["Contact/Method=lagrange multiplier"],
-             quarter + ["Contact/Method=lagrange multiplier"], 1e-3)):
+            ("tube, mortar, mixed penalty",
+             mortar + ["Contact/Penalty formulation=mixed"],
+             quarter + ["Contact/Penalty formulation=mixed"], 1e-3)):
         name = out + "/" + label.replace(", ", "_").replace(" ", "_")
         run(tribos, tube, name, half_sets)
         run(tribos, tube, name + "_quarter", quarter_sets)
@@ -532,12 +523,12 @@ if "mortar" in selected:
           "plate's force within %.1e at every step (bounds 1e-2)"
           % (curve, plate))
 
-    # Restart: the ring with mortar and multipliers restarted from its
-    # checkpoint after step 18 of 20 (closed since step 18: the roles
-    # follow from the committed states).
+    # Restart: the ring with mortar and the mixed penalty restarted from
+    # its checkpoint after step 18 of 20 (closed since step 18: the
+    # checkpoint holds the traction unknowns).
     folder = out + "/mortar_ring_restart"
     copy = folder + "_restarted"
-    sets = ring + mortar + ["Contact/Method=lagrange multiplier",
+    sets = ring + mortar + ["Contact/Penalty formulation=mixed",
                             "Output/Checkpoint every=1"]
     run(tribos, tube, folder, sets)
     shutil.rmtree(copy, ignore_errors=True)
@@ -548,7 +539,7 @@ if "mortar" in selected:
         extra=["--restart", folder + "/checkpoint-00018"])
     check(restart_identical(folder, copy) and
           read_csv(folder + "/history.csv")[-1]["pair2_normal_force"] > 0,
-          "ring, mortar with multipliers, restarted after step 18 of 20 (in "
+          "ring, mortar, mixed penalty, restarted after step 18 of 20 (in "
           "contact): history.csv and the last contact CSV equal in every "
           "digit (residuals and Newton iterations included)")
 
@@ -584,27 +575,28 @@ if "mortar" in selected:
           "mu p, to %.1e (bound 1e-9); normal force %.6f, the one-pass "
           "pair's %.6f (bound 1e-3)"
           % (mu, sliding, sticking, coulomb, force[0], force[1]))
-    # With multipliers: the one-pass pair whose slave is the block the
-    # colouring chose, friction included.
-    lm = load + ["Contact/Method=lagrange multiplier"]
-    run(tribos, tests + "/patch_test.prm", sheared + "_lm",
-        lm + ["Contact/Pairs=3, 12 : 3, 12 : mu=%g" % mu])
-    rows = closed_rows(sheared + "_lm")
-    differences = []
-    for i, side in enumerate(("12 : 3", "3 : 12")):
-        run(tribos, tests + "/patch_test.prm", sheared + "_lm_%d" % i,
-            lm + ["Contact/Pairs=%s : mu=%g" % (side, mu)])
-        differences.append(traction_difference(
-            rows, closed_rows(sheared + "_lm_%d" % i)))
-    sliding = sum(1 for r in rows.values() if r["CSTATUS"] == 2)
-    check(min(differences) < 1e-10 and sliding >= 2,
-          "patch test sheared as one self-contact surface, mortar with "
-          "multipliers, mu = %g: its %d closed nodes (%d sliding) those of "
-          "the one-pass pair %s, pressure and shear traction to %.1e of the "
-          "largest pressure (bound 1e-10)"
-          % (mu, len(rows), sliding,
-             ("12 : 3", "3 : 12")[differences.index(min(differences))],
-             min(differences)))
+    # The penalty in mixed form: both passes (one slave side closed one
+    # block only), Coulomb's law at every closed node.
+    run(tribos, tests + "/patch_test.prm", sheared + "_mixed",
+        load + ["Contact/Pairs=3, 12 : 3, 12 : mu=%g" % mu,
+                "Contact/Penalty formulation=mixed"])
+    rows = last_contact(sheared + "_mixed")
+    blocks = {r["body"] for r in rows if r["CPRESS"] > 0}
+    coulomb = 0.
+    for r in rows:
+        if r["CPRESS"] > 0:
+            bound = mu * r["CPRESS"]
+            traction = math.hypot(r["CSHEAR_x"], r["CSHEAR_y"])
+            coulomb = max(coulomb, (abs(traction - bound)
+                                    if r["CSTATUS"] == 2 else
+                                    max(0, traction - bound)) / bound)
+    check(len(blocks) == 2 and coulomb < 1e-9,
+          "patch test sheared as one self-contact surface, mortar, the "
+          "penalty in mixed form, mu = %g: %d nodes closed on %d blocks "
+          "(bound 2), %d sliding, Coulomb's law to %.1e (bound 1e-9)"
+          % (mu, sum(1 for r in rows if r["CPRESS"] > 0), len(blocks),
+             sum(1 for r in rows if r["CPRESS"] > 0 and r["CSTATUS"] == 2),
+             coulomb))
 
 # 9. The C-clip closing onto itself.
 if "clip" in selected:
@@ -613,9 +605,9 @@ if "clip" in selected:
              "Contact/Passes=two-pass"]
     runs = {"penalty": [], "two_pass": split,
             "stiff": ["Contact/Penalty factor=10000*E/h"],
-            "multipliers": ["Contact/Method=lagrange multiplier"],
-            "mortar_multipliers": ["Contact/Discretization=mortar",
-                                   "Contact/Method=lagrange multiplier"]}
+            "mixed": ["Contact/Penalty formulation=mixed"],
+            "mortar_mixed": ["Contact/Discretization=mortar",
+                             "Contact/Penalty formulation=mixed"]}
     histories = {}
     for name, sets in runs.items():
         run(tribos, clip, out + "/clip_" + name, sets)
@@ -636,19 +628,16 @@ if "clip" in selected:
           "two passes) to %.1e at all %d times (bound 1e-8), %d nodes "
           "closed at the end" % (worst, len(b), closed))
     # The penetration is the penalty's: ten times the penalty, a tenth of
-    # it, the same force; none with multipliers.
+    # it, the same force.
     stiff = histories["stiff"]
     ratio = a[1.0]["max_penetration"] / stiff[1.0]["max_penetration"]
     change = abs(force(stiff[1.0]) / force(a[1.0]) - 1)
-    exact = max(histories[m][1.0]["max_penetration"]
-                for m in ("multipliers", "mortar_multipliers"))
-    check(abs(ratio / 10 - 1) < 0.01 and change < 1e-4 and exact < 1e-10,
+    check(abs(ratio / 10 - 1) < 0.01 and change < 1e-4,
           "C-clip: the penetration is the penalty's (1000 E/h %.2e, "
           "10000 E/h %.2e: a ratio of %.3f, bound 10 to 1 %%; the force "
-          "changes by %.1e, bound 1e-4); with multipliers %.1e (node to "
-          "segment and mortar, bound 1e-10)"
+          "changes by %.1e, bound 1e-4)"
           % (a[1.0]["max_penetration"], stiff[1.0]["max_penetration"],
-             ratio, change, exact))
+             ratio, change))
     # The load added after the clip has closed goes through the contact:
     # between t = 0.5 and 1 the contact force grows as the load does, up
     # to the spine's share through the arm's moment (measured 4.9 % to
@@ -656,31 +645,28 @@ if "clip" in selected:
     # none of it, one counted twice twice.
     load = 0.002 * 0.5
     shares = {m: (force(histories[m][1.0]) - force(histories[m][0.5])) /
-              (0.5 * load) for m in ("penalty", "multipliers",
-                                     "mortar_multipliers")}
+              (0.5 * load) for m in ("penalty", "mixed", "mortar_mixed")}
     check(all(0.8 < v < 1.2 for v in shares.values()),
           "C-clip: the contact force grows by %s times the load's growth "
-          "between t = 0.5 and 1 (penalty, multipliers, mortar with "
-          "multipliers; bound 0.8 to 1.2)"
+          "between t = 0.5 and 1 (penalty, mixed penalty, mortar with the "
+          "mixed penalty; bound 0.8 to 1.2)"
           % ", ".join("%.3f" % v for v in shares.values()))
 
 # 6. -np 2 against serial.
 if "mpi" in selected and mpi_part(selected):
-    # Penalty, and multipliers with friction on the sheared U (the slave
-    # side chosen alike on both processes).
+    # Penalty, and the mixed penalty (traction unknowns of both passes,
+    # each owned by its node's process) with friction on the sheared U.
+    mixed = ["Contact/Penalty formulation=mixed"]
     sheared = ["Boundary conditions/Neumann=8 : 0.15*t, 0 ; 7 : -0.15*t, 0 ;"
                " 6 : 0, 0.06*t ; 2 : 0, -0.06*t",
-               "Contact/Pairs=1 : 1 : mu=0.3",
-               "Contact/Method=lagrange multiplier"]
+               "Contact/Pairs=1 : 1 : mu=0.3"] + mixed
     for name, prm, sets in (
             ("penalty", u_shape, []),
-            ("multipliers_friction", u_shape, sheared),
-            ("tube_multipliers", tube,
-             ["Contact/Method=lagrange multiplier"]),
+            ("mixed_friction", u_shape, sheared),
+            ("tube_mixed", tube, mixed),
             ("ring_mortar", tube, ring + ["Contact/Discretization=mortar"]),
-            ("ring_mortar_multipliers", tube,
-             ring + ["Contact/Discretization=mortar",
-                     "Contact/Method=lagrange multiplier"])):
+            ("ring_mortar_mixed", tube,
+             ring + ["Contact/Discretization=mortar"] + mixed)):
         run(tribos, prm, out + "/u_serial_" + name, sets)
         run(tribos, prm, out + "/u_np2_" + name, sets, mpi_ranks=2)
         serial = by_time(out + "/u_serial_" + name)

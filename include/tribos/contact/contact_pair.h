@@ -50,7 +50,8 @@ namespace tribos
      * ill-conditioned).
      */
     double contact_modulus = 0;
-    /** 1/2 with two passes (each pass carries half the area), else 1. */
+    /** 1/2 with two passes and on a self-contact pair (each pass carries
+     * half the area), else 1. */
     double area_factor = 1;
     /** The number of the first of the enforcement's unknowns (if any):
      * node k's are first_unknown + n_node_unknowns k + d. */

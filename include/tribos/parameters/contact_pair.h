@@ -143,8 +143,10 @@ namespace tribos
      * for all of its ids in both directions) whose slave ids share one and
      * whose master ids share one, or that name the same rigid surface;
      * the same interface written twice with slave and master swapped,
-     * with a method that holds the gap exactly, holds the same gap twice.
-     * Needs Contact::two_pass parsed.
+     * with a method that holds the gap exactly, holds the same gap twice;
+     * a self-contact pair with such a method would either hold each gap
+     * twice or, one side only, let the other side through
+     * (doc/self_contact.md). Needs Contact::two_pass parsed.
      */
     void
     check_interfaces(const Contact &contact);

@@ -1,7 +1,6 @@
 #include <tribos/base/exceptions.h>
 #include <tribos/contact/contact_pair.h>
 #include <tribos/contact/discretization/mortar_discretization.h>
-#include <tribos/contact/discretization/self_contact_roles.h>
 
 #include <algorithm>
 #include <cmath>
@@ -55,16 +54,6 @@ namespace tribos
     const unsigned int n_slaves = pair.n_nodes();
     faces_of_node.assign(n_slaves, {});
     self_search.initialize(pair, parameters.search_distance);
-    AssertThrow(!self_search.active() || !pair.slave->quadratic() ||
-                  pair.enforcement->n_node_unknowns() == 0,
-                ExcMessage("Contact pair <" + pair.description.text +
-                           ">: a self-contact pair with Lagrange multipliers "
-                           "takes mortar on linear faces only (on the "
-                           "quadratic faces of Polynomial degree = 2 the "
-                           "one slave side per contact does not converge "
-                           "where a fold closes to its tip); use Contact/"
-                           "Method = penalty or augmented lagrangian, or "
-                           "Polynomial degree = 1."));
     // The standard quadratic functions of the vertex on the axis
     // integrate to zero against 2 pi r: that node carries no multiplier,
     // the others then miss a partition of unity and Newton does not
@@ -522,38 +511,6 @@ namespace tribos
       return {ElementOutcome::Kind::unpaired, false};
     state.point = point;
     return {ElementOutcome::Kind::element, true};
-  }
-
-
-
-  template <int dim>
-  void
-  MortarDiscretization<dim>::finish_pairing(ContactPair<dim> &pair,
-                                            const MPI_Comm    communicator)
-  {
-    if (!self_search.active() || pair.enforcement->n_node_unknowns() == 0)
-      return;
-    // A paired node has a face within its segment's length along the
-    // normal (find_faces()), or behind it however deep: every paired node
-    // is near, joined to the nodes of every face its element integrates.
-    // A slave at the last converged increment: closed or paired.
-    std::vector<std::vector<unsigned int>> targets(pair.n_nodes());
-    std::vector<bool>                      was_slave(pair.n_nodes(), false);
-    std::vector<unsigned int>              faces;
-    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-    {
-      was_slave[k] = pair.committed[k].closed() || pair.committed[k].paired;
-      if (!pair.current[k].paired || pair.current[k].face < 0)
-        continue;
-      element_master_faces(pair, k, faces);
-      for (const unsigned int f : faces)
-        for (unsigned int v = 0; v < pair.master->faces()[f].n_vertices; ++v)
-          targets[k].push_back(pair.master->faces()[f].nodes[v]);
-      std::sort(targets[k].begin(), targets[k].end());
-      targets[k].erase(std::unique(targets[k].begin(), targets[k].end()),
-                       targets[k].end());
-    }
-    assign_self_contact_roles(pair, targets, was_slave, communicator);
   }
 
 

@@ -3,7 +3,6 @@
 #include <tribos/contact/discretization/discretization_method.h>
 #include <tribos/contact/discretization/node_to_segment_discretization.h>
 #include <tribos/contact/discretization/rigid_surface_discretization.h>
-#include <tribos/contact/discretization/self_contact_roles.h>
 #include <tribos/contact/discretization/smoothed_node_to_face_discretization.h>
 #include <tribos/contact/discretization/smoothed_node_to_segment_discretization.h>
 
@@ -256,44 +255,6 @@ namespace tribos
       state.projection          = extended;
     }
     return couple_face(pair, k);
-  }
-
-
-
-  template <int dim>
-  void
-  NodeToSegmentDiscretization<dim>::finish_pairing(ContactPair<dim> &pair,
-                                                   const MPI_Comm communicator)
-  {
-    if (!self_search.active() || pair.enforcement->n_node_unknowns() == 0)
-      return;
-    // Near: paired within two element sizes of its face, or behind it (a
-    // node carried deep through the opposite side must have a role). A
-    // slave at the last converged increment: closed, or paired within two
-    // element sizes (the status survives a change of the mesh).
-    std::vector<std::vector<unsigned int>> targets(pair.n_nodes());
-    std::vector<bool>                      was_slave(pair.n_nodes(), false);
-    for (unsigned int k = 0; k < pair.n_nodes(); ++k)
-    {
-      const NodeState &state     = pair.current[k];
-      const NodeState &committed = pair.committed[k];
-      const double     size      = pair.slave->nodes()[k].size;
-      was_slave[k] =
-        committed.closed() || (committed.paired && committed.face >= 0 &&
-                               committed.projection.distance < 2 * size);
-      if (!pair.owned[k] || !state.paired || state.face < 0)
-        continue;
-      Vec3<double> n, xbar;
-      project(pair, state.face, pair.slave_positions[k], true, &n, &xbar);
-      if (state.projection.distance < 2 * size ||
-          dot(pair.slave_positions[k] - xbar, n) < 0)
-      {
-        const auto &face = pair.master->faces()[state.face];
-        targets[k].assign(face.nodes.begin(),
-                          face.nodes.begin() + face.n_vertices);
-      }
-    }
-    assign_self_contact_roles(pair, targets, was_slave, communicator);
   }
 
 

@@ -53,7 +53,6 @@ namespace tribos
     for (unsigned int k = 0; k < pair.n_nodes(); ++k)
       if (pair.owned[k] && !pair.excluded[k])
         new_coupling = pair.discretization->pair_node(pair, k) || new_coupling;
-    pair.discretization->finish_pairing(pair, communicator);
     return new_coupling;
   }
 

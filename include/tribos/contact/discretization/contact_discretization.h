@@ -157,17 +157,6 @@ namespace tribos
       return {};
     }
 
-    /**
-     * Called on every process after pair_node() has paired the owned
-     * nodes of @p pair: a decision that needs the pairings of all nodes
-     * (self-contact's slave and master sides with multipliers).
-     * Collective.
-     */
-    virtual void
-    finish_pairing(ContactPair<dim> & /*pair*/, const MPI_Comm /*communicator*/)
-    {
-    }
-
     /** The couplings of @p pair's registered (slave node, master face)
      * pairs into @p dsp, condensed through @p constraints. */
     virtual void

@@ -89,12 +89,6 @@ namespace tribos
     bool
     pair_node(ContactPair<dim> &pair, const unsigned int k) override;
 
-    /** Self-contact with multipliers: one side of each contact the slave
-     * (assign_self_contact_roles()). */
-    void
-    finish_pairing(ContactPair<dim> &pair,
-                   const MPI_Comm    communicator) override;
-
     void
     add_couplings(const ContactPair<dim>          &pair,
                   const AffineConstraints<double> &constraints,

@@ -55,12 +55,6 @@ namespace tribos
       return self_search.warnings();
     }
 
-    /** Self-contact with multipliers: one side of each contact the slave
-     * (assign_self_contact_roles()). */
-    void
-    finish_pairing(ContactPair<dim> &pair,
-                   const MPI_Comm    communicator) override;
-
     ElementOutcome
     evaluate(ContactPair<dim>                     &pair,
              const unsigned int                    k,
