@@ -254,6 +254,51 @@ namespace tribos
   ContactHandler<dim>::accept_iterate(
     const std::function<void(const std::string &)> &say)
   {
+    // A slave node in contact at the increment's start whose contact
+    // normal has turned over went through the master: a node inside a
+    // rigid circle or sphere that passes its centre is pushed out through
+    // the far side, a node behind a face meets the master's far side. The
+    // penalty's force then changes its sign, and the contact lets go with
+    // no word (a block whose top was held, pushed through by a circle
+    // with a penalty of 0.1 E/h: the force rose to 0.064, then fell to 0
+    // as the circle came out at the top, exit 0). The increment is cut;
+    // where smaller ones go through too, the run stops with this message.
+    unsigned int n_through = 0;
+    std::string  first;
+    for (const auto &pair : contact_pairs)
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      {
+        const auto &before = pair.committed[k].result;
+        const auto &now    = pair.current[k].result;
+        if (!pair.owned[k] || !pair.committed[k].closed() ||
+            !pair.current[k].paired || dot(before.normal, now.normal) >= 0)
+          continue;
+        if (n_through++ == 0)
+        {
+          const auto &x = pair.slave_positions[k];
+          first         = "contact pair <" + pair.description.text +
+                  ">, the slave node at (" + to_scientific(x[0]) + ", " +
+                  to_scientific(x[1]) +
+                  (dim == 3 ? ", " + to_scientific(x[2]) : std::string()) + ")";
+        }
+      }
+    const unsigned int n_all = Utilities::MPI::sum(n_through, mpi_communicator);
+    if (n_all > 0)
+    {
+      // The first one's description from the first process that has one.
+      const auto all = Utilities::MPI::all_gather(mpi_communicator, first);
+      first          = *std::find_if(all.begin(),
+                            all.end(),
+                            [](const std::string &s) { return !s.empty(); });
+      throw NonConvergence(
+        std::to_string(n_all) +
+        " slave node(s) in contact at the increment's start went through "
+        "the master (their contact normal turned over; first " +
+        first +
+        "): the contact does not hold them, a body pushed against what it "
+        "cannot pass (a support, another body) or a penalty too soft for "
+        "the load (Contact/Penalty factor); cutting the increment");
+    }
     return monitor.accept(contact_pairs, say);
   }
 

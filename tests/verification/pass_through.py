@@ -12,7 +12,12 @@
     the increment's start and end, so the end gaps closed the increment
     with zero force. Now the swept path is checked: the increment is cut
     back until the circle cannot jump over a node, and the result equals
-    a run of twenty increments."""
+    a run of twenty increments.
+(3) A rigid circle pushed through a block whose top is held, with a soft
+    penalty: the contact force rose and then fell to 0 as the circle came
+    out at the top, exit 0. A node in contact whose contact normal turns
+    over went through the master: the increment is cut, and the run
+    stops with exit 2 and a message naming the pair and the node."""
 
 import sys
 
@@ -80,4 +85,32 @@ check(last(one)["cutbacks"] >= 1,
 check(f20 > 1 and abs(f1 - f20) < 1e-6 * f20,
       "tunnelling: normal force %.10g after the cut increment, %.10g in "
       "twenty increments" % (f1, f20))
+
+# (3) A block whose top is held, pushed through by a rigid circle with a
+# soft penalty (0.1 E/h: within the range that draws no warning): the
+# nodes sink into the circle, pass its centre and come out at its far
+# side. The run completed with exit 0, the force rising to 0.064 and then
+# falling to 0 at t = 0.6 as if the circle had let go. Now the increment
+# in which a node in contact has its contact normal turned over is cut,
+# and since smaller ones go through too the run stops (exit 2) naming
+# the pair and the node, with the converged steps kept.
+held = run(tribos, tests + "/pass_through.prm", out + "/held_top",
+           ["Scene/Name=block", "Materials/Young's modulus=1",
+            "Contact/Discretization=node to segment",
+            "Scene/Block/Upper corner=1, 0.3",
+            "Scene/Block/Subdivisions=8, 3",
+            "Boundary conditions/Dirichlet=3 : xy : 0, 0",
+            "Contact/Pairs=2 : ball",
+            "Contact/Rigid surfaces=ball : cylinder : 0.5, -0.3, 0 : 0.3 : "
+            "0, 1.0*t",
+            "Contact/Penalty factor=0.1*E/h",
+            "Time stepping/Number of steps=10"], expect_success=False)
+rows = read_csv(out + "/held_top/history.csv")
+check(held.returncode == 2 and "went through the master" in held.stderr and
+      "<2 : ball>" in held.stderr and len(rows) >= 3 and
+      min(r["pair0_normal_force"] for r in rows) > 0,
+      "a circle pushed through a block whose top is held: exit %d, '%s', "
+      "%d converged increments kept, every one with a contact force"
+      % (held.returncode, "went through the master" if "went through"
+         in held.stderr else held.stderr.strip()[-200:], len(rows)))
 finish()
