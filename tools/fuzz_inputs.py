@@ -17,7 +17,10 @@ address space (RLIMIT_AS, --memory GB; 0: none). Outcomes:
   no convergence  exit 2: legal input that Newton could not solve; listed
                 so that a bad value slipping through shows
   crash         killed by a signal or any other exit status
-  hang          no end within the time limit
+  hang          no end within the time limit, nothing written to its log
+                or convergence.csv in its last PROGRESS_SECONDS
+  slow          no end within the time limit, but still iterating (a
+                legal model that takes longer: not counted as bad)
   half output   exit 1 with a history.csv written (bad input must write
                 nothing)
   memory        stopped by the address space limit: std::bad_alloc, "out
@@ -97,6 +100,9 @@ import tempfile
 import time
 import types
 
+from fuzz_mutations import (MESHES, mutate_mesh, DECKS, BODY_SETS,
+                            BOUNDARY_SETS, mutate_deck)
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = ["tests/data/neo_hookean_stretch.prm", "tests/data/sliding_block.prm",
           "tests/data/sliding_blocks_3d.prm", "parameters/bar_impact.prm",
@@ -169,12 +175,19 @@ def short_run(scene):
     return sets
 
 
-def run(command, timeout, memory, work, cwd=None):
+#: A run still writing its log or convergence.csv this many seconds
+#: before its time limit is slow, not hung.
+PROGRESS_SECONDS = 30
+
+
+def run(command, timeout, memory, work, cwd=None, folder=None):
     """command with its standard input from /dev/null and its address space
     limited to memory bytes (0: no limit), killed with its process group
     after timeout seconds. Returns (result, timed_out, peak): result has
-    returncode (None if it timed out), stdout and stderr, peak is the
-    largest address space (VmPeak) seen while it ran, in bytes."""
+    returncode (None if it timed out), stdout and stderr, and progressing
+    (whether, timed out, it had written to its log or to folder's
+    convergence.csv within PROGRESS_SECONDS), peak is the largest address
+    space (VmPeak) seen while it ran, in bytes."""
     def limit():
         if memory:
             resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
@@ -185,6 +198,7 @@ def run(command, timeout, memory, work, cwd=None):
                                    stdout=out, stderr=err, cwd=cwd,
                                    preexec_fn=limit, start_new_session=True)
     peak, end, timed_out = 0, time.time() + timeout, False
+    progressing = False
     while process.poll() is None:
         try:
             with open("/proc/%d/status" % process.pid) as f:
@@ -195,6 +209,11 @@ def run(command, timeout, memory, work, cwd=None):
             pass
         if time.time() > end:
             timed_out = True
+            watched = [names[0]] + ([os.path.join(folder, "convergence.csv")]
+                                    if folder else [])
+            latest = max([os.path.getmtime(w) for w in watched
+                          if os.path.exists(w)] + [0])
+            progressing = time.time() - latest < PROGRESS_SECONDS
             try:
                 os.killpg(process.pid, signal.SIGKILL)
             except OSError:
@@ -209,7 +228,7 @@ def run(command, timeout, memory, work, cwd=None):
         os.remove(name)
     result = types.SimpleNamespace(
         returncode=None if timed_out else process.returncode,
-        stdout=texts[0], stderr=texts[1])
+        stdout=texts[0], stderr=texts[1], progressing=progressing)
     return result, timed_out, peak
 
 
@@ -221,7 +240,7 @@ def classify(result, entry, folder, timed_out, peak=0, memory=0, names=()):
     or compiled patterns whose presence in the message makes exit 1 an
     input error."""
     if timed_out:
-        return "hang"
+        return "slow" if result.progressing else "hang"
     code = result.returncode
     text = result.stderr
     last = entry.split("/")[-1]
@@ -365,56 +384,38 @@ def judge(result, entry, folder, timed_out, peak, memory, names=(),
     return outcome, message
 
 
-# Mesh files to mutate (Dimension, file): first and second order, MSH 2.2
-# and (converted by gmsh where it is installed) 4.1.
-MESHES = [(2, "tests/data/two_squares.msh"), (2, "tests/data/square_tagged_sides.msh"),
-          (2, "tests/data/triangles.msh"), (2, "tests/data/inclined_square.msh"),
-          (2, "tests/data/quarter_disc_tri6.msh"),
-          (2, "tests/data/quarter_disc_quad8.msh"),
-          (2, "tests/data/quarter_disc_quad9.msh"),
-          (3, "tests/data/ball_octant_tet10.msh"),
-          (3, "tests/data/ball_octant_hex20.msh"),
-          (3, "tests/data/ball_octant_hex27.msh")]
-TOKENS = ["0", "-1", "1e18", "4294967296", "9223372036854775808", "nan",
-          "inf", "1e999", "abc", "", "2.5", "99", "1 2", "$Nodes",
-          "$EndElements", "3.0", "2147483648"]
+class Campaign:
+    """The runs of one fuzz campaign: each case run, judged, counted, kept
+    as a CSV row and printed."""
 
+    def __init__(self, tribos, timeout, memory, work):
+        self.tribos, self.timeout, self.memory = tribos, timeout, memory
+        self.work = work
+        self.counts = collections.Counter()
+        self.rows = []
 
-def mutate_mesh(text, generator):
-    """One random defect in a gmsh file's text: a line deleted, repeated or
-    swapped with the next, a number replaced by a hostile token, a token
-    added or removed, or the file cut. Returns (text, what was done)."""
-    lines = text.split("\n")
-    i = generator.randrange(len(lines))
-    kind = generator.randrange(7)
-    if kind == 0:
-        return "\n".join(lines[:i] + lines[i + 1:]), "line %d deleted" % (i + 1)
-    if kind == 1:
-        return ("\n".join(lines[:i + 1] + lines[i:]),
-                "line %d repeated" % (i + 1))
-    if kind == 2 and i + 1 < len(lines):
-        lines[i], lines[i + 1] = lines[i + 1], lines[i]
-        return "\n".join(lines), "lines %d and %d swapped" % (i + 1, i + 2)
-    if kind == 6:
-        cut = generator.randrange(len(text))
-        return text[:cut], "cut after %d characters" % cut
-    tokens = lines[i].split()
-    if not tokens:
-        return "\n".join(lines[:i] + lines[i + 1:]), "blank line deleted"
-    j = generator.randrange(len(tokens))
-    if kind == 3:
-        tokens.insert(j, generator.choice(TOKENS))
-        what = "token added to line %d" % (i + 1)
-    elif kind == 4 and len(tokens) > 1:
-        del tokens[j]
-        what = "token %d of line %d removed" % (j + 1, i + 1)
-    else:
-        token = generator.choice(TOKENS)
-        what = "line %d token %d <%s> -> <%s>" % (i + 1, j + 1, tokens[j],
-                                                 token)
-        tokens[j] = token
-    lines[i] = " ".join(tokens)
-    return "\n".join(lines), what
+    def case(self, case, prm, sets, folder, scene, entry, mutation,
+             names=(), cwd=None, values=None, width=30):
+        """Run tribos on prm with the overrides sets into folder, judge it
+        (entry the one fuzzed, names the others a message may name) and
+        record it; mutation as shown (cut to width characters)."""
+        command = [self.tribos, prm, "--set", "Output/Directory=" + folder]
+        for s in sets:
+            command += ["--set", s]
+        result, timed_out, peak = run(command, self.timeout, self.memory,
+                                      self.work, cwd=cwd, folder=folder)
+        outcome, message = judge(result, entry, folder, timed_out, peak,
+                                 self.memory, names, values=values)
+        self.counts[outcome] += 1
+        shown = mutation if len(mutation) <= width else \
+            "%s... (%d chars)" % (mutation[:10], len(mutation))
+        self.rows.append({"case": case, "scene": scene, "entry": entry,
+                          "value": shown, "outcome": outcome,
+                          "exit": "" if timed_out else result.returncode,
+                          "message": message})
+        print("%3d %-15s %-30s %-40s %s" % (case, outcome, scene,
+                                            entry[-40:], shown), flush=True)
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def mesh_sources(work):
@@ -432,197 +433,36 @@ def mesh_sources(work):
     return sources
 
 
-def fuzz_meshes(tribos, n_cases, generator, timeout, counts, rows, work,
-                memory=0):
+def fuzz_meshes(campaign, n_cases, generator):
     """n_cases runs of the gmsh scene on mutated mesh files."""
     prm = os.path.join(ROOT, "tests", "data", "gmsh_import.prm")
-    sources = mesh_sources(work)
+    sources = mesh_sources(campaign.work)
     for case in range(n_cases):
         dim, source = generator.choice(sources)
         text, mutation = mutate_mesh(open(source).read(), generator)
-        mesh = os.path.join(work, "mesh_%03d.msh" % case)
+        mesh = os.path.join(campaign.work, "mesh_%03d.msh" % case)
         with open(mesh, "w") as f:
             f.write(text)
-        folder = os.path.join(work, "mesh_case_%03d" % case)
-        command = [tribos, prm, "--set", "Output/Directory=" + folder,
-                   "--set", "Dimension=%d" % dim,
-                   "--set", "Scene/Mesh file=" + mesh,
-                   "--set", "Scene/Refinement=0",
-                   "--set", "Materials/Young's modulus=1",
-                   "--set", "Boundary conditions/Dirichlet=",
-                   "--set", "Boundary conditions/Body force=" +
-                   ", ".join(["0"] * dim)]
-        result, timed_out, peak = run(command, timeout, memory, work)
-        outcome, message = judge(result, "Scene/Mesh file", folder,
-                                 timed_out, peak, memory)
-        counts[outcome] += 1
-        rows.append({"case": case, "scene": os.path.basename(source),
-                     "entry": "Scene/Mesh file", "value": mutation,
-                     "outcome": outcome,
-                     "exit": "" if timed_out else result.returncode,
-                     "message": message})
-        print("%3d %-15s %-30s %s" % (case, outcome,
-                                      os.path.basename(source), mutation),
-              flush=True)
-        shutil.rmtree(folder, ignore_errors=True)
+        campaign.case(case, prm,
+                      ["Dimension=%d" % dim, "Scene/Mesh file=" + mesh,
+                       "Scene/Refinement=0", "Materials/Young's modulus=1",
+                       "Boundary conditions/Dirichlet=",
+                       "Boundary conditions/Body force=" +
+                       ", ".join(["0"] * dim)],
+                      os.path.join(campaign.work, "mesh_case_%03d" % case),
+                      os.path.basename(source), "Scene/Mesh file", mutation,
+                      width=80)
         os.remove(mesh)
 
 
-# The abaqus scenes: (parameter file, its deck).
-DECKS = [("tests/data/blocks_on_plate.prm", "tests/data/blocks_on_plate.inp"),
-         ("tests/data/blocks_on_plate_3d.prm",
-          "tests/data/blocks_on_plate_3d.inp")]
-ELEMENT_TYPES = ["CPE4", "CPE8", "CPE3", "CPS4R", "CAX4", "C3D8", "C3D20",
-                 "C3D4", "C3D27", "C3D8I", "S4R", "B31", "SPRINGA", "", "cpe4",
-                 "CPE4HX", "T3D2"]
-GENERATE_LINES = ["1, 1000000000, 1", "1, 5, 0", "1, 9, 0", "5, 1, 1",
-                  "1, 9, -1", "1, 18446744073709551616, 1",
-                  "1, 5, 1000000000", "1, 4294967296, 1", "0, 0, 0",
-                  "1, 9, 2.5", "1", "1, 2, 3, 4", "1, 9, 4"]
-SET_NAMES = ["NOSUCHSET", "", "Eall", "PLATE_TOP", "BOTTOM", "S1", "1e300",
-             "plate", "101", "X" * 300, "A B"]
-COORDINATES = ["1e300", "-1e300", "1e151", "1e150", "nan", "inf", "1e-320",
-               "0x10", "", "1.0.0", "1e999"]
-# Keyword lines to add; {self} is the deck's own file.
-DECK_KEYWORDS = ["*PART, NAME=P1", "*END PART", "*INSTANCE, NAME=I, PART=P1",
-                 "*NGEN, NSET=G", "*ELGEN, ELSET=PLATE", "*SYSTEM",
-                 "*INCLUDE, INPUT=missing.inp", "*INCLUDE, INPUT={self}",
-                 "*INCLUDE, INPUT=/dev/zero", "*INCLUDE", "*NODE, NSET=BOTTOM",
-                 "*ELEMENT, TYPE=CPE4", "*ELEMENT", "*ELEMENT, TYPE=C3D8",
-                 "*NSET, NSET=BLOCK, ELSET=PLATE", "*SURFACE, NAME=PLATE_TOP",
-                 "*ELSET, ELSET=PLATE, GENERATE", "*SURFACE",
-                 "*NSET, NSET=NOSUCH, GENERATE", "*", "*HEADING",
-                 "*ELSET, ELSET=EALL, INTERNAL", "*NSET, NSET=Nall", "*STEP",
-                 "*ELEMENT, TYPE=CPE4, ELSET=PLATE, ELSET=BLOCK"]
-# Hostile Scene/Body sets and Boundary sets of the two decks.
-BODY_SETS = ["PLATE : 0, BLOCK : 1", "X : 1", "PLATE : 1, BLOCK : 2147483648",
-             "PLATE : 1, PLATE : 2, BLOCK : 3", "PLATE : 1, BLOCK : 1",
-             "PLATE : 1", "plate : 1, block : 2", "PLATE : -1, BLOCK : 2",
-             "PLATE, BLOCK", "PLATE : 1 : 2, BLOCK : 2",
-             "PLATE : 1,, BLOCK : 2",
-             ":", "PLATE : nan, BLOCK : 2", "PLATE : 1e3, BLOCK : 2",
-             "BOTTOM : 1, BLOCK : 2", "PLATE : 1, BLOCK : 2147483647",
-             "PLATE : 1, BLOCK : 2, BLOCK : 2", "SURFACE:PLATE : 1, BLOCK : 2",
-             "PLATE:1,BLOCK:2", "PLATE : 1, BLOCK : 2, Eall : 3"]
-BOUNDARY_SETS = [
-    "BOTTOM : 0, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4", "X : 1",
-    "BOTTOM : 2147483648, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4",
-    "BOTTOM : 1, BOTTOM : 1, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4",
-    "BOTTOM : 1, BOTTOM : 5, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4",
-    "BOTTOM : 1, TOP : 2", "BOTTOM : 1, TOP : 1, BLOCK_BOTTOM : 3, "
-    "PLATE_TOP : 4", "BOTTOM : 1, TOP : 2, BLOCK_BOTTOM : 4, PLATE_TOP : 3",
-    "NSET:BOTTOM : 1, NSET:TOP : 2, SURFACE:BLOCK_BOTTOM : 3, "
-    "SURFACE:PLATE_TOP : 4",
-    "SURFACE:BOTTOM : 1, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4",
-    "BOTTOM : 1, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4, Nall : 5",
-    "BOTTOM : 1, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4, PLATE : 5",
-    "BOTTOM : 2147483647, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4",
-    "BOTTOM : 1, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 3",
-    "BOTTOM : -1, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4",
-    "BOTTOM : 1; TOP : 2; BLOCK_BOTTOM : 3; PLATE_TOP : 4"]
-
-
-def mutate_deck(text, generator, own):
-    """One random defect in an Abaqus deck's text (own: the deck's file,
-    for an *INCLUDE of itself): one of mutate_mesh's, a field of a data
-    line replaced by a hostile token, a node's coordinate made hostile,
-    another *ELEMENT TYPE=, a hostile GENERATE line, a set name the deck
-    lacks, a hostile keyword line added, a keyword misspelt or commented
-    out. Returns (text, what was done)."""
-    lines = text.split("\n")
-    # The keyword whose data each line is ("" for keyword and comment
-    # lines and those before the first keyword).
-    block, owner = "", []
-    for line in lines:
-        if line.startswith("**") or not line.strip():
-            owner.append("")
-        elif line.startswith("*"):
-            block = line
-            owner.append("")
-        else:
-            owner.append(block)
-    data = [i for i, b in enumerate(owner) if b]
-    keywords = [i for i, line in enumerate(lines)
-                if line.startswith("*") and not line.startswith("**")]
-    kind = generator.randrange(10)
-    if kind <= 1:
-        return mutate_mesh(text, generator)
-    if kind == 2:
-        i = generator.choice(data)
-        fields = lines[i].split(",")
-        j = generator.randrange(len(fields))
-        token = generator.choice(TOKENS + COORDINATES + SET_NAMES)
-        what = "line %d field %d <%s> -> <%s>" % (i + 1, j + 1,
-                                                 fields[j].strip(), token)
-        fields[j] = " " + token if j else token
-        lines[i] = ",".join(fields)
-    elif kind == 3:
-        i = generator.choice([i for i in data if owner[i].upper().split(
-            ",")[0].strip() == "*NODE"])
-        fields = lines[i].split(",")
-        j = generator.randrange(1, len(fields))
-        token = generator.choice(COORDINATES)
-        what = "line %d coordinate %d <%s> -> <%s>" % (
-            i + 1, j, fields[j].strip(), token)
-        fields[j] = " " + token
-        lines[i] = ",".join(fields)
-    elif kind == 4:
-        i = generator.choice([i for i in keywords if lines[i].upper().split(
-            ",")[0].strip() == "*ELEMENT"])
-        name = generator.choice(ELEMENT_TYPES)
-        lines[i] = re.sub(r"TYPE=[^,]*", "TYPE=" + name, lines[i])
-        what = "line %d *ELEMENT TYPE=%s" % (i + 1, name)
-    elif kind == 5:
-        sets = [i for i in keywords if re.match(r"\*[NE]SET", lines[i], re.I)]
-        i = generator.choice(sets)
-        if "GENERATE" not in lines[i].upper():
-            lines[i] += ", GENERATE"
-        value = generator.choice(GENERATE_LINES)
-        lines[i + 1] = value
-        what = "line %d GENERATE <%s>" % (i + 2, value)
-    elif kind == 6:
-        # A name that refers to a set: a keyword's NSET=, ELSET= or NAME=,
-        # or the element (set) of a surface's face.
-        named = [(i, "keyword") for i in keywords
-                 if re.search(r"(NSET|ELSET|NAME)=", lines[i], re.I)] + \
-                [(i, "face") for i in data
-                 if owner[i].upper().startswith("*SURFACE")]
-        i, where = generator.choice(named)
-        name = generator.choice(SET_NAMES)
-        if where == "face":
-            lines[i] = re.sub(r"^[^,]*", name, lines[i])
-        else:
-            found = list(re.finditer(r"(NSET|ELSET|NAME)=([^,]*)", lines[i],
-                                     re.I))
-            m = generator.choice(found)
-            lines[i] = lines[i][:m.start(2)] + name + lines[i][m.end(2):]
-        what = "line %d set name -> <%s>" % (i + 1, name)
-    elif kind == 7:
-        i = generator.randrange(len(lines) + 1)
-        keyword = generator.choice(DECK_KEYWORDS).replace("{self}", own)
-        lines.insert(i, keyword)
-        what = "line %d <%s> added" % (i + 1, keyword)
-    else:
-        # One of the keywords tribos reads (the others it skips).
-        i = generator.choice([i for i in keywords if re.match(
-            r"\*(NODE|ELEMENT|NSET|ELSET|SURFACE)\s*(,|$)", lines[i], re.I)])
-        word = re.match(r"\*[^,]*", lines[i]).group(0)
-        new = generator.choice(["*" + word, word.lower(), word[:-1],
-                                word + "X", "* " + word[1:], word + ","])
-        lines[i] = new + lines[i][len(word):]
-        what = "line %d keyword <%s> -> <%s>" % (i + 1, word, new)
-    return "\n".join(lines), what
-
-
-def fuzz_decks(tribos, n_cases, generator, timeout, counts, rows, work,
-               memory=0):
+def fuzz_decks(campaign, n_cases, generator):
     """n_cases runs of the abaqus scene on mutated decks or with hostile
     set entries."""
+    work = campaign.work
     for case in range(n_cases):
         scene, source = generator.choice(DECKS)
         prm, source = os.path.join(ROOT, scene), os.path.join(ROOT, source)
         deck = os.path.join(work, "deck_%03d.inp" % case)
-        folder = os.path.join(work, "deck_case_%03d" % case)
         sets = ["Scene/Input deck=" + deck]
         if generator.random() < 0.25:
             deck = source
@@ -642,24 +482,10 @@ def fuzz_decks(tribos, n_cases, generator, timeout, counts, rows, work,
                  "Contact/Pairs", "Boundary conditions/Dirichlet",
                  re.compile(re.escape(os.path.basename(deck)) +
                             r"(:| line | at line |, line )\d+")]
-        command = [tribos, prm, "--set", "Output/Directory=" + folder]
-        for s in sets:
-            command += ["--set", s]
-        result, timed_out, peak = run(command, timeout, memory, work,
-                                      cwd=work)
-        outcome, message = judge(result, entry, folder, timed_out, peak,
-                                 memory, names)
-        counts[outcome] += 1
-        shown = mutation if len(mutation) <= 60 else \
-            "%s... (%d chars)" % (mutation[:10], len(mutation))
-        rows.append({"case": case, "scene": scene, "entry": entry,
-                     "value": shown, "outcome": outcome,
-                     "exit": "" if timed_out else result.returncode,
-                     "message": message})
-        print("%3d %-15s %-30s %-20s %s" % (case, outcome,
-                                            os.path.basename(scene),
-                                            entry[6:], shown), flush=True)
-        shutil.rmtree(folder, ignore_errors=True)
+        campaign.case(case, prm, sets,
+                      os.path.join(work, "deck_case_%03d" % case),
+                      os.path.basename(scene), entry, mutation, names,
+                      cwd=work, width=60)
         if deck != source:
             os.remove(deck)
 
@@ -701,12 +527,12 @@ def adaptivity_entries(tribos, timeout, memory, work):
     return found
 
 
-def fuzz_adaptivity(tribos, n_cases, generator, timeout, counts, rows, work,
-                    memory=0):
+def fuzz_adaptivity(campaign, n_cases, generator):
     """n_cases adaptive runs with one hostile Adaptivity entry."""
     if n_cases <= 0:
         return
-    catalogue = adaptivity_entries(tribos, timeout, memory, work)
+    catalogue = adaptivity_entries(campaign.tribos, campaign.timeout,
+                                   campaign.memory, campaign.work)
     for case in range(n_cases):
         scene, extra = generator.choice(ADAPTIVE)
         entry = generator.choice(catalogue)
@@ -716,27 +542,13 @@ def fuzz_adaptivity(tribos, n_cases, generator, timeout, counts, rows, work,
         else:
             mutation = generator.choice(VALUES)
         prm = os.path.join(ROOT, scene)
-        folder = os.path.join(work, "adaptive_case_%03d" % case)
         sets = SHORT + extra + ["Adaptivity/Enable=true",
                                 "%s=%s" % (entry, mutation)]
-        command = [tribos, prm, "--set", "Output/Directory=" + folder]
-        for s in sets:
-            command += ["--set", s]
-        result, timed_out, peak = run(command, timeout, memory, work,
-                                      cwd=os.path.dirname(prm))
-        values = effective(prm, sets) if scene == BALANCED else None
-        outcome, message = judge(result, entry, folder, timed_out, peak,
-                                 memory, values=values)
-        counts[outcome] += 1
-        shown = mutation if len(mutation) <= 30 else \
-            "%s... (%d chars)" % (mutation[:10], len(mutation))
-        rows.append({"case": case, "scene": scene, "entry": entry,
-                     "value": shown, "outcome": outcome,
-                     "exit": "" if timed_out else result.returncode,
-                     "message": message})
-        print("%3d %-15s %-30s %-40s %s" % (case, outcome, scene,
-                                            entry[-40:], shown), flush=True)
-        shutil.rmtree(folder, ignore_errors=True)
+        campaign.case(case, prm, sets,
+                      os.path.join(campaign.work, "adaptive_case_%03d" % case),
+                      scene, entry, mutation, cwd=os.path.dirname(prm),
+                      values=effective(prm, sets) if scene == BALANCED
+                      else None)
 
 
 def main():
@@ -763,14 +575,12 @@ def main():
     catalogue = [(scene, entry, value) for scene in SCENES
                  for entry, value in entries(os.path.join(ROOT, scene))
                  if not entry.startswith("Output/")]
-    counts = collections.Counter()
-    rows = []
     work = tempfile.mkdtemp(prefix="tribos_fuzz_")
+    campaign = Campaign(tribos, args.timeout, memory, work)
     try:
         for case in range(args.cases):
             scene, entry, original = generator.choice(catalogue)
             prm = os.path.join(ROOT, scene)
-            folder = os.path.join(work, "case_%03d" % case)
             sets = short_run(scene)
             kind = generator.random()
             if kind < 0.1:
@@ -787,33 +597,17 @@ def main():
             else:
                 mutation = generator.choice(VALUES)
                 sets.append("%s=%s" % (entry, mutation))
-            command = [tribos, prm, "--set", "Output/Directory=" + folder]
-            for s in sets:
-                command += ["--set", s]
-            result, timed_out, peak = run(command, args.timeout, memory,
-                                          work, cwd=os.path.dirname(prm))
-            values = effective(prm, sets) if scene == BALANCED else None
-            outcome, message = judge(result, entry, folder, timed_out, peak,
-                                     memory, values=values)
-            counts[outcome] += 1
-            shown = mutation if len(mutation) <= 30 else \
-                "%s... (%d chars)" % (mutation[:10], len(mutation))
-            rows.append({"case": case, "scene": scene, "entry": entry,
-                         "value": shown, "outcome": outcome,
-                         "exit": "" if timed_out else result.returncode,
-                         "message": message})
-            print("%3d %-15s %-30s %-40s %s" % (case, outcome, scene,
-                                                entry[-40:], shown),
-                  flush=True)
-            shutil.rmtree(folder, ignore_errors=True)
-        fuzz_meshes(tribos, args.meshes, generator, args.timeout, counts,
-                    rows, work, memory)
-        fuzz_decks(tribos, args.decks, generator, args.timeout, counts,
-                   rows, work, memory)
-        fuzz_adaptivity(tribos, args.adaptive, generator, args.timeout,
-                        counts, rows, work, memory)
+            campaign.case(case, prm, sets,
+                          os.path.join(work, "case_%03d" % case), scene,
+                          entry, mutation, cwd=os.path.dirname(prm),
+                          values=effective(prm, sets) if scene == BALANCED
+                          else None)
+        fuzz_meshes(campaign, args.meshes, generator)
+        fuzz_decks(campaign, args.decks, generator)
+        fuzz_adaptivity(campaign, args.adaptive, generator)
     finally:
         shutil.rmtree(work, ignore_errors=True)
+    counts, rows = campaign.counts, campaign.rows
     if args.out and rows:
         with open(args.out, "w", newline="") as f:
             writer = csv.DictWriter(f, fieldnames=list(rows[0]))

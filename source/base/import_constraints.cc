@@ -1,5 +1,7 @@
 #include <tribos/base/import_constraints.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <algorithm>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
@@ -103,4 +105,31 @@ namespace tribos
         add(line);
     constraints.copy_from(consistent);
   }
+
+
+
+  template <int dim>
+  AffineConstraints<double>
+  hanging_node_constraints(const DoFHandler<dim>       &dof_handler,
+                           const IndexSet              &relevant,
+                           const std::vector<IndexSet> &owned_per_process)
+  {
+    AffineConstraints<double> hanging(relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging);
+    import_constraints(hanging,
+                       owned_per_process,
+                       relevant,
+                       dof_handler.get_triangulation().get_communicator());
+    hanging.close();
+    return hanging;
+  }
+
+  template AffineConstraints<double>
+  hanging_node_constraints(const DoFHandler<2> &,
+                           const IndexSet &,
+                           const std::vector<IndexSet> &);
+  template AffineConstraints<double>
+  hanging_node_constraints(const DoFHandler<3> &,
+                           const IndexSet &,
+                           const std::vector<IndexSet> &);
 } // namespace tribos

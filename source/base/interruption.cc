@@ -60,34 +60,13 @@ namespace tribos
 
 
 
-    namespace
-    {
-      /** The signal noted on any process of @p communicator, or 0. */
-      int
-      any_signal(const MPI_Comm communicator)
-      {
-        int here = pending_signal, any = 0;
-        MPI_Allreduce(&here, &any, 1, MPI_INT, MPI_MAX, communicator);
-        return any;
-      }
-    } // namespace
-
-
-
     void
-    check(const MPI_Comm communicator)
+    check(const MPI_Comm communicator, const bool in_setup)
     {
-      if (const int any = any_signal(communicator))
-        throw Interrupted(any);
-    }
-
-
-
-    void
-    check_setup(const MPI_Comm communicator)
-    {
-      if (const int any = any_signal(communicator))
-        throw Interrupted(any, true);
+      int here = pending_signal, any = 0;
+      MPI_Allreduce(&here, &any, 1, MPI_INT, MPI_MAX, communicator);
+      if (any != 0)
+        throw Interrupted(any, in_setup);
     }
   } // namespace Interruption
 } // namespace tribos

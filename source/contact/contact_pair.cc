@@ -2,7 +2,6 @@
 #include <tribos/base/import_constraints.h>
 #include <tribos/base/text.h>
 #include <tribos/contact/contact_pair.h>
-#include <tribos/contact/enforcement/enforcement_method.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -111,17 +110,12 @@ namespace tribos
       IndexSet relevant;
       DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
       relevant.add_indices(surface_dofs);
-      AffineConstraints<double> hanging(relevant);
-      DoFTools::make_hanging_node_constraints(dof_handler, hanging);
-      import_constraints(hanging,
-                         Utilities::MPI::all_gather(
-                           dof_handler.get_triangulation().get_communicator(),
-                           locally_owned_dofs),
-                         relevant,
-                         dof_handler.get_triangulation().get_communicator());
-      hanging.close();
-
-      return hanging;
+      return hanging_node_constraints(
+        dof_handler,
+        relevant,
+        Utilities::MPI::all_gather(
+          dof_handler.get_triangulation().get_communicator(),
+          locally_owned_dofs));
     }
 
 
@@ -327,23 +321,6 @@ namespace tribos
       pair.description = description;
       pair.enforcement =
         create_enforcement<dim>(description.method, parameters);
-      // Two passes with exact constraints hold each gap twice (a node's
-      // row and that of the node opposite it: a singular system). The
-      // penalty in mixed form takes them: each pass's traction unknowns
-      // have rows g_N + t_N / eps_N = 0 with the compliance on their
-      // diagonal, as its self pairs do (area_factor below).
-      AssertThrow(!parameters.enforcement_method(description.method)
-                      ->constrains_gap_exactly() ||
-                    !parameters.two_pass,
-                  ExcMessage("Contact/Passes = two-pass with Contact/Method "
-                             "= " +
-                             description.method + " (pair <" +
-                             description.text +
-                             ">): node-to-segment constraints of both "
-                             "passes over-constrain the interface (singular "
-                             "system). Use one-pass, or Contact/Method = "
-                             "penalty (Penalty formulation = mixed has the "
-                             "multipliers' unknowns and solvers)."));
       const bool self = description.self_contact();
       pair.slave      = surface(description.slave_boundary);
       double E_s      = std::numeric_limits<double>::max();

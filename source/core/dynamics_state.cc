@@ -205,19 +205,18 @@ namespace tribos
     for (unsigned int i = 0; i < n; ++i)
       component[i] = fe.system_to_component_index(i).first;
     FullMatrix<double> cell_mass;
-    for (const auto &cell : layout.dof_handler->active_cell_iterators())
-      if (cell->is_locally_owned())
-      {
-        fe_values.reinit(cell);
-        cell->get_dof_indices(dof_indices);
-        cell_mass_matrix(fe_values,
-                         dof_indices,
-                         component,
-                         densities.at(cell->material_id()),
-                         cell_mass,
-                         remove_contact_mass);
-        f(dof_indices, cell_mass);
-      }
+    for (const auto &cell : *layout.owned_cells)
+    {
+      fe_values.reinit(cell);
+      cell->get_dof_indices(dof_indices);
+      cell_mass_matrix(fe_values,
+                       dof_indices,
+                       component,
+                       densities.at(cell->material_id()),
+                       cell_mass,
+                       remove_contact_mass);
+      f(dof_indices, cell_mass);
+    }
   }
 
 

@@ -14,7 +14,6 @@
 #include <deal.II/fe/fe_simplex_p.h>
 
 #include <algorithm>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -81,24 +80,26 @@ namespace tribos
                              .template get_gauss_type_quadrature<dim - 1>(
                                parameters.finite_element.n_quadrature_points);
     dofs.distribute_dofs(*fe_storage);
-    const bool adapted =
-      dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
-        triangulation_storage.get()) != nullptr;
+    // A mesh adapted during the run: numbered and visited as a function of
+    // its cells alone (owned_cells()).
+    const bool adapted = parameters.adaptivity.enable;
     if (adapted)
       DoFRenumbering::hierarchical(dofs);
-    std::vector<
-      std::pair<CellId, typename DoFHandler<dim>::active_cell_iterator>>
-      by_id;
+    owned_cells_.clear();
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
-        by_id.emplace_back(adapted ? cell->id() : CellId(), cell);
+        owned_cells_.push_back(cell);
     if (adapted)
-      std::sort(by_id.begin(),
-                by_id.end(),
-                [](const auto &a, const auto &b) { return a.first < b.first; });
-    owned_cells_.clear();
-    for (const auto &[id, cell] : by_id)
-      owned_cells_.push_back(cell);
+    {
+      // Each id once (it is built from the cell's ancestors).
+      std::vector<std::pair<CellId, unsigned int>> order;
+      for (unsigned int i = 0; i < owned_cells_.size(); ++i)
+        order.emplace_back(owned_cells_[i]->id(), i);
+      std::sort(order.begin(), order.end());
+      const auto cells = owned_cells_;
+      for (unsigned int i = 0; i < order.size(); ++i)
+        owned_cells_[i] = cells[order[i].second];
+    }
     layout_.locally_owned_dofs = dofs.locally_owned_dofs();
     owned_per_process =
       Utilities::MPI::all_gather(mpi_communicator, layout_.locally_owned_dofs);
@@ -176,17 +177,9 @@ namespace tribos
     L.system_coupled.compress();
 
     make_constraints(0, nullptr, homogeneous);
-    hanging.clear();
-    hanging.reinit(L.locally_relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dofs, hanging);
-    // As make_constraints(): the owners' lines, where a process's own cells
-    // do not give the whole line of a dof it reads.
-    if (parameters.parallel.mesh == Parameters::Parallel::Mesh::distributed)
-      import_constraints(hanging,
-                         owned_per_process,
-                         L.locally_relevant_dofs,
-                         mpi_communicator);
-    hanging.close();
+    hanging     = hanging_node_constraints(dofs,
+                                       L.locally_relevant_dofs,
+                                       owned_per_process);
     any_hanging = Utilities::MPI::max(hanging.n_constraints() > 0 ? 1 : 0,
                                       mpi_communicator) > 0;
 
@@ -353,25 +346,22 @@ namespace tribos
     // Each hanging node's force handed to its parents with the weights of
     // its constraint: the residual condensed onto the parents, zero at
     // every free dof at convergence, so that the reactions balance the
-    // loads and the contact forces. The owner of a parent adds the shares
-    // of all its hanging nodes (their forces from the ghost values: a
-    // hanging node lies on a cell at its parent, which the parent's owner
-    // has); the hanging nodes themselves count no more.
-    std::map<types::global_dof_index, double> shares;
+    // loads and the contact forces. The owner of a hanging node sends its
+    // shares to the owners of its parents (a parent may lie beyond its
+    // ghost layer: Q2's node at a quarter of a coarse edge has a weight on
+    // the edge's far vertex); the hanging nodes themselves count no more.
+    Vector shares;
     if (any_hanging)
     {
-      Vector owned(layout_.locally_owned_dofs, mpi_communicator);
-      for (const auto dof : layout_.locally_owned_dofs)
-        owned[dof] = force(dof);
-      owned.compress(VectorOperation::insert);
-      Vector ghosted(layout_.locally_owned_dofs,
-                     layout_.locally_relevant_dofs,
-                     mpi_communicator);
-      ghosted = owned;
+      shares.reinit(layout_.locally_owned_dofs,
+                    layout_.locally_relevant_dofs,
+                    mpi_communicator,
+                    true);
       for (const auto &line : hanging.get_lines())
-        for (const auto &[parent, weight] : line.entries)
-          if (layout_.locally_owned_dofs.is_element(parent))
-            shares[parent] += weight * ghosted[line.index];
+        if (layout_.locally_owned_dofs.is_element(line.index))
+          for (const auto &[parent, weight] : line.entries)
+            shares[parent] += weight * force(line.index);
+      shares.compress(VectorOperation::add);
     }
     std::vector<double> forces;
     for (const auto &per_component : dirichlet_dofs)
@@ -381,12 +371,7 @@ namespace tribos
         for (const auto dof : per_component[d])
           if (layout_.locally_owned_dofs.is_element(dof) &&
               !hanging.is_constrained(dof))
-          {
-            sum += force(dof);
-            const auto share = shares.find(dof);
-            if (share != shares.end())
-              sum += share->second;
-          }
+            sum += force(dof) + (any_hanging ? shares[dof] : 0.);
         forces.push_back(Utilities::MPI::sum(sum, mpi_communicator));
       }
     return forces;

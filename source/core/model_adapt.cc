@@ -181,6 +181,42 @@ namespace tribos
     };
     auto [n_refine, n_coarsen] = count();
 
+    // A cut keeps the share of the cells coarsened.
+    const double coarsen_fraction = n_coarsen / tria.n_global_active_cells();
+    std::tie(n_refine, n_coarsen) = fit_budget(
+      n_refine,
+      n_coarsen,
+      [&](const double fraction)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned())
+          {
+            cell->clear_refine_flag();
+            cell->clear_coarsen_flag();
+          }
+        refinement::refine_and_coarsen_fixed_number(tria,
+                                                    indicator,
+                                                    fraction,
+                                                    coarsen_fraction);
+        apply_levels();
+        // Without refinement left the zone is not made uniform either.
+        if (fraction > 0)
+          refine_zone();
+        return count();
+      });
+    return n_refine + n_coarsen > 0;
+  }
+
+
+  template <int dim>
+  std::pair<double, double>
+  Model<dim>::fit_budget(
+    double                                                  n_refine,
+    double                                                  n_coarsen,
+    const std::function<std::pair<double, double>(double)> &flag_fraction)
+  {
+    const auto &a    = parameters.adaptivity;
+    const auto &tria = adaptive_triangulation();
     // The budgets. Dofs (Maximum dofs), estimated on the safe side: a
     // refined cell adds (children - 1) cells of 1.25 times the mean dofs
     // per cell (a cell at a boundary or next to a coarser one adds more
@@ -238,8 +274,7 @@ namespace tribos
                 "processes on more machines.";
         warnings.warn(text.str());
       }
-      const double coarsen_fraction = n_coarsen / n_cells;
-      double       fraction         = n_refine / n_cells;
+      double fraction = n_refine / n_cells;
       while (fraction > 0 && too_many(n_refine, n_coarsen))
       {
         const double room = std::min(
@@ -248,24 +283,10 @@ namespace tribos
         fraction = std::min(0.8 * fraction, std::max(0., room) / n_cells);
         if (fraction * n_cells < 1)
           fraction = 0;
-        for (const auto &cell : tria.active_cell_iterators())
-          if (cell->is_locally_owned())
-          {
-            cell->clear_refine_flag();
-            cell->clear_coarsen_flag();
-          }
-        refinement::refine_and_coarsen_fixed_number(tria,
-                                                    indicator,
-                                                    fraction,
-                                                    coarsen_fraction);
-        apply_levels();
-        // Without refinement left the zone is not made uniform either.
-        if (fraction > 0)
-          refine_zone();
-        std::tie(n_refine, n_coarsen) = count();
+        std::tie(n_refine, n_coarsen) = flag_fraction(fraction);
       }
     }
-    return n_refine + n_coarsen > 0;
+    return {n_refine, n_coarsen};
   }
 
 

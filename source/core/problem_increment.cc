@@ -49,9 +49,6 @@ namespace tribos
     if (dynamics_state)
       r.force_scale =
         std::max(r.force_scale, dynamics_state->inertia_forces().l2_norm());
-    if (with_matrix)
-      residual_floor = residual_round_off();
-    r.floor = residual_floor;
     return r;
   }
 

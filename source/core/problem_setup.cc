@@ -63,14 +63,23 @@ namespace tribos
   {
     for (const auto &w : parameters.input_warnings)
       warnings.warn(w);
-    // A signal stops the setup after the stage it arrived in, before any
-    // output exists (the first Newton iteration may be minutes away).
+    // A signal stops the first setup after the stage it arrived in, before
+    // any output exists (the first Newton iteration may be minutes away);
+    // the setup of a rebalanced mesh (@p weights), whose run has written
+    // its steps, waits for the first Newton iteration and its summary.
+    const auto stop_if_signalled = [&]()
+    {
+      if (weights == nullptr)
+        Interruption::check(mpi_communicator, true);
+    };
     model.create_mesh(weights);
-    Interruption::check_setup(mpi_communicator);
+    stop_if_signalled();
+    model.distribute_dofs();
+    stop_if_signalled();
     setup_system();
     support_warnings<dim>(parameters, model.triangulation(), warnings);
     setup_dynamics();
-    Interruption::check_setup(mpi_communicator);
+    stop_if_signalled();
   }
 
 
@@ -80,8 +89,6 @@ namespace tribos
   Problem<dim>::setup_system()
   {
     TimerOutput::Scope t(timer, "setup");
-    model.distribute_dofs();
-    Interruption::check_setup(mpi_communicator);
     setup_physics();
   }
 
@@ -178,10 +185,10 @@ namespace tribos
                               model.fe(),
                               model.quadrature(),
                               update_JxW_values | update_quadrature_points);
-      for (const auto &cell : model.dof_handler().active_cell_iterators())
+      // In the model's order (a sum: an adapted mesh's is a function of its
+      // cells alone, so that a restart's floors are the run's).
+      for (const auto &cell : model.owned_cells())
       {
-        if (!cell->is_locally_owned())
-          continue;
         E_max =
           std::max(E_max, material_state->youngs_modulus(cell->material_id()));
         for (const auto v : cell->vertex_indices())
@@ -231,6 +238,7 @@ namespace tribos
         "true removes both.");
     typename DynamicsState<dim>::Layout dynamics_layout;
     dynamics_layout.dof_handler   = &model.dof_handler();
+    dynamics_layout.owned_cells   = &model.owned_cells();
     dynamics_layout.mapping       = &model.mapping();
     dynamics_layout.fe            = &model.fe();
     dynamics_layout.quadrature    = &model.quadrature();

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <set>
 
 namespace tribos
@@ -338,27 +339,24 @@ namespace tribos
 
     namespace
     {
-      /** Whether the sets @p a and @p b share an id. */
-      bool
-      meet(const std::set<unsigned int> &a, const std::set<unsigned int> &b)
-      {
-        for (const auto id : a)
-          if (b.count(id) > 0)
-            return true;
-        return false;
-      }
-
-
-
-      /** The smallest id that the sets @p a and @p b share (they meet). */
-      unsigned int
+      /** The smallest id that the sets @p a and @p b share, if any. */
+      std::optional<unsigned int>
       first_shared(const std::set<unsigned int> &a,
                    const std::set<unsigned int> &b)
       {
         for (const auto id : a)
           if (b.count(id) > 0)
             return id;
-        return 0;
+        return std::nullopt;
+      }
+
+
+
+      /** Whether the sets @p a and @p b share an id. */
+      bool
+      meet(const std::set<unsigned int> &a, const std::set<unsigned int> &b)
+      {
+        return first_shared(a, b).has_value();
       }
 
 
@@ -458,13 +456,13 @@ namespace tribos
           const std::string master =
             rigid ? "the rigid surface " + first.rigid_surface :
                     "master boundary " +
-                      std::to_string(first_shared(*p.master, *q.master));
+                      std::to_string(*first_shared(*p.master, *q.master));
           AssertThrow(
             false,
             dealii::ExcMessage(
               "Parameter <" + pair_entry + ">: " + describe(p) + " and " +
               describe(q) + " both check slave boundary " +
-              std::to_string(first_shared(*p.slave, *q.slave)) + " against " +
+              std::to_string(*first_shared(*p.slave, *q.slave)) + " against " +
               master +
               ": each slave node there would carry that contact twice "
               "(with penalty twice the force for the same penetration). " +
@@ -511,6 +509,21 @@ namespace tribos
                       "multipliers' unknowns and solvers) or augmented "
                       "lagrangian: both sides, each with half the "
                       "weight."));
+      // Two passes with exact constraints hold each gap twice (a node's
+      // row and that of the node opposite it: a singular system). The
+      // penalty in mixed form takes them: each pass's traction unknowns
+      // have rows g_N + t_N / eps_N = 0 with the compliance on their
+      // diagonal, as its self pairs do.
+      for (const auto &pair : pairs)
+        AssertThrow(!(contact.two_pass && exact(pair)),
+                    dealii::ExcMessage(
+                      "Contact/Passes = two-pass with Contact/Method = " +
+                      pair.method + " (pair <" + pair.text +
+                      ">): node-to-segment constraints of both passes "
+                      "over-constrain the interface (singular system). Use "
+                      "one-pass, or Contact/Method = penalty (Penalty "
+                      "formulation = mixed has the multipliers' unknowns "
+                      "and solvers)."));
       for (unsigned int i = 0; i < pairs.size(); ++i)
         for (unsigned int j = i + 1; j < pairs.size(); ++j)
           AssertThrow(

@@ -64,8 +64,10 @@ namespace tribos
       }
       checkpointer.check(*restart);
     }
-    // The last moment a signal leaves the output directory untouched.
-    Interruption::check_setup(mpi_communicator);
+    // The last moment a signal leaves the output directory untouched
+    // (a rebalanced run's has its earlier steps: it stops in Newton).
+    if (last_rebalance.count == 0)
+      Interruption::check(mpi_communicator, true);
     output = std::make_unique<RunOutput<dim>>(parameters,
                                               model,
                                               problem,

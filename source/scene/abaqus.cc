@@ -24,15 +24,17 @@ namespace tribos
     /**
      * The sets of the parameter Scene/@p entry = @p text: items 'set : id'
      * separated by commas (the id after the last colon, so that a name may
-     * be SURFACE:name or NSET:name). @p kinds, @p example and the
-     * smallest id allowed, @p smallest, for the message.
+     * be SURFACE:name or NSET:name), each id at least @p smallest
+     * (@p why_smallest says why, for the message). @p kinds and
+     * @p example for the messages.
      */
     std::vector<std::pair<std::string, int>>
     parse_sets(const std::string &text,
                const std::string &entry,
                const std::string &kinds,
                const std::string &example,
-               const int          smallest)
+               const int          smallest,
+               const std::string &why_smallest)
     {
       std::vector<std::pair<std::string, int>> sets;
       for (const std::string &item : Text::split_top_level(text, ','))
@@ -60,6 +62,13 @@ namespace tribos
                       "'; empty, the deck's sets get ids by default (the "
                       "README's scene abaqus)."));
         sets.emplace_back(name, int(std::stoll(id)));
+        AssertThrow(sets.back().second >= smallest,
+                    ExcMessage("Parameter <Scene/" + entry + "> = <" +
+                               Text::abbreviate(text) + ">: the set <" + name +
+                               "> is given id " + id + ", " + why_smallest +
+                               ". Give it an id from " +
+                               std::to_string(smallest) + " to " +
+                               std::to_string(INT_MAX) + "."));
       }
       return sets;
     }
@@ -118,34 +127,28 @@ namespace tribos
       void
       parse_parameters(ParameterHandler &prm) override
       {
-        deck_file      = prm.get("Input deck");
-        body_sets      = prm.get("Body sets");
-        boundary_sets  = prm.get("Boundary sets");
-        ids.bodies     = parse_sets(body_sets,
+        deck_file     = prm.get("Input deck");
+        body_sets     = prm.get("Body sets");
+        boundary_sets = prm.get("Boundary sets");
+        ids.bodies    = parse_sets(body_sets,
                                 "Body sets",
                                 "an element set",
                                 "PLATE : 1, BLOCK : 2",
-                                0);
-        ids.boundaries = parse_sets(boundary_sets,
-                                    "Boundary sets",
-                                    "a surface or a node set",
-                                    "BOTTOM : 1, TOP : 2",
-                                    1);
+                                0,
+                                "");
         // Boundary id 0 is the faces in no set (the deck's untagged faces,
         // as a gmsh mesh's, whose physical tags start at 1): a set given 0
         // would merge with them, and a condition on it would move the
         // bodies' other sides too.
-        for (const auto &[name, id] : ids.boundaries)
-          AssertThrow(
-            id != 0,
-            ExcMessage("Parameter <Scene/Boundary sets> = <" +
-                       Text::abbreviate(boundary_sets) + ">: the set <" + name +
-                       "> is given boundary id 0, the id of the boundary "
-                       "faces that are in no boundary set (untagged, as in "
-                       "a gmsh mesh): a condition or contact pair on 0 "
-                       "would take those faces too. Give it an id from 1 "
-                       "to " +
-                       std::to_string(INT_MAX) + "."));
+        ids.boundaries = parse_sets(
+          boundary_sets,
+          "Boundary sets",
+          "a surface or a node set",
+          "BOTTOM : 1, TOP : 2",
+          1,
+          "the id of the boundary faces that are in no boundary set "
+          "(untagged, as in a gmsh mesh): a condition or contact pair on it "
+          "would take those faces too");
         deck.reset();
       }
 

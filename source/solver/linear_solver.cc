@@ -240,6 +240,10 @@ namespace tribos
     }
     solve_amesos(matrix, pattern_version, x, rhs, name);
     last = name;
+    if (mumps_workspace_percent != mumps_default_workspace_percent)
+      last +=
+        " (workspace ICNTL(14) = " + std::to_string(mumps_workspace_percent) +
+        " %)";
   }
 
 
@@ -336,7 +340,21 @@ namespace tribos
 
     // The symbolic factorization once per pattern (and matrix object),
     // the numeric one at every solve.
-    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+    const Epetra_CrsMatrix &A       = matrix.trilinos_matrix();
+    Amesos_Mumps           *mumps   = nullptr;
+    const auto              analyse = [&]()
+    {
+      // MUMPS with the workspace that an earlier factorization needed.
+      if (mumps != nullptr)
+        mumps->SetICNTL(14, mumps_workspace_percent);
+      if (failed(amesos->solver->SymbolicFactorization()))
+      {
+        const std::string report = mumps_report(mumps);
+        amesos.reset();
+        throw NonConvergence("the direct solver " + name +
+                             " failed in its symbolic factorization" + report);
+      }
+    };
     if (!amesos || amesos->name != name || amesos->matrix != &A ||
         amesos->version != pattern_version)
     {
@@ -347,21 +365,13 @@ namespace tribos
       AssertThrow(amesos->solver != nullptr,
                   ExcMessage("Linear solver/Direct solver = <" + name +
                              ">: Trilinos has no such Amesos solver."));
-      auto *const mumps = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
-      // The workspace that an earlier factorization needed.
-      if (mumps != nullptr)
-        mumps->SetICNTL(14, mumps_workspace_percent);
       amesos->name    = name;
       amesos->matrix  = &A;
       amesos->version = pattern_version;
-      if (failed(amesos->solver->SymbolicFactorization()))
-      {
-        const std::string report = mumps_report(mumps);
-        amesos.reset();
-        throw NonConvergence("the direct solver " + name +
-                             " failed in its symbolic factorization" + report);
-      }
+      mumps           = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
+      analyse();
     }
+    mumps = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
     amesos->problem.SetLHS(
       static_cast<Epetra_MultiVector *>(&x.trilinos_vector()));
     amesos->problem.SetRHS(const_cast<Epetra_MultiVector *>(
@@ -374,10 +384,10 @@ namespace tribos
     // under -np 2 was cut back as a "singular system"). Each retry doubles
     // the workspace, to at most about 50 times the estimate; Amesos hands
     // ICNTL over to MUMPS in its analysis only, so a retry analyses again
-    // (with the current values: a pivot order of their own too).
+    // (with the current values: a pivot order of their own too). The
+    // method's name says the workspace once it was raised.
     constexpr int most_workspace_percent = 5000;
-    auto *const   mumps = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
-    const auto    factorize = [&]()
+    const auto    factorize              = [&]()
     {
       const QuietAmesos quiet;
       return amesos->solver->NumericFactorization();
@@ -398,14 +408,7 @@ namespace tribos
           ")");
       mumps_workspace_percent =
         std::min(2 * mumps_workspace_percent + 100, most_workspace_percent);
-      mumps->SetICNTL(14, mumps_workspace_percent);
-      if (failed(amesos->solver->SymbolicFactorization()))
-      {
-        const std::string report = mumps_report(mumps);
-        amesos.reset();
-        throw NonConvergence("the direct solver " + name +
-                             " failed in its symbolic factorization" + report);
-      }
+      analyse();
     }
     if (failed(amesos->solver->Solve()))
       throw NonConvergence("the direct solver " + name +

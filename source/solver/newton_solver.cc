@@ -197,16 +197,18 @@ namespace tribos
     // At the floor: a correction within the round-off of the positions
     // (not of the displacements, 1e-12 of which is far below it early in
     // a run) and a residual within ten times the round-off of its own
-    // assembly (r.floor, the problem's estimate), below the stated bound
-    // too. The iterate is then the discrete solution to round-off: a
-    // stiff penalty on second-order faces stalled at |R| = 1.2e-7 with
-    // corrections of 4e-15, above the relative tolerance (5e-8), and
-    // every increment was cut back until the run failed.
-    const bool at_floor =
-      it.correction.displacement <= floor.displacement &&
-      it.correction.multipliers <=
-        1e-12 * change.multipliers + floor.multipliers &&
-      r.free <= std::min(10 * r.floor, problem.stagnation_residual_bound());
+    // assembly (the problem's estimate, asked only here: it reads the
+    // whole matrix), below the stated bound too. The iterate is then the
+    // discrete solution to round-off: a stiff penalty on second-order
+    // faces stalled at |R| = 1.2e-7 with corrections of 4e-15, above the
+    // relative tolerance (5e-8), and every increment was cut back until
+    // the run failed. (Every process takes the same branches: the norms
+    // are global.)
+    const bool at_floor = it.correction.displacement <= floor.displacement &&
+                          it.correction.multipliers <=
+                            1e-12 * change.multipliers + floor.multipliers &&
+                          r.free <= problem.stagnation_residual_bound() &&
+                          r.free <= 10 * problem.residual_round_off();
     // A residual at round-off (1e-4 of its tolerance) says the iterate
     // solves the discrete equations: the correction still to come is
     // round-off too, and the solve that would confirm it is skipped

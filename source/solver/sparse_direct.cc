@@ -143,10 +143,10 @@ namespace tribos
           return true;
         }
       }
-      // The symbolic factorization stays for the next attempt; given up,
-      // its memory goes.
-      if (++n_failures == 2 && state->factor != nullptr)
-        cholmod_free_factor(&state->factor, &state->common);
+      // The symbolic factorization stays for the next attempt, also once
+      // Cholesky is given up for the increment: the next one tries it
+      // again (begin_increment()) without a new analysis.
+      ++n_failures;
     }
     if (!lu_allowed)
     {

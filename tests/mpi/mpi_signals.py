@@ -38,8 +38,11 @@ def children(pid):
 
 for target, status in (("ranks", 143), ("mpirun", 1)):
     folder = out + "/" + target
+    # (Ten seconds between Open MPI's SIGTERM and its SIGKILL, not 1: a
+    # loaded machine may need more than one to reach the next iteration.)
     mpirun = subprocess.Popen(
-        [os.environ.get("MPIEXEC", "mpirun"), "-np", "2", tribos, prm,
+        [os.environ.get("MPIEXEC", "mpirun"), "--mca",
+         "odls_base_sigkill_timeout", "10", "-np", "2", tribos, prm,
          "--set", "Output/Directory=" + folder,
          "--set", "Time stepping/Number of steps=40000"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)

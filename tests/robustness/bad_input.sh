@@ -240,7 +240,7 @@ expect pair_two_pass_swapped "second pass (Contact/Passes = two-pass" \
   --set "Contact/Passes=two-pass"
 # Boundary id 0 of an abaqus deck is its faces in no set: a set given 0
 # merged with them, and a condition on it moved the bodies' sides.
-expect abaqus_boundary_0 "is given boundary id 0" "$tribos" \
+expect abaqus_boundary_0 "is given id 0, the id of the boundary faces that are in no boundary set" "$tribos" \
   "$tests/blocks_on_plate.prm" \
   --set "Scene/Boundary sets=BOTTOM : 0, TOP : 2, BLOCK_BOTTOM : 3, PLATE_TOP : 4" \
   --set "Boundary conditions/Dirichlet=0 : xy : 0, 0 ; 2 : xy : 0, -1e-4*t"

@@ -160,7 +160,8 @@ if "core" in selected:
             # Issue 56: another method or discretization on the same mesh (the
             # contact state belongs to the other one; accepted before).
             ("other method", ["Contact/Method=augmented lagrangian"],
-             reference + "/checkpoint-00004", "method and discretization"),
+             reference + "/checkpoint-00004",
+             "Contact/Method <penalty> there, <augmented lagrangian> here"),
             # Issue 58: a fixed mesh's checkpoint with Adaptivity.
             ("adaptivity added", ["Adaptivity/Enable=true"],
              reference + "/checkpoint-00004",
@@ -302,7 +303,8 @@ if "serial" in selected:
                  ["Time stepping/Number of steps=2",
                   "Contact/Discretization=mortar"], expect_success=False,
                  extra=["--restart", patch + "/checkpoint-00001"])
-    check(result.returncode == 1 and "method and discretization" in
+    check(result.returncode == 1 and
+          "Contact/Discretization <node to segment> there, <mortar> here" in
           result.stderr and open(patch + "/history.csv").read() == before,
           "bad restart (node to segment -> mortar): exit 1, output kept")
 

@@ -10,6 +10,7 @@ PYTHONPATH; to run a driver by hand:
 
 from . import analytic
 import atexit
+import collections
 import bisect
 import csv
 import math
@@ -262,22 +263,49 @@ def restart_agrees(reference, restarted):
     """A restart on another number of processes: history.csv (without
     wall times, residual norms and iteration counts, which rounding may
     change) and the last contact CSV equal to NEWTON_AGREEMENT, relative
-    to each value or to the file's largest force (values near zero, a
-    reaction's tangential part, differ by the rounding of the large ones).
-    Raises on a difference."""
+    to each value or to the largest value of its kind in the file (the
+    forces, the tractions, the lengths: a value near zero, a reaction's
+    tangential part or the penetration under multipliers, differs by the
+    rounding of the large ones of its kind). Raises on a difference."""
     drop = ("wall_time", "residual", "newton_iterations",
             "newton_iterations_all", "energy_error")
-    for folder in (reference, restarted):
-        strip_columns(folder + "/history.csv", folder + "/h.csv", drop=drop)
-    files = ["h.csv"] + sorted(f for f in os.listdir(reference)
-                               if f.startswith("contact-"))[-1:]
-    for f in files:
-        scale = max(abs(v) for row in read_csv(reference + "/" + f)
-                    for k, v in row.items()
-                    if k not in ("step", "increment", "time", "load_factor")
-                    and not math.isnan(v))
-        numdiff(restarted + "/" + f, reference + "/" + f,
-                relative=NEWTON_AGREEMENT, absolute=NEWTON_AGREEMENT * scale)
+
+    def kind(column):
+        if column.startswith(("RF", "pair")):
+            return "force"
+        if column.startswith(("CPRESS", "CSHEAR")):
+            return "traction"
+        if column in ("x", "y", "z", "X", "Y", "Z", "COPEN", "CSLIP",
+                      "max_penetration"):
+            return "length"
+        return column
+
+    files = ["history.csv"] + sorted(f for f in os.listdir(reference)
+                                     if f.startswith("contact-"))[-1:]
+    tables = {f: [read_csv(folder + "/" + f) for folder in (reference,
+                                                             restarted)]
+              for f in files}
+    # One scale per kind over both files (the contact file's coordinates
+    # are the lengths' scale of the history's penetration too).
+    scale = collections.defaultdict(float)
+    for rows in tables.values():
+        for row in rows[0]:
+            for k, v in row.items():
+                if not math.isnan(v):
+                    scale[kind(k)] = max(scale[kind(k)], abs(v))
+    for f, rows in tables.items():
+        if len(rows[0]) != len(rows[1]):
+            raise SystemExit("%s/%s has %d rows, the uninterrupted run's %d"
+                             % (restarted, f, len(rows[1]), len(rows[0])))
+        for n, (a, b) in enumerate(zip(rows[1], rows[0])):
+            for k in b:
+                if k in drop or (math.isnan(a[k]) and math.isnan(b[k])):
+                    continue
+                bound = NEWTON_AGREEMENT * max(abs(b[k]), scale[kind(k)])
+                if not abs(a[k] - b[k]) <= bound:
+                    raise SystemExit(
+                        "%s/%s row %d, %s: %.12g against %.12g (bound %.1e)"
+                        % (restarted, f, n + 1, k, a[k], b[k], bound))
 
 
 def sphere_on_block(level, discretization):

@@ -224,12 +224,20 @@ def refused(name, sets, expected):
           "%s: exit %d, %s" % (name, result.returncode, lines[-1][-200:]))
 
 
-text = open(deck_2d).read().split("\n")
-at = text.index("*ELEMENT, TYPE=CPE4, ELSET=BLOCK")
-text[at] = "*ELEMENT, TYPE=S4R, ELSET=BLOCK"
-bad_deck = out + "/unknown_type.inp"
-with open(bad_deck, "w") as f:
-    f.write("\n".join(text))
+def deck_with(line, replacement, name):
+    """A copy of the 2D deck named name (in out) with its line line
+    replaced: (its path, the line's number)."""
+    text = open(deck_2d).read().split("\n")
+    at = text.index(line)
+    text[at] = replacement
+    path = out + "/" + name
+    with open(path, "w") as f:
+        f.write("\n".join(text))
+    return path, at
+
+
+bad_deck, at = deck_with("*ELEMENT, TYPE=CPE4, ELSET=BLOCK",
+                         "*ELEMENT, TYPE=S4R, ELSET=BLOCK", "unknown_type.inp")
 refused("unknown_element_type", ["Scene/Input deck=" + bad_deck],
         ["Parameter <Scene/Input deck>", "%s:%d:" % (bad_deck, at + 1),
          "element type 'S4R'"])
@@ -364,21 +372,12 @@ if result.returncode == 0:
 
 
 # (g) A coordinate out of range, a GENERATE increment beyond its range.
-text = open(deck_2d).read().split("\n")
-at = text.index("2, 0.5, 0.0")
-text[at] = "2, 1e300, 0.0"
-huge = out + "/huge_coordinate.inp"
-with open(huge, "w") as f:
-    f.write("\n".join(text))
+huge, at = deck_with("2, 0.5, 0.0", "2, 1e300, 0.0", "huge_coordinate.inp")
 refused("huge_coordinate", ["Scene/Input deck=" + huge],
         ["%s:%d:" % (huge, at + 1), "'1e300' is out of range for a "
          "coordinate"])
-text = open(deck_2d).read().split("\n")
-at = text.index("1, 5, 1")
-text[at] = "1, 5, 1000000000000"
-generate = out + "/generate_step.inp"
-with open(generate, "w") as f:
-    f.write("\n".join(text))
+generate, at = deck_with("1, 5, 1", "1, 5, 1000000000000",
+                         "generate_step.inp")
 refused("generate_huge_step", ["Scene/Input deck=" + generate],
         ["%s:%d:" % (generate, at + 1), "the increment exceeds the range"])
 

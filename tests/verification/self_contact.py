@@ -156,6 +156,23 @@ def closed_per_arm(folder):
                 (k[1] < 0) == left) for left in (True, False)]
 
 
+def coulomb_law(rows, mu):
+    """Of the closed nodes rows (closed_rows()): how many slide, how many
+    stick, and the largest departure from Coulomb's law relative to the
+    largest pressure (sliding: |T| - mu p; sticking: |T| above mu p)."""
+    largest = max(r["CPRESS"] for r in rows.values())
+    sliding, sticking, worst = 0, 0, 0.
+    for r in rows.values():
+        excess = math.hypot(r["CSHEAR_x"], r["CSHEAR_y"]) - mu * r["CPRESS"]
+        if r["CSTATUS"] == 2:
+            sliding += 1
+            worst = max(worst, abs(excess) / largest)
+        else:
+            sticking += 1
+            worst = max(worst, max(0, excess) / largest)
+    return sliding, sticking, worst
+
+
 def closed_rows(folder):
     """The last contact CSV's rows of the closed nodes, keyed by reference
     position (2D)."""
@@ -345,17 +362,7 @@ if "serial" in selected:
           "equal the two-boundary two-pass pair's, pressure and shear "
           "traction to %.1e of the largest pressure (bound 1e-6)"
           % (len(nodal[1]), worst))
-    sliding, sticking, coulomb = 0, 0, 0.
-    for r in nodal[0].values():
-        shear_traction = math.hypot(r["CSHEAR_x"], r["CSHEAR_y"])
-        if r["CSTATUS"] == 2:
-            sliding += 1
-            coulomb = max(coulomb, abs(shear_traction - mu * r["CPRESS"]) /
-                          largest)
-        else:
-            sticking += 1
-            coulomb = max(coulomb, max(0, shear_traction - mu * r["CPRESS"])
-                          / largest)
+    sliding, sticking, coulomb = coulomb_law(nodal[0], mu)
     check(sliding >= 2 and sticking >= 2 and coulomb < 1e-9,
           "U sheared with friction: %d nodes sliding with |T| = mu p, %d "
           "sticking with |T| <= mu p, to %.1e of the largest pressure "
@@ -370,17 +377,7 @@ if "serial" in selected:
         shear + ["Contact/Pairs=1 : 1 : mu=%g" % mu,
                  "Contact/Penalty formulation=mixed"])
     rows = closed_rows(mixed)
-    largest = max(r["CPRESS"] for r in rows.values())
-    sliding, coulomb = 0, 0.
-    for r in rows.values():
-        shear_traction = math.hypot(r["CSHEAR_x"], r["CSHEAR_y"])
-        if r["CSTATUS"] == 2:
-            sliding += 1
-            coulomb = max(coulomb, abs(shear_traction - mu * r["CPRESS"]) /
-                          largest)
-        else:
-            coulomb = max(coulomb, max(0, shear_traction - mu * r["CPRESS"])
-                          / largest)
+    sliding, _, coulomb = coulomb_law(rows, mu)
     force = [read_csv(f + "/history.csv")[-1]["pair0_normal_force"]
              for f in (mixed, out + "/u_friction")]
     check(sliding >= 1 and coulomb < 1e-9 and

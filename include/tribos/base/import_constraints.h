@@ -3,7 +3,10 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+
+#include <vector>
 
 namespace tribos
 {
@@ -37,6 +40,18 @@ namespace tribos
                      const std::vector<IndexSet> &owned_per_process,
                      const IndexSet              &relevant,
                      const MPI_Comm               communicator);
+
+  /**
+   * The hanging node constraints of @p dof_handler on the dofs
+   * @p relevant (at least the locally relevant ones), each line its
+   * owner's (import_constraints(): a line built from this process's cells
+   * alone can miss a parent), closed. @p owned_per_process as there.
+   */
+  template <int dim>
+  AffineConstraints<double>
+  hanging_node_constraints(const DoFHandler<dim>       &dof_handler,
+                           const IndexSet              &relevant,
+                           const std::vector<IndexSet> &owned_per_process);
 } // namespace tribos
 
 #endif

@@ -19,7 +19,8 @@ namespace tribos
   class Interrupted : public std::runtime_error
   {
   public:
-    /** @p in_setup: thrown by Interruption::check_setup(). */
+    /** @p in_setup: thrown between the stages of the setup, before any
+     * output (Interruption::check()). */
     explicit Interrupted(const int signal_number, const bool in_setup = false);
 
     /** The signal's number. */
@@ -59,19 +60,18 @@ namespace tribos
     void
     install();
 
-    /** Throws Interrupted where a signal arrived on any process of
+    /**
+     * Throws Interrupted where a signal arrived on any process of
      * @p communicator (collective: a run stops on every process at the
-     * same iteration). */
+     * same iteration). Also between two stages of the first setup
+     * (@p in_setup): a signal that arrived while the mesh, the dofs or the
+     * materials were built stops the run there, with nothing written, and
+     * not only at the first Newton iteration, which a setup that outgrows
+     * the memory never reaches (a single SIGTERM, as timeout sends, was
+     * ignored).
+     */
     void
-    check(const MPI_Comm communicator);
-
-    /** The same between two stages of the setup (collective): a signal
-     * that arrived while the mesh, the dofs or the materials were built
-     * stops the run there, with nothing written, and not only at the
-     * first Newton iteration, which a setup that outgrows the memory
-     * never reaches (a single SIGTERM, as timeout sends, was ignored). */
-    void
-    check_setup(const MPI_Comm communicator);
+    check(const MPI_Comm communicator, const bool in_setup = false);
   } // namespace Interruption
 } // namespace tribos
 

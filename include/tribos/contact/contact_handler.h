@@ -252,7 +252,15 @@ namespace tribos
     /**
      * At an iterate that passed Newton's tests: whether the contact accepts
      * it (false: held nodes were released and Newton goes on;
-     * ChatteringMonitor::accept()). May throw NonConvergence.
+     * ChatteringMonitor::accept()). Throws NonConvergence (the increment
+     * is cut) where a held node ends inadmissible, or where a slave node
+     * in contact at the increment's start has its contact normal turned
+     * over: it went through the master (past a rigid circle's centre,
+     * behind a face to the master's far side). The premise: a node in
+     * contact does not go round a master's corner sharper than a right
+     * angle within one increment. Mortar's normal is the slave's own,
+     * which never turns over; its search takes master faces behind the
+     * slave instead.
      */
     bool
     accept_iterate(const std::function<void(const std::string &)> &say);

@@ -114,7 +114,7 @@ namespace tribos
      * a force.
      */
     double
-    residual_round_off() const;
+    residual_round_off() const override;
 
     /** The dof part (the first n_dofs entries) of the system vector
      * @p system into @p ghosted (a vector on the locally relevant dofs).

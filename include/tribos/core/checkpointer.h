@@ -101,15 +101,18 @@ namespace tribos
   private:
     /** What a checkpoint's state depends on beyond the sizes of the
      * mesh and dofs, by name, as text: every entry but those of
-     * may_change_at_restart(), as written, and under the names of format
-     * 4 what the materials and pairs resolved to (format_4_fingerprint()). */
+     * may_change_at_restart(), as written, the materials' constants as
+     * parsed (resolved_values()). checkpointer_fingerprint.cc. */
     std::map<std::string, std::string>
     fingerprint() const;
-    /** All that a checkpoint of format 4 recorded (and is compared on):
-     * the scene's name, the pairs, each pair's method and discretization,
-     * the material models and constants (parsed). */
+    /** The scene's name, the pairs, the material models and constants
+     * (parsed: the same numbers written otherwise are the same model). */
     std::map<std::string, std::string>
-    format_4_fingerprint() const;
+    resolved_values() const;
+    /** The entries of this run that differ from @p checkpoint's
+     * fingerprint, each "name <there> there, <here> here". */
+    std::vector<std::string>
+    changed_entries(const Checkpoint &checkpoint) const;
     /** Moments of the vertex coordinates of the mesh (collective). */
     std::map<std::string, double>
     geometry_moments() const;

@@ -50,6 +50,10 @@ namespace tribos
     struct Layout
     {
       const DoFHandler<dim> *dof_handler = nullptr;
+      /** This process's cells in the order of the sums
+       * (Model::owned_cells()). */
+      const std::vector<typename DoFHandler<dim>::active_cell_iterator>
+        *owned_cells = nullptr;
       /** The cells' reference geometry. */
       const Mapping<dim>       *mapping    = nullptr;
       const FiniteElement<dim> *fe         = nullptr;

@@ -23,7 +23,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <array>
+#include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace tribos
@@ -223,6 +225,20 @@ namespace tribos
     refine_to(const std::vector<std::array<unsigned int, 4>> &cells);
 
   private:
+    /**
+     * The refinement that mark() flagged (@p n_refine cells to refine,
+     * @p n_coarsen to coarsen) cut until it fits the budgets: Adaptivity/
+     * Maximum dofs, and always the cells the memory holds
+     * (adaptive_cell_limit()). @p flag_fraction flags a fixed fraction of
+     * the cells to refine (with the levels and the contact zone) and
+     * returns the counts as p4est will carry them out. Collective.
+     */
+    std::pair<double, double>
+    fit_budget(
+      double                                                  n_refine,
+      double                                                  n_coarsen,
+      const std::function<std::pair<double, double>(double)> &flag_fraction);
+
     /** The p4est mesh of Adaptivity/Enable. */
     parallel::distributed::Triangulation<dim> &
     adaptive_triangulation();

@@ -89,7 +89,8 @@ namespace tribos
      * Build the scene (partitioned with @p weights, per CellId, if given:
      * a rebalanced run), the dofs, constraints, materials, contact and
      * dynamics. A SIGTERM or SIGINT noted meanwhile throws Interrupted
-     * after the stage it arrived in (Interruption::check_setup()).
+     * after the stage it arrived in (Interruption::check(); not a
+     * rebalanced run's, which has written its steps).
      */
     void
     setup(const CellWeights *weights = nullptr);
@@ -259,9 +260,6 @@ namespace tribos
 
     /** The current increment's end time. */
     double time = 0;
-    /** The residual's round-off level at the last assembly with a matrix
-     * (residual_round_off()): a residual-only assembly reports it too. */
-    double residual_floor = 0;
     /** The springs (they read the Model's dof maps). */
     Stabilization<dim> stabilization_springs;
     /** The contact's counters of this attempt and of the last committed

@@ -63,9 +63,9 @@ namespace tribos
     /**
      * The model's own entries that a checkpoint's state depends on (the
      * history of its points), with their parsed values: a restart refuses
-     * a checkpoint written with others. (Since checkpoint format 5 every
-     * entry is compared as written anyway; these are the names and values
-     * a checkpoint of format 4 recorded, and numbers compared parsed.)
+     * a checkpoint written with others. (Every entry is compared as
+     * written too; these are compared parsed, so that the same numbers
+     * written otherwise are the same model.)
      */
     virtual std::vector<std::pair<std::string, std::vector<double>>>
     fingerprint() const

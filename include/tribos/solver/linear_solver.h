@@ -225,7 +225,8 @@ namespace tribos
      * friction, -np 2): solve_amesos() then raises it and factorizes again,
      * and the later factorizations keep the raised value.
      */
-    int mumps_workspace_percent = 20;
+    static constexpr int mumps_default_workspace_percent = 20;
+    int mumps_workspace_percent = mumps_default_workspace_percent;
 
     /** Amesos: the solver, its problem and the pattern it analysed. */
     struct Amesos;

@@ -53,15 +53,6 @@ namespace tribos
       /** l2 norm of the unconstrained residual f_int - f_ext (essentially
        * the reactions): the force scale of the relative test. */
       double force_scale = 0;
-      /**
-       * The round-off level of free, below which no iterate's residual
-       * goes: the problem's estimate from its last tangent (0: none).
-       * Contact evaluates gaps as differences of positions, so a stiff
-       * penalty's rows carry eps |x| times their stiffness, far above eps
-       * times the forces, and they set it (C3D20 with mortar at 1000 E/h:
-       * 1.2e-7, above the relative tolerance's 5e-8).
-       */
-      double floor = 0;
     };
 
     /** A norm per kind of unknown. */
@@ -160,6 +151,21 @@ namespace tribos
 
     virtual double
     stagnation_residual_bound() const = 0;
+
+    /**
+     * The round-off level of the free residual, below which no iterate's
+     * goes: the problem's estimate from its last tangent (0: none).
+     * Collective; asked only of an iterate whose correction is round-off.
+     * Contact evaluates gaps as differences of positions, so a stiff
+     * penalty's rows carry eps |x| times their stiffness, far above eps
+     * times the forces, and they set it (C3D20 with mortar at 1000 E/h:
+     * 1.2e-7, above the relative tolerance's 5e-8).
+     */
+    virtual double
+    residual_round_off() const
+    {
+      return 0;
+    }
 
     /** Called after every assembly with a matrix (e.g. chattering
      * detection), with the free residual's norm; may throw
