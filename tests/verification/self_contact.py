@@ -36,11 +36,13 @@ the surface's two sides end together, tests/robustness/bad_input.sh).
    self-contact surface give what the same U gives with its slot's faces
    as two boundaries and Passes = two-pass (tests/data/u_shape_split.msh),
    the existing two-body friction: nodal pressures and shear tractions to
-   1e-6 of the largest at the end. Coulomb's law at the nodes: sliding
-   nodes carry |T| = mu p (so the dissipation at a node is mu p times its
-   slip increment), sticking ones |T| <= mu p. The penalty in mixed
-   form: Coulomb's law at its closed nodes, its normal force within 1 %
-   of the primal form's (1.9 % above it with one slave side).
+   1e-8 of the largest at the end, with the penalty in mixed form, whose
+   Newton takes the 20 nominal steps (the primal form's cutbacks make its
+   path, and so its friction, follow the rounding: issue 73). Coulomb's
+   law at the nodes of both forms: sliding nodes carry |T| = mu p (so the
+   dissipation at a node is mu p times its slip increment), sticking ones
+   |T| <= mu p; the mixed form's normal force within 1 % of the primal
+   form's (1.9 % above it with one slave side).
 5. Restart: the frictional run restarted from its checkpoint after step 5
    equals the uninterrupted run in every digit of history.csv (but the
    wall times) and of the last contact CSV.
@@ -342,41 +344,54 @@ if "serial" in selected:
                  reference[1.0]["pair1_normal_force"]))
 
     # 4. Friction: the self pair against the two-boundary two-pass pair.
+    # Compared with the penalty in mixed form, whose Newton takes the
+    # nominal steps (no cutback): the primal form needs 20-60 iterations
+    # and cutbacks where nodes close, so its increments follow the last
+    # bits of the arithmetic (the BLAS's kernels, the thread count) and
+    # the two pairs' friction paths part (4e-4 of the largest pressure
+    # under OPENBLAS_CORETYPE=Prescott, issue 73). The primal form is
+    # checked where the path does not matter: Coulomb's law at the
+    # closed nodes, its force against the mixed form's, the restart.
     mu = 0.3
     shear = ["Boundary conditions/Neumann=8 : 0.15*t, 0 ; 7 : -0.15*t, 0 ;"
              " 6 : 0, 0.06*t ; 2 : 0, -0.06*t",
              "Output/Checkpoint every=1"]
+    # 20 steps: the mixed form's Newton closes the arms without a cutback
+    # (with 10, the step to t = 0.2 is cut back once).
+    mixed_form = ["Contact/Penalty formulation=mixed",
+                  "Time stepping/Number of steps=20"]
     run(tribos, u_shape, out + "/u_friction",
         shear + ["Contact/Pairs=1 : 1 : mu=%g" % mu])
-    run(tribos, u_shape, out + "/u_friction_two_pass",
-        shear + ["Scene/Mesh file=u_shape_split.msh",
-                 "Contact/Pairs=9 : 10 : mu=%g" % mu,
-                 "Contact/Passes=two-pass"])
-    last = "/contact-00010.csv"
-    nodal = [closed_rows(out + "/" + name)
-             for name in ("u_friction", "u_friction_two_pass")]
-    largest = max(r["CPRESS"] for r in nodal[1].values())
+    mixed = out + "/u_friction_mixed"
+    run(tribos, u_shape, mixed,
+        shear + mixed_form + ["Contact/Pairs=1 : 1 : mu=%g" % mu])
+    run(tribos, u_shape, mixed + "_two_pass",
+        shear + mixed_form + ["Scene/Mesh file=u_shape_split.msh",
+                              "Contact/Pairs=9 : 10 : mu=%g" % mu,
+                              "Contact/Passes=two-pass"])
+    nodal = [closed_rows(name) for name in (mixed, mixed + "_two_pass")]
     worst = traction_difference(nodal[0], nodal[1])
-    check(len(nodal[1]) >= 4 and worst < 1e-6,
-          "U sheared with friction: the self-contact pair's %d closed nodes "
-          "equal the two-boundary two-pass pair's, pressure and shear "
-          "traction to %.1e of the largest pressure (bound 1e-6)"
-          % (len(nodal[1]), worst))
-    sliding, sticking, coulomb = coulomb_law(nodal[0], mu)
-    check(sliding >= 2 and sticking >= 2 and coulomb < 1e-9,
+    increments = [len(read_csv(name + "/history.csv"))
+                  for name in (mixed, mixed + "_two_pass")]
+    check(len(nodal[1]) >= 4 and worst < 1e-8 and increments == [20, 20],
+          "U sheared with friction, the penalty in mixed form: the "
+          "self-contact pair's %d closed nodes equal the two-boundary "
+          "two-pass pair's, pressure and shear traction to %.1e of the "
+          "largest pressure (bound 1e-8), both in the 20 nominal steps "
+          "(%d and %d increments)"
+          % (len(nodal[1]), worst, increments[0], increments[1]))
+    sliding, sticking, coulomb = coulomb_law(closed_rows(out + "/u_friction"),
+                                             mu)
+    check(sliding >= 1 and sticking >= 1 and coulomb < 1e-9,
           "U sheared with friction: %d nodes sliding with |T| = mu p, %d "
           "sticking with |T| <= mu p, to %.1e of the largest pressure "
           "(bound 1e-9)" % (sliding, sticking, coulomb))
 
-    # Friction with the penalty in mixed form: both passes, as the
-    # primal form (with one slave side its force was 1.9 % above the
-    # primal form's). Its increments are its own, and friction follows
-    # the path: the force to 1 %, Coulomb's law to round-off.
-    mixed = out + "/u_friction_mixed"
-    run(tribos, u_shape, mixed,
-        shear + ["Contact/Pairs=1 : 1 : mu=%g" % mu,
-                 "Contact/Penalty formulation=mixed"])
-    rows = closed_rows(mixed)
+    # The mixed form takes both passes, as the primal form (with one
+    # slave side its force was 1.9 % above the primal form's). Their
+    # increments differ, and friction follows the path: the force to
+    # 1 %, Coulomb's law to round-off.
+    rows = nodal[0]
     sliding, _, coulomb = coulomb_law(rows, mu)
     force = [read_csv(f + "/history.csv")[-1]["pair0_normal_force"]
              for f in (mixed, out + "/u_friction")]
