@@ -232,6 +232,19 @@ def by_time(folder):
     return {round(r["time"], 9): r for r in read_csv(folder + "/history.csv")}
 
 
+def common_times(a, b, n_steps):
+    """The times two by_time() histories share, if they share every one of
+    the n_steps nominal step ends; otherwise []. Where a run cuts an
+    increment back, which increments it takes follows the rounding (the
+    BLAS's kernels, the thread count, the dofs' numbering: issue 73), so
+    two runs of a path-independent (frictionless, elastic) problem are
+    compared where both have a solution, not by their increments."""
+    nominal = [round(k / n_steps, 9) for k in range(1, n_steps + 1)]
+    if not all(t in a and t in b for t in nominal):
+        return []
+    return sorted(t for t in a if t in b)
+
+
 if "serial" in selected:
     # 1. The patch test as one surface against the two-pass pair.
     for dim, prm, pair in ((2, "patch_test.prm", "3, 12 : 3, 12"),
@@ -630,15 +643,20 @@ if "clip" in selected:
 
     # The self pair finds what the two-body pair of the tooth's end and
     # the lower arm's top finds.
+    # Frictionless and elastic: compared where both have a solution (the
+    # primal penalty cuts back as the tooth closes).
     a, b = histories["penalty"], histories["two_pass"]
-    worst = max(abs(force(a[t]) - force(b[t])) for t in b) / force(b[1.0])
+    times = common_times(a, b, 20)
+    worst = max((abs(force(a[t]) - force(b[t])) for t in times),
+                default=math.inf) / force(b[1.0])
     closed = sum(1 for r in last_contact(out + "/clip_penalty")
                  if r["CPRESS"] > 0)
-    check(sorted(a) == sorted(b) and worst < 1e-8 and closed >= 2,
+    check(worst < 1e-8 and closed >= 2,
           "C-clip closed onto itself, penalty: the self-contact force that "
           "of the two-body pair (the tooth's end and the lower arm's top, "
-          "two passes) to %.1e at all %d times (bound 1e-8), %d nodes "
-          "closed at the end" % (worst, len(b), closed))
+          "two passes) to %.1e at their %d common times, the 20 step ends "
+          "among them (bound 1e-8), %d nodes closed at the end"
+          % (worst, len(times), closed))
     # The penetration is the penalty's: ten times the penalty, a tenth of
     # it, the same force.
     stiff = histories["stiff"]
@@ -667,11 +685,16 @@ if "clip" in selected:
 # 6. -np 2 against serial.
 if "mpi" in selected and mpi_part(selected):
     # Penalty, and the mixed penalty (traction unknowns of both passes,
-    # each owned by its node's process) with friction on the sheared U.
+    # each owned by its node's process) with friction on the sheared U,
+    # in 20 steps (no cutback: friction follows the increments, so these
+    # runs must take the same ones). The frictionless runs are compared
+    # at their common times, the step ends among them (the primal
+    # penalty's cutbacks follow the rounding, issue 73).
     mixed = ["Contact/Penalty formulation=mixed"]
     sheared = ["Boundary conditions/Neumann=8 : 0.15*t, 0 ; 7 : -0.15*t, 0 ;"
                " 6 : 0, 0.06*t ; 2 : 0, -0.06*t",
-               "Contact/Pairs=1 : 1 : mu=0.3"] + mixed
+               "Contact/Pairs=1 : 1 : mu=0.3",
+               "Time stepping/Number of steps=20"] + mixed
     for name, prm, sets in (
             ("penalty", u_shape, []),
             ("mixed_friction", u_shape, sheared),
@@ -686,21 +709,29 @@ if "mpi" in selected and mpi_part(selected):
         pair = "pair2" if prm == tube else "pair0"
         body = "U-shaped body" if prm != tube else \
             "ring" if "ring" in name else "tube"
-        worst = max(max(abs(parallel[t][pair + c] - serial[t][pair + c])
-                        for c in ("_normal_force", "_tangential_force")) /
-                    max(serial[t][pair + "_normal_force"], 1e-12)
-                    for t in serial if serial[t][pair + "_normal_force"] > 0)
+        n_steps = 10 if prm == u_shape and name == "penalty" else 20
+        if name == "mixed_friction":
+            times = sorted(serial) if sorted(serial) == sorted(parallel) \
+                and len(serial) == n_steps else []
+        else:
+            times = common_times(serial, parallel, n_steps)
+        worst = max((max(abs(parallel[t][pair + c] - serial[t][pair + c])
+                         for c in ("_normal_force", "_tangential_force")) /
+                     max(serial[t][pair + "_normal_force"], 1e-12)
+                     for t in times if serial[t][pair + "_normal_force"] > 0),
+                    default=math.inf)
         # Slave nodes paired with a face of the other process at the end
         # (the fold across the partition).
         across = [int(line.split()[3]) for line in
                   open(out + "/u_np2_" + name + "/summary.txt")
                   if line.startswith("contact across processes")]
-        check(sorted(serial) == sorted(parallel) and worst < 1e-8 and
-              across and across[0] > 0,
-              "%s, %s, -np 2 equal to serial: the same increments, normal "
-              "and tangential self-contact force to %.1e (bound 1e-8); %d "
-              "slave nodes paired with the other process's faces"
+        check(worst < 1e-8 and across and across[0] > 0,
+              "%s, %s, -np 2 equal to serial: normal and tangential "
+              "self-contact force to %.1e at %d common times, the %d step "
+              "ends among them%s (bound 1e-8); %d slave nodes paired with "
+              "the other process's faces"
               % (body, name.replace("tube_", "").replace("ring_", "")
-                 .replace("_", " and "), worst,
+                 .replace("_", " and "), worst, len(times), n_steps,
+                 " and no other" if name == "mixed_friction" else "",
                  across[0] if across else 0))
 finish()
