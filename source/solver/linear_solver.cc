@@ -340,9 +340,25 @@ namespace tribos
 
     // The symbolic factorization once per pattern (and matrix object),
     // the numeric one at every solve.
-    const Epetra_CrsMatrix &A       = matrix.trilinos_matrix();
-    Amesos_Mumps           *mumps   = nullptr;
-    const auto              analyse = [&]()
+    const Epetra_CrsMatrix &A     = matrix.trilinos_matrix();
+    const bool              fresh = !amesos || amesos->name != name ||
+                       amesos->matrix != &A ||
+                       amesos->version != pattern_version;
+    if (fresh)
+    {
+      amesos = std::make_unique<Amesos>();
+      amesos->problem.SetOperator(const_cast<Epetra_CrsMatrix *>(&A));
+      ::Amesos factory;
+      amesos->solver.reset(factory.Create(name.c_str(), amesos->problem));
+      AssertThrow(amesos->solver != nullptr,
+                  ExcMessage("Linear solver/Direct solver = <" + name +
+                             ">: Trilinos has no such Amesos solver."));
+      amesos->name    = name;
+      amesos->matrix  = &A;
+      amesos->version = pattern_version;
+    }
+    auto *const mumps   = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
+    const auto  analyse = [&]()
     {
       // MUMPS with the workspace that an earlier factorization needed.
       if (mumps != nullptr)
@@ -355,23 +371,8 @@ namespace tribos
                              " failed in its symbolic factorization" + report);
       }
     };
-    if (!amesos || amesos->name != name || amesos->matrix != &A ||
-        amesos->version != pattern_version)
-    {
-      amesos = std::make_unique<Amesos>();
-      amesos->problem.SetOperator(const_cast<Epetra_CrsMatrix *>(&A));
-      ::Amesos factory;
-      amesos->solver.reset(factory.Create(name.c_str(), amesos->problem));
-      AssertThrow(amesos->solver != nullptr,
-                  ExcMessage("Linear solver/Direct solver = <" + name +
-                             ">: Trilinos has no such Amesos solver."));
-      amesos->name    = name;
-      amesos->matrix  = &A;
-      amesos->version = pattern_version;
-      mumps           = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
+    if (fresh)
       analyse();
-    }
-    mumps = dynamic_cast<Amesos_Mumps *>(amesos->solver.get());
     amesos->problem.SetLHS(
       static_cast<Epetra_MultiVector *>(&x.trilinos_vector()));
     amesos->problem.SetRHS(const_cast<Epetra_MultiVector *>(
