@@ -319,11 +319,10 @@ namespace tribos
     {
       ContactPair<dim> pair;
       pair.description = description;
-      pair.enforcement =
-        create_enforcement<dim>(description.method, parameters);
-      const bool self = description.self_contact();
-      pair.slave      = surface(description.slave_boundary);
-      double E_s      = std::numeric_limits<double>::max();
+      pair.enforcement = create_enforcement<dim>(description, parameters);
+      const bool self  = description.self_contact();
+      pair.slave       = surface(description.slave_boundary);
+      double E_s       = std::numeric_limits<double>::max();
       for (const auto body : pair.slave->bodies())
         E_s = std::min(E_s, youngs_modulus(body));
       pair.contact_modulus = E_s;
@@ -457,7 +456,11 @@ namespace tribos
       const double E         = pair.contact_modulus;
       lines.push_back(
         "contact pair <" + pair.description.text +
-        ">: " + pair.description.method + ", " +
+        ">: " + pair.description.method +
+        (pair.enforcement->formulation().empty() ?
+           std::string() :
+           " (" + pair.enforcement->formulation() + ")") +
+        ", " + pair.discretization->name() + ", " +
         std::to_string(pair.n_nodes()) + " slave nodes" +
         (n_hanging > 0 ?
            " (" + std::to_string(n_hanging) + " hanging on others)" :

@@ -81,7 +81,8 @@ namespace tribos
       boundary_conditions.check(dimension);
       contact.parse_parameters(prm);
       contact.check(dimension);
-      AssertThrow(contact.smoothing == Parameters::MasterSmoothing::none ||
+      AssertThrow(contact.smoothing !=
+                      Parameters::MasterSmoothing::averaged_normals ||
                     finite_element.degree == 1,
                   dealii::ExcMessage(
                     "Parameter <Contact/Master smoothing> = <averaged "
@@ -89,6 +90,7 @@ namespace tribos
                     "degree = 1 only (Q2's mortar segments are curved and "
                     "carry their own normals); allowed with degree 2: "
                     "none."));
+      contact.resolve_pairs(dimension, finite_element.degree);
       nonlinear_solver.parse_parameters(prm);
       time_stepping.parse_parameters(prm);
       time_stepping.check(dimension);

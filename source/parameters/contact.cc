@@ -79,9 +79,14 @@ namespace tribos
                           "syntax; empty means equal to the normal penalty.");
         prm.declare_entry(
           "Penalty formulation",
-          "primal",
-          dealii::Patterns::Selection("primal|mixed"),
-          "How Method = penalty is solved. primal (the paper's (23)): the "
+          "automatic",
+          dealii::Patterns::Selection("automatic|primal|mixed"),
+          "How Method = penalty is solved. automatic (the default): mixed for "
+          "a pair of two deformable bodies, primal against a rigid surface "
+          "(whose exact smooth gap leaves Newton no faceted master to "
+          "overshoot into) and on a self pair (where the mixed form's Newton "
+          "stalled on a whole boundary as one surface); the log names each "
+          "pair's choice. primal (the paper's (23)): the "
           "contact forces are functions of the displacements, t_N = eps_N "
           "<-g_N>. mixed: the same law with each slave node's traction as "
           "an unknown (a perturbed Lagrangian: g_N + t_N/eps_N = 0 while "
@@ -149,9 +154,14 @@ namespace tribos
                           "tributary area.");
         prm.declare_entry(
           "Master smoothing",
-          "none",
-          dealii::Patterns::Selection("none|averaged normals"),
-          "none: the master is its faces (piecewise linear in 2D, bilinear "
+          "automatic",
+          dealii::Patterns::Selection("automatic|none|averaged normals"),
+          "automatic (the default): averaged normals for a pair against "
+          "another body's deformable master with Polynomial degree = 1, node "
+          "to segment (in 3D falling back to the faces, with a warning, "
+          "where a master vertex is shared by more faces than the smoothing "
+          "takes) or 2D mortar; none for the other pairs (rigid, self, 3D "
+          "mortar, quadratic elements). none: the master is its faces (piecewise linear in 2D, bilinear "
           "quadrilaterals or triangles in 3D). averaged normals: the normal "
           "field of each deformable master is interpolated between averaged "
           "nodal normals, so projection, gap and contact force stay "
@@ -254,9 +264,12 @@ namespace tribos
                                                         ContactTangent::consistent;
       two_pass        = prm.get("Passes") == "two-pass";
       search_distance = prm.get_double("Search distance");
-      smoothing       = prm.get("Master smoothing") == "none" ?
-                          MasterSmoothing::none :
-                          MasterSmoothing::averaged_normals;
+      {
+        const std::string value = prm.get("Master smoothing");
+        smoothing               = value == "none"      ? MasterSmoothing::none :
+                                  value == "automatic" ? MasterSmoothing::automatic :
+                                                         MasterSmoothing::averaged_normals;
+      }
       augmentation_tolerance = prm.get_double("Augmentation tolerance");
       max_augmentations      = prm.get_integer("Maximum augmentations");
       chattering_flips       = prm.get_integer("Chattering flips");
@@ -282,10 +295,14 @@ namespace tribos
       if (!default_tangential.given)
         default_tangential = default_normal;
       const double default_mu = prm.get_double("Friction coefficient");
-      penalty_formulation     = prm.get("Penalty formulation") == "mixed" ?
-                                  PenaltyFormulation::mixed :
-                                  PenaltyFormulation::primal;
-      enforcement_methods     = enforcement_registry().parse_all(prm);
+      {
+        const std::string value = prm.get("Penalty formulation");
+        penalty_formulation     = value == "mixed" ? PenaltyFormulation::mixed :
+                                  value == "automatic" ?
+                                                     PenaltyFormulation::automatic :
+                                                     PenaltyFormulation::primal;
+      }
+      enforcement_methods = enforcement_registry().parse_all(prm);
       normal_complementarity =
         PenaltyValue::parse(prm.get("Normal complementarity parameter"),
                             "Contact/Normal complementarity parameter");
@@ -319,6 +336,39 @@ namespace tribos
         pairs.push_back(parse_pair(item, defaults, *this));
       check_interfaces(*this);
       prm.leave_subsection();
+    }
+
+
+
+    void
+    Contact::resolve_pairs(const unsigned int dim, const unsigned int degree)
+    {
+      for (auto &pair : pairs)
+      {
+        const bool deformable_master = pair.rigid_surface.empty();
+        // Mixed between two bodies. Not on a self pair: with the U's whole
+        // boundary as one self surface (tests/verification/
+        // self_contact.py) the mixed form's Newton never met its tolerance
+        // once the slot closed (|R| at 1e-14, the increment cut to 1e-12),
+        // where the primal form converges.
+        const bool two_bodies = deformable_master && !pair.self_contact();
+        pair.penalty_formulation =
+          penalty_formulation != PenaltyFormulation::automatic ?
+            penalty_formulation :
+            (two_bodies ? PenaltyFormulation::mixed :
+                          PenaltyFormulation::primal);
+        // The smoothed master is of linear faces, assumes a master apart
+        // from the slave, and is the discretization's to offer.
+        const bool smoothable = deformable_master && !pair.self_contact() &&
+                                degree == 1 &&
+                                discretization_method(pair.discretization)
+                                  ->smooths_master_by_default(dim);
+        pair.smoothing_automatic = smoothing == MasterSmoothing::automatic;
+        pair.smoothing           = smoothing != MasterSmoothing::automatic ?
+                                     smoothing :
+                                     (smoothable ? MasterSmoothing::averaged_normals :
+                                                   MasterSmoothing::none);
+      }
     }
 
 

@@ -79,6 +79,12 @@ expect() { # name, expected substring, command...
 expect unknown_entry "Youngs modulus" "$tribos" "$tests/bad_input/unknown_entry.prm"
 expect wrong_type "Number of steps" "$tribos" "$tests/bad_input/wrong_type.prm"
 expect missing_file "does not exist" "$tribos" "$tests/bad_input/no_such_file.prm"
+# Averaged normals asked for on a master with a vertex of 16 faces (more
+# than 12): refused (automatic falls back to the faces with a warning:
+# input_warnings.py).
+expect smoothing_fan "use Master smoothing = none or a more regular mesh" \
+  "$tribos" "$tests/fan_master.prm" \
+  --set "Contact/Master smoothing=averaged normals"
 expect missing_mesh "Mesh file" "$tribos" "$good" --set "Scene/Name=gmsh" \
   --set "Scene/Mesh file=$tests/no_such_mesh.msh"
 # Mixed triangle/quadrilateral meshes crashed in distribute_dofs (meshes of

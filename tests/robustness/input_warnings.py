@@ -7,7 +7,10 @@ a self-contact surface no node of which faces a face of it within the
 search distance;
 a model that nothing loads (no load, no nonzero Dirichlet value, no moving
 rigid surface; with contact pairs judged at the run's end, so that bodies
-meshed overlapping are not); a body without support or contact surface.
+meshed overlapping are not); a body without support or contact surface;
+Master smoothing = automatic on a master the averaged normals cannot take
+(the faces, with a warning). The log names what the automatic defaults
+chose for each pair (two bodies, rigid, self, explicit values).
 Sensible input warns about nothing."""
 
 import sys
@@ -65,6 +68,11 @@ cases = [
       "Time stepping/Number of steps=1", "Time stepping/End time=0.1",
       "Nonlinear solver/Stabilization factor=1e-3"],
      "nothing holds its rigid-body motion"),
+    # Master smoothing = automatic on a master with a vertex of 16 faces
+    # (more than the averaged normals take): the faces, with a warning.
+    ("smoothing_fallback", tests + "/fan_master.prm", [],
+     "the master is met as its faces (Contact/Master smoothing = "
+     "automatic)"),
 ]
 # Only the pressing (t <= 1): a friction drag at 1e9 E/h does not converge
 # (which is the warning's point).
@@ -77,6 +85,30 @@ for name, prm, sets, expected in cases:
     check(result.returncode == 0 and any(expected in w for w in warnings) and
           expected in summary,
           "%s: runs, warns <%s>" % (name, warnings[0] if warnings else ""))
+
+# The log names what automatic chose for each pair: the fallback's pair
+# is plain node to segment, its penalty in mixed form (two bodies).
+log = run(tribos, tests + "/fan_master.prm", out + "/smoothing_fallback_log")
+check("contact pair <3 : 2>: penalty (mixed), node to segment, 4 slave "
+      "nodes" in log.stdout,
+      "the fallback's pair named in the log: penalty (mixed), node to "
+      "segment, without the smoothed master")
+ironing = tests + "/ironing_2d.prm"
+for name, prm, sets, choice in (
+        ("two bodies", ironing, [],
+         "penalty (mixed), node to segment, smoothed master"),
+        ("rigid", block, [], "penalty (primal), node to rigid surface"),
+        ("self", tests + "/self_contact_u.prm", [],
+         "penalty (primal), node to segment,"),
+        ("explicit", ironing, ["Contact/Penalty formulation=primal",
+                               "Contact/Master smoothing=none"],
+         "penalty (primal), node to segment,")):
+    log = run(tribos, prm, out + "/automatic_" + name.replace(" ", "_"),
+              ["Time stepping/Number of steps=1",
+               "Time stepping/End time=0.01"] + sets)
+    line = [l for l in log.stdout.splitlines() if "contact pair <" in l]
+    check(len(line) == 1 and choice in line[0],
+          "automatic defaults, %s: <%s>" % (name, line[0] if line else ""))
 
 # Bodies meshed overlapping are loaded by their contact: the 2D Abaqus
 # deck with its block lowered by 0.01 and both sets held in place (a

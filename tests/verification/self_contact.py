@@ -206,7 +206,8 @@ def mixed_patch_tests(discretization, label, prefix):
         sets = ["Contact/Discretization=" + discretization,
                 "Contact/Pairs=" + pair]
         name = out + "/%s_%dd_" % (prefix, dim)
-        run(tribos, tests + "/" + prm, name + "primal", sets)
+        run(tribos, tests + "/" + prm, name + "primal",
+            sets + ["Contact/Penalty formulation=primal"])
         run(tribos, tests + "/" + prm, name + "mixed",
             sets + ["Contact/Penalty formulation=mixed"])
         primal, mixed = (nodal_pressures(name + form)
@@ -249,7 +250,12 @@ if "serial" in selected:
     # 1. The patch test as one surface against the two-pass pair.
     for dim, prm, pair in ((2, "patch_test.prm", "3, 12 : 3, 12"),
                            (3, "patch_test_3d.prm", "14, 5 : 14, 5")):
-        common = ["Contact/Discretization=node to segment"]
+        # The primal penalty and the faceted master on both (the
+        # defaults would give the two-pass pair the mixed form and the
+        # smoothed master, the self pair neither).
+        common = ["Contact/Discretization=node to segment",
+                  "Contact/Penalty formulation=primal",
+                  "Contact/Master smoothing=none"]
         run(tribos, tests + "/" + prm, out + "/patch_%dd_two_pass" % dim,
             common + ["Contact/Passes=two-pass"])
         run(tribos, tests + "/" + prm, out + "/patch_%dd_self" % dim,
@@ -371,7 +377,10 @@ if "serial" in selected:
              "Output/Checkpoint every=1"]
     # 20 steps: the mixed form's Newton closes the arms without a cutback
     # (with 10, the step to t = 0.2 is cut back once).
+    # The faceted master for both (the two-pass pair's default would be
+    # the smoothed one).
     mixed_form = ["Contact/Penalty formulation=mixed",
+                  "Contact/Master smoothing=none",
                   "Time stepping/Number of steps=20"]
     run(tribos, u_shape, out + "/u_friction",
         shear + ["Contact/Pairs=1 : 1 : mu=%g" % mu])
@@ -628,8 +637,12 @@ if "clip" in selected:
     clip = tests + "/self_contact_clip.prm"
     split = ["Scene/Mesh file=c_clip_split.msh", "Contact/Pairs=9 : 10",
              "Contact/Passes=two-pass"]
-    runs = {"penalty": [], "two_pass": split,
-            "stiff": ["Contact/Penalty factor=10000*E/h"],
+    # The primal penalty on a faceted master (the defaults would solve
+    # the penalty in mixed form and smooth the two-body master).
+    primal = ["Contact/Penalty formulation=primal",
+              "Contact/Master smoothing=none"]
+    runs = {"penalty": primal, "two_pass": primal + split,
+            "stiff": primal + ["Contact/Penalty factor=10000*E/h"],
             "mixed": ["Contact/Penalty formulation=mixed"],
             "mortar_mixed": ["Contact/Discretization=mortar",
                              "Contact/Penalty formulation=mixed"]}

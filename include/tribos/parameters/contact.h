@@ -25,20 +25,6 @@ namespace tribos
       paper
     };
 
-    /** Contact/Master smoothing. */
-    enum class MasterSmoothing
-    {
-      none,
-      averaged_normals
-    };
-
-    /** Contact/Penalty formulation. */
-    enum class PenaltyFormulation
-    {
-      primal,
-      mixed
-    };
-
     /** Contact/Chattering remedy. */
     enum class ChatteringRemedy
     {
@@ -58,8 +44,10 @@ namespace tribos
       std::vector<RigidSurface> rigid_surfaces;
       ContactTangent            tangent;
       /** Contact/Passes = two-pass. */
-      bool            two_pass;
-      double          search_distance;
+      bool   two_pass;
+      double search_distance;
+      /** Contact/Master smoothing as written (automatic: each pair's
+       * ContactPair::smoothing, set by resolve_pairs()). */
       MasterSmoothing smoothing;
       double          augmentation_tolerance;
       unsigned int    max_augmentations;
@@ -70,7 +58,8 @@ namespace tribos
        * condition (c) and of the stick/slip decision (c_T). */
       PenaltyValue normal_complementarity;
       /** How the penalty law is solved (primal: forces of the
-       * displacements; mixed: the tractions as unknowns). */
+       * displacements; mixed: the tractions as unknowns; automatic: each
+       * pair's ContactPair::penalty_formulation, set by resolve_pairs()). */
       PenaltyFormulation penalty_formulation;
       PenaltyValue       friction_complementarity;
       /**
@@ -111,6 +100,20 @@ namespace tribos
       parse_parameters(dealii::ParameterHandler &prm);
       void
       check(const unsigned int dim) const;
+      /**
+       * Decide, for each pair, the entries written `automatic` (the
+       * defaults): Penalty formulation is mixed where the master is
+       * another body (primal against a rigid surface and on a self
+       * pair); Master smoothing is averaged normals against another
+       * body's deformable master with linear elements (@p degree 1) where
+       * the discretization offers it in @p dim dimensions (node to
+       * segment; mortar in 2D) and none otherwise (rigid, self pairs, 3D
+       * mortar, quadratic elements). doc/robustness.md gives the
+       * measurements behind the rule. Explicit values are taken as
+       * written.
+       */
+      void
+      resolve_pairs(const unsigned int dim, const unsigned int degree);
       /**
        * Not an entry: set by Adaptivity/Enable. Every pair hands its
        * hanging slave nodes to their parents (as pairs with multipliers

@@ -43,6 +43,24 @@ namespace tribos
 
     struct Contact;
 
+    /** Contact/Master smoothing. */
+    enum class MasterSmoothing
+    {
+      none,
+      averaged_normals,
+      /** Decided per pair (Contact::resolve_pairs()). */
+      automatic
+    };
+
+    /** Contact/Penalty formulation. */
+    enum class PenaltyFormulation
+    {
+      primal,
+      mixed,
+      /** Decided per pair (Contact::resolve_pairs()). */
+      automatic
+    };
+
     /**
      * @p text, the name of a registered enforcement method (as written in
      * the parameter file: Contact/Method, a pair's method=); throws with a
@@ -95,6 +113,18 @@ namespace tribos
        * registered one.
        */
       std::string discretization;
+      /** How this pair's penalty is solved, if its method is penalty
+       * (Contact/Penalty formulation, resolved: never automatic once
+       * Contact::resolve_pairs() has run). */
+      PenaltyFormulation penalty_formulation = PenaltyFormulation::primal;
+      /** This pair's master smoothing (Contact/Master smoothing, resolved:
+       * never automatic). */
+      MasterSmoothing smoothing = MasterSmoothing::none;
+      /** The smoothing was chosen by Master smoothing = automatic: a
+       * master that the smoothing cannot take (a vertex shared by too many
+       * faces) falls back to its faces with a warning instead of an
+       * error. */
+      bool smoothing_automatic = false;
 
       /** Self-contact: the slave surface is its own master (the same
        * boundary ids on both sides). */

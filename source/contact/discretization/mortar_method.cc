@@ -35,6 +35,15 @@ namespace tribos
         dual = prm.get("Mortar basis") != "standard";
       }
 
+      /** The smoothed master's nodal normals (2D): no tilt of the
+       * slave's own normals at the edge of the contact zone on a coarse
+       * curved slave (doc/mortar.md). */
+      bool
+      smooths_master_by_default(const unsigned int dim) const override
+      {
+        return dim == 2;
+      }
+
       void
       check(const Parameters::ContactPair &pair,
             const Parameters::Contact     &contact,
@@ -54,7 +63,7 @@ namespace tribos
            const bool                     axisymmetric) const
       {
         const bool smoothed =
-          parameters.smoothing != Parameters::MasterSmoothing::none;
+          pair.smoothing == Parameters::MasterSmoothing::averaged_normals;
         // The mortar's smoothed master normals exist in 2D.
         AssertThrow(!smoothed || dim == 2,
                     ExcMessage("Contact pair <" + pair.text +

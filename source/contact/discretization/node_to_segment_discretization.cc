@@ -342,6 +342,14 @@ namespace tribos
         return true;
       }
 
+      /** The smoothed master removes the chattering between faces that
+       * stalls Newton in large sliding (doc/robustness.md). */
+      bool
+      smooths_master_by_default(const unsigned int /*dim*/) const override
+      {
+        return true;
+      }
+
       template <int dim>
       std::unique_ptr<ContactDiscretization<dim>>
       make(const Parameters::ContactPair &pair,
@@ -350,7 +358,7 @@ namespace tribos
       {
         if (!pair.rigid_surface.empty())
           return std::make_unique<RigidSurfaceDiscretization<dim>>(parameters);
-        if (parameters.smoothing != Parameters::MasterSmoothing::none)
+        if (pair.smoothing == Parameters::MasterSmoothing::averaged_normals)
         {
           if constexpr (dim == 2)
             return std::make_unique<SmoothedNodeToSegmentDiscretization>(

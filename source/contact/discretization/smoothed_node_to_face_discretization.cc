@@ -28,12 +28,32 @@ namespace tribos
     shapes.assign(faces.size(), SmoothedFace());
     stencils.assign(faces.size(), {});
     for (unsigned int f = 0; f < faces.size(); ++f)
-      AssertThrow(SmoothedFace::make(face_vertices,
-                                     node_faces,
-                                     f,
-                                     faces[f].ring,
-                                     shapes[f],
-                                     stencils[f]),
+    {
+      const bool made = SmoothedFace::make(face_vertices,
+                                           node_faces,
+                                           f,
+                                           faces[f].ring,
+                                           shapes[f],
+                                           stencils[f]);
+      // Chosen by Master smoothing = automatic: the pair keeps its faces
+      // rather than stopping a run whose user asked for no smoothing.
+      if (!made && pair.description.smoothing_automatic)
+      {
+        faceted = true;
+        fallback_warning =
+          "contact pair <" + pair.description.text + ">: a master face has " +
+          std::to_string(faces[f].n_vertices + faces[f].ring.size()) +
+          " nodes around it or a vertex shared by more than " +
+          std::to_string(SmoothedFace::max_fan) +
+          " faces, more than the averaged normals support: the master is "
+          "met as its faces (Contact/Master smoothing = automatic). A more "
+          "regular master mesh gets the smoothing, which large sliding "
+          "needs.";
+        shapes.clear();
+        stencils.clear();
+        return;
+      }
+      AssertThrow(made,
                   ExcMessage(
                     "Contact pair <" + pair.description.text +
                     ">: a master face has " +
@@ -45,6 +65,7 @@ namespace tribos
                     std::to_string(SmoothedFace::max_nodes) +
                     " nodes); use Master smoothing = none or a more "
                     "regular mesh."));
+    }
   }
 
 
@@ -66,6 +87,8 @@ namespace tribos
   SmoothedNodeToFaceDiscretization::pair_node(ContactPair<3>    &pair,
                                               const unsigned int k)
   {
+    if (faceted)
+      return NodeToSegmentDiscretization<3>::pair_node(pair, k);
     NodeState          &state = pair.current[k];
     const Vec3<double> &x     = pair.slave_positions[k];
 
@@ -146,6 +169,8 @@ namespace tribos
     const int                             face,
     std::vector<types::global_dof_index> &dofs) const
   {
+    if (faceted)
+      return NodeToSegmentDiscretization<3>::element_dofs(pair, k, face, dofs);
     const auto &slave_dofs = pair.slave->nodes()[k].dofs;
     dofs.assign(slave_dofs.begin(), slave_dofs.end());
     if (face >= 0)
@@ -165,8 +190,16 @@ namespace tribos
     double                               *R,
     double                               *K,
     std::vector<types::global_dof_index> &dofs,
-    std::string &)
+    std::string                          &refusal)
   {
+    if (faceted)
+      return NodeToSegmentDiscretization<3>::evaluate(pair,
+                                                      k,
+                                                      slave,
+                                                      R,
+                                                      K,
+                                                      dofs,
+                                                      refusal);
     NodeState        &state = pair.current[k];
     const int         face  = state.face;
     SmoothedFaceInput input;

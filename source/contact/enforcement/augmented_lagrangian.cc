@@ -55,7 +55,7 @@ namespace tribos
     public:
       template <int dim>
       std::shared_ptr<const Enforcement<dim>>
-      make(const Parameters::Contact &) const
+      make(const Parameters::ContactPair &, const Parameters::Contact &) const
       {
         return std::make_shared<AugmentedLagrangian<dim>>();
       }

@@ -16,15 +16,17 @@ namespace tribos
 
   template <int dim>
   std::shared_ptr<const Enforcement<dim>>
-  create_enforcement(const std::string         &method,
-                     const Parameters::Contact &parameters)
+  create_enforcement(const Parameters::ContactPair &pair,
+                     const Parameters::Contact     &parameters)
   {
-    return parameters.enforcement_method(method)->template create<dim>(
-      parameters);
+    return parameters.enforcement_method(pair.method)
+      ->template create<dim>(pair, parameters);
   }
 
   template std::shared_ptr<const Enforcement<2>>
-  create_enforcement(const std::string &, const Parameters::Contact &);
+  create_enforcement(const Parameters::ContactPair &,
+                     const Parameters::Contact &);
   template std::shared_ptr<const Enforcement<3>>
-  create_enforcement(const std::string &, const Parameters::Contact &);
+  create_enforcement(const Parameters::ContactPair &,
+                     const Parameters::Contact &);
 } // namespace tribos

@@ -304,7 +304,8 @@ namespace tribos
 
       template <int dim>
       std::shared_ptr<const Enforcement<dim>>
-      make(const Parameters::Contact &parameters) const
+      make(const Parameters::ContactPair & /*pair*/,
+           const Parameters::Contact &parameters) const
       {
         return std::make_shared<LagrangeMultiplier<dim>>(parameters);
       }

@@ -87,20 +87,21 @@ namespace tribos
   namespace
   {
     /**
-     * Contact/Method = penalty. Contact/Penalty formulation chooses how the
-     * law is solved: primal, Penalty; mixed, the same law with the
-     * tractions as unknowns (LagrangeMultiplier in its regularized form),
-     * which has the same solution.
+     * Contact/Method = penalty. Contact/Penalty formulation (resolved per
+     * pair: Contact::resolve_pairs()) chooses how the law is solved: primal,
+     * Penalty; mixed, the same law with the tractions as unknowns
+     * (LagrangeMultiplier in its regularized form), which has the same
+     * solution.
      */
     class PenaltyMethod : public EnforcementInBothDimensions<PenaltyMethod>
     {
     public:
       template <int dim>
       std::shared_ptr<const Enforcement<dim>>
-      make(const Parameters::Contact &parameters) const
+      make(const Parameters::ContactPair &pair,
+           const Parameters::Contact     &parameters) const
       {
-        if (parameters.penalty_formulation ==
-            Parameters::PenaltyFormulation::mixed)
+        if (pair.penalty_formulation == Parameters::PenaltyFormulation::mixed)
           return std::make_shared<LagrangeMultiplier<dim>>(parameters, true);
         return std::make_shared<Penalty<dim>>();
       }

@@ -57,6 +57,18 @@ namespace tribos
     }
 
     /**
+     * Whether Contact/Master smoothing = automatic gives this
+     * discretization's pairs against another body's deformable master the
+     * averaged normals in @p dim dimensions (Contact::resolve_pairs()):
+     * where the smoothing is available and the robust choice.
+     */
+    virtual bool
+    smooths_master_by_default(const unsigned int /*dim*/) const
+    {
+      return false;
+    }
+
+    /**
      * Refuse, with a message naming @p pair, what the discretization
      * cannot do with the @p contact parameters in @p dim dimensions, before
      * the mesh is built (Contact::check()).

@@ -3,6 +3,7 @@
 
 #include <tribos/contact/discretization/node_to_segment_discretization.h>
 
+#include <string>
 #include <vector>
 
 namespace tribos
@@ -31,7 +32,16 @@ namespace tribos
     std::string
     name() const override
     {
-      return "node to segment, smoothed master";
+      return faceted ? "node to segment" : "node to segment, smoothed master";
+    }
+
+    std::vector<std::string>
+    setup_warnings() const override
+    {
+      auto warnings = NodeToSegmentDiscretization<3>::setup_warnings();
+      if (faceted)
+        warnings.push_back(fallback_warning);
+      return warnings;
     }
 
     /** Not the smoothed master (its nodal normals assume a master apart
@@ -76,6 +86,12 @@ namespace tribos
     }
 
   private:
+    /** Master smoothing = automatic met a master the smoothing cannot
+     * take (initialize()): the pair is plain node to segment, and says
+     * so (fallback_warning). */
+    bool        faceted = false;
+    std::string fallback_warning;
+
     /** Per master face: its SmoothedFace (the fans around its vertices in
      * stencil numbers) and the surface nodes of its stencil (its vertices,
      * then its ring). Built once, the surface's topology does not change. */

@@ -49,6 +49,15 @@ namespace tribos
     virtual bool
     uses_normal_penalty() const = 0;
 
+    /** How the law is solved, for the log: the penalty's "primal" or
+     * "mixed" (Contact/Penalty formulation); empty where there is one
+     * way. */
+    virtual std::string
+    formulation() const
+    {
+      return std::string();
+    }
+
     /** Unknowns of the system the method adds per slave node: dim (a
      * traction vector) or none. */
     virtual unsigned int
@@ -139,14 +148,14 @@ namespace tribos
 
 
   /**
-   * The enforcement of the method called @p method (Contact/Method, a
-   * pair's method=) with the pair-independent @p parameters: the
-   * registered method's own (enforcement_method.h).
+   * The enforcement of the pair @p pair, by its method (Contact/Method, a
+   * pair's method=) with the contact @p parameters: the registered
+   * method's own (enforcement_method.h).
    */
   template <int dim>
   std::shared_ptr<const Enforcement<dim>>
-  create_enforcement(const std::string         &method,
-                     const Parameters::Contact &parameters);
+  create_enforcement(const Parameters::ContactPair &pair,
+                     const Parameters::Contact     &parameters);
 } // namespace tribos
 
 #endif

@@ -17,7 +17,8 @@ namespace tribos
   namespace Parameters
   {
     struct Contact;
-  }
+    struct ContactPair;
+  } // namespace Parameters
 
   /**
    * An enforcement method as the parameter file names it (Contact/Method,
@@ -53,23 +54,26 @@ namespace tribos
       return false;
     }
 
-    /** The enforcement of one pair in 2D or 3D, with the pair-independent
-     * contact @p parameters (they outlive it). */
+    /** The enforcement of the pair @p pair in 2D or 3D, with the contact
+     * @p parameters (they outlive it). */
     virtual std::shared_ptr<const Enforcement<2>>
-    create_2d(const Parameters::Contact &parameters) const = 0;
+    create_2d(const Parameters::ContactPair &pair,
+              const Parameters::Contact     &parameters) const = 0;
     virtual std::shared_ptr<const Enforcement<3>>
-    create_3d(const Parameters::Contact &parameters) const = 0;
+    create_3d(const Parameters::ContactPair &pair,
+              const Parameters::Contact     &parameters) const = 0;
 
     /** create_2d() or create_3d(), for code templated on @p dim. */
     template <int dim>
     std::shared_ptr<const Enforcement<dim>>
-    create(const Parameters::Contact &parameters) const
+    create(const Parameters::ContactPair &pair,
+           const Parameters::Contact     &parameters) const
     {
       static_assert(dim == 2 || dim == 3, "2D or 3D only");
       if constexpr (dim == 2)
-        return create_2d(parameters);
+        return create_2d(pair, parameters);
       else
-        return create_3d(parameters);
+        return create_3d(pair, parameters);
     }
 
     /** The method's Contact/Method value. */
@@ -93,23 +97,27 @@ namespace tribos
 
   /**
    * A method whose Enforcement comes from the member template
-   * make<dim>(parameters) of @p Method, in 2D and 3D (one template instead
-   * of two overrides that would repeat it).
+   * make<dim>(pair, parameters) of @p Method, in 2D and 3D (one template
+   * instead of two overrides that would repeat it).
    */
   template <class Method>
   class EnforcementInBothDimensions : public EnforcementMethod
   {
   public:
     std::shared_ptr<const Enforcement<2>>
-    create_2d(const Parameters::Contact &parameters) const override
+    create_2d(const Parameters::ContactPair &pair,
+              const Parameters::Contact     &parameters) const override
     {
-      return static_cast<const Method &>(*this).template make<2>(parameters);
+      return static_cast<const Method &>(*this).template make<2>(pair,
+                                                                 parameters);
     }
 
     std::shared_ptr<const Enforcement<3>>
-    create_3d(const Parameters::Contact &parameters) const override
+    create_3d(const Parameters::ContactPair &pair,
+              const Parameters::Contact     &parameters) const override
     {
-      return static_cast<const Method &>(*this).template make<3>(parameters);
+      return static_cast<const Method &>(*this).template make<3>(pair,
+                                                                 parameters);
     }
   };
 

@@ -34,6 +34,12 @@ namespace tribos
       return regularized;
     }
 
+    std::string
+    formulation() const override
+    {
+      return regularized ? "mixed" : "";
+    }
+
     unsigned int
     n_node_unknowns() const override
     {

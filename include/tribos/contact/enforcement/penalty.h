@@ -21,6 +21,12 @@ namespace tribos
       return true;
     }
 
+    std::string
+    formulation() const override
+    {
+      return "primal";
+    }
+
     ContactLaw
     law(const ContactPair<dim>          &pair,
         const unsigned int               k,
