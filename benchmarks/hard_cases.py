@@ -84,6 +84,10 @@ CASES = [
     ("ironing_60_penalty", "ironing", steps(60) + ["Output/Frequency=1"],
      IRONING_2D, IRONING_TIMES),
     ("ironing_3d_penalty", "ironing_3d", [], IRONING_3D, IRONING_TIMES),
+    # Issue 74: the file keeps the defaults (automatic: mixed penalty,
+    # smoothed master); the defaults before it (primal, faceted).
+    ("ironing_3d_old_defaults", "ironing_3d",
+     PRIMAL + ["Contact/Master smoothing=none"], IRONING_3D, IRONING_TIMES),
     ("ironing_3d_lagrange", "ironing_3d", LM, IRONING_3D, IRONING_TIMES),
     ("ironing_3d_mortar_penalty", "ironing_3d",
      MORTAR + ["Contact/Master smoothing=none"], IRONING_3D, IRONING_TIMES),
