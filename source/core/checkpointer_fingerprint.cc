@@ -151,9 +151,28 @@ namespace tribos
     std::string pairs;
     for (const auto &pair : parameters.contact.pairs)
       pairs += (pairs.empty() ? "" : " ; ") + pair.text;
+    // What Contact/Penalty formulation and Master smoothing chose for
+    // each pair (automatic: resolve_pairs()), so that a checkpoint of a
+    // file without them meets the same choice, whatever the entry said.
+    std::string formulations, smoothings;
+    for (const auto &pair : parameters.contact.pairs)
+    {
+      formulations += (formulations.empty() ? "" : ", ") +
+                      std::string(pair.penalty_formulation ==
+                                      Parameters::PenaltyFormulation::mixed ?
+                                    "mixed" :
+                                    "primal");
+      smoothings +=
+        (smoothings.empty() ? "" : ", ") +
+        std::string(pair.smoothing == Parameters::MasterSmoothing::none ?
+                      "none" :
+                      "averaged normals");
+    }
     std::map<std::string, std::string> fingerprint = {
       {"Scene/Name", parameters.scene.name},
       {"Contact/Pairs", pairs},
+      {"Contact/Penalty formulation", formulations},
+      {"Contact/Master smoothing", smoothings},
       {"Materials/Model", list(m.models)},
       {"Materials/Young's modulus", list(m.youngs_moduli)},
       {"Materials/Poisson's ratio", list(m.poissons_ratios)}};

@@ -82,7 +82,7 @@ namespace tribos
           "automatic",
           dealii::Patterns::Selection("automatic|primal|mixed"),
           "How Method = penalty is solved. automatic (the default): mixed for "
-          "a pair of two deformable bodies, primal against a rigid surface "
+          "a pair of two deformable surfaces (not a self pair), primal against a rigid surface "
           "(whose exact smooth gap leaves Newton no faceted master to "
           "overshoot into) and on a self pair (where the mixed form's Newton "
           "stalled on a whole boundary as one surface); the log names each "
@@ -104,7 +104,8 @@ namespace tribos
           "Normal complementarity parameter",
           "E/h",
           dealii::Patterns::Anything(),
-          "Lagrange multipliers only: c of the semismooth normal decision "
+          "Lagrange multipliers and the penalty in mixed form: c of the "
+          "semismooth normal decision "
           "(closed while t_N - c g_N >= 0) and the scale of the node's "
           "normal row c g_N (a solver parameter: it changes the iterates, "
           "never the converged solution). Same syntax as the penalties; the "
@@ -117,7 +118,8 @@ namespace tribos
           "Friction complementarity parameter",
           "E/h",
           dealii::Patterns::Anything(),
-          "Lagrange multipliers only: c_T of the semismooth stick/slip "
+          "Lagrange multipliers and the penalty in mixed form: c_T of the "
+          "semismooth stick/slip "
           "decision |T + c_T dg_T| <= mu max(0, t_N - c g_N) (a solver "
           "parameter: it changes the iterates, never the converged solution). "
           "Same syntax as the penalties; the default E/h is the scale of the "
@@ -156,10 +158,11 @@ namespace tribos
           "Master smoothing",
           "automatic",
           dealii::Patterns::Selection("automatic|none|averaged normals"),
-          "automatic (the default): averaged normals for a pair against "
-          "another body's deformable master with Polynomial degree = 1, node "
-          "to segment (in 3D falling back to the faces, with a warning, "
-          "where a master vertex is shared by more faces than the smoothing "
+          "automatic (the default): averaged normals for a pair whose "
+          "deformable master is another surface (not a self pair) with "
+          "Polynomial degree = 1, node to segment (in 3D falling back to the "
+          "faces, with a warning, where a master vertex is shared by more "
+          "faces, or a face surrounded by more nodes, than the smoothing "
           "takes) or 2D mortar; none for the other pairs (rigid, self, 3D "
           "mortar, quadratic elements). none: the master is its faces (piecewise linear in 2D, bilinear "
           "quadrilaterals or triangles in 3D). averaged normals: the normal "

@@ -40,14 +40,21 @@ def last_contact(folder):
     return sorted(f for f in os.listdir(folder) if f.startswith("contact-"))[-1]
 
 
-cases = [("ironing_nts", "ironing_2d", "0.1", []),
+# The faceted master (the defaults would smooth it) and the primal
+# penalty, except where a case says otherwise.
+faceted = ["Contact/Master smoothing=none",
+           "Contact/Penalty formulation=primal"]
+cases = [("ironing_nts", "ironing_2d", "0.1", faceted),
          ("ironing_mortar", "ironing_2d", "0.1",
-          ["Contact/Discretization=mortar"]),
+          faceted + ["Contact/Discretization=mortar"]),
          # The element also reads the master nodes beyond its segments.
          ("ironing_mortar_smoothed", "ironing_2d", "0.1",
           ["Contact/Discretization=mortar",
            "Contact/Master smoothing=averaged normals"]),
-         ("blocks_3d", "sliding_blocks_3d", "0.05", [])]
+         ("blocks_3d", "sliding_blocks_3d", "0.05", faceted),
+         # The defaults: node to segment on the smoothed 3D master (its
+         # faces' neighbours exchanged too), the mixed penalty.
+         ("blocks_3d_defaults", "sliding_blocks_3d", "0.05", [])]
 for name, scene, distance, sets in cases:
     prm = "%s/%s.prm" % (tests, scene)
     sets = sets + ["Output/Write VTU=false"]

@@ -49,7 +49,7 @@ for name, prm, sets in (
         ("ironing_2d smoothed lagrange", "ironing_2d",
          ironing + smoothed + lagrange),
         ("ironing_2d mortar smoothed", "ironing_2d",
-         ironing + smoothed + mortar),
+         ironing + smoothed + mortar + primal),
         ("ironing_2d mortar smoothed lagrange", "ironing_2d",
          ironing + smoothed + mortar + lagrange),
         # The defaults: the smoothed master, the penalty in mixed form.

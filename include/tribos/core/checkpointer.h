@@ -105,8 +105,10 @@ namespace tribos
      * parsed (resolved_values()). checkpointer_fingerprint.cc. */
     std::map<std::string, std::string>
     fingerprint() const;
-    /** The scene's name, the pairs, the material models and constants
-     * (parsed: the same numbers written otherwise are the same model). */
+    /** The scene's name, the pairs with the penalty formulation and
+     * master smoothing each got (automatic resolved), the material models
+     * and constants (parsed: the same numbers written otherwise are the
+     * same model). */
     std::map<std::string, std::string>
     resolved_values() const;
     /** The entries of this run that differ from @p checkpoint's

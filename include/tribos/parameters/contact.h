@@ -103,9 +103,9 @@ namespace tribos
       /**
        * Decide, for each pair, the entries written `automatic` (the
        * defaults): Penalty formulation is mixed where the master is
-       * another body (primal against a rigid surface and on a self
+       * another surface (primal against a rigid surface and on a self
        * pair); Master smoothing is averaged normals against another
-       * body's deformable master with linear elements (@p degree 1) where
+       * surface's deformable master with linear elements (@p degree 1) where
        * the discretization offers it in @p dim dimensions (node to
        * segment; mortar in 2D) and none otherwise (rigid, self pairs, 3D
        * mortar, quadratic elements). doc/robustness.md gives the

@@ -11,6 +11,8 @@ namespace tribos
   SmoothedNodeToFaceDiscretization::initialize(const ContactPair<3> &pair)
   {
     NodeToSegmentDiscretization<3>::initialize(pair);
+    faceted = false;
+    fallback_warning.clear();
     const auto &faces = pair.master->faces();
     const auto &nodes = pair.master->nodes();
     AssertThrow(!pair.master->quadratic(),

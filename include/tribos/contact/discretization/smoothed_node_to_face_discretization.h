@@ -55,10 +55,12 @@ namespace tribos
     void
     initialize(const ContactPair<3> &pair) override;
 
+    /** The faces around each face (not once it fell back to the
+     * faces). */
     bool
     needs_nodes_beyond() const override
     {
-      return true;
+      return !faceted;
     }
 
     bool
