@@ -37,36 +37,32 @@ namespace tribos
                                            faces[f].ring,
                                            shapes[f],
                                            stencils[f]);
+      if (made)
+        continue;
+      // The face, for the error and the warning.
+      const std::string what =
+        " pair <" + pair.description.text + ">: a master face has " +
+        std::to_string(faces[f].n_vertices + faces[f].ring.size()) +
+        " nodes around it or a vertex shared by more than " +
+        std::to_string(SmoothedFace::max_fan) + " faces, more than ";
       // Chosen by Master smoothing = automatic: the pair keeps its faces
       // rather than stopping a run whose user asked for no smoothing.
-      if (!made && pair.description.smoothing_automatic)
-      {
-        faceted = true;
-        fallback_warning =
-          "contact pair <" + pair.description.text + ">: a master face has " +
-          std::to_string(faces[f].n_vertices + faces[f].ring.size()) +
-          " nodes around it or a vertex shared by more than " +
-          std::to_string(SmoothedFace::max_fan) +
-          " faces, more than the averaged normals support: the master is "
-          "met as its faces (Contact/Master smoothing = automatic). A more "
-          "regular master mesh gets the smoothing, which large sliding "
-          "needs.";
-        shapes.clear();
-        stencils.clear();
-        return;
-      }
-      AssertThrow(made,
-                  ExcMessage(
-                    "Contact pair <" + pair.description.text +
-                    ">: a master face has " +
-                    std::to_string(faces[f].n_vertices + faces[f].ring.size()) +
-                    " nodes around it or a vertex shared by more than " +
-                    std::to_string(SmoothedFace::max_fan) +
-                    " faces, more than Master smoothing = averaged normals "
-                    "supports (at most " +
-                    std::to_string(SmoothedFace::max_nodes) +
-                    " nodes); use Master smoothing = none or a more "
-                    "regular mesh."));
+      AssertThrow(pair.description.smoothing_automatic,
+                  ExcMessage("Contact" + what +
+                             "Master smoothing = averaged normals supports "
+                             "(at most " +
+                             std::to_string(SmoothedFace::max_nodes) +
+                             " nodes); use Master smoothing = none or a "
+                             "more regular mesh."));
+      faceted          = true;
+      fallback_warning = "contact" + what +
+                         "the averaged normals support: the master is met as "
+                         "its faces (Contact/Master smoothing = automatic). A "
+                         "more regular master mesh gets the smoothing, which "
+                         "large sliding needs.";
+      shapes.clear();
+      stencils.clear();
+      return;
     }
   }
 
