@@ -15,7 +15,8 @@ runs with that binary, alternating with --tribos run by run (the same
 machine state for both), and the rows carry its numbers in columns
 base_*; wall times are medians over --runs alternating pairs.
 
-Columns: case, runs, status, steps, increments, cutbacks, newton,
+Columns: case, runs, status, steps, increments, cutbacks, rejected
+(increments rejected for accuracy, Time stepping/Maximum contact changes), newton,
 newton_all, newton_per_step (newton_all over the nominal steps), median_order
 (Newton's observed order near convergence, the median over the
 increments), wall (median, s), then the force columns of the case at its times
@@ -56,6 +57,10 @@ UPSETTING_STRUCTURED = ["Scene/Cylinder compression/Mesh=structured",
                         "Scene/Cylinder compression/Radial refinements=2"]
 
 
+LANDING = ["Time stepping/Output times=0.5, 1, 1.5, 3.5"]
+CONTROL = ["Time stepping/Maximum contact changes=0.25"]
+
+
 def steps(n):
     return ["Time stepping/Number of steps=%d" % n]
 
@@ -82,6 +87,16 @@ CASES = [
     # The stretch target: one increment per output time (every 0.1), so
     # 60 increments for the whole run.
     ("ironing_60_penalty", "ironing", steps(60) + ["Output/Frequency=1"],
+     IRONING_2D, IRONING_TIMES),
+    # Issue 74, automatic incrementation: 10 nominal steps landing on the
+    # compared times, with the accuracy control (the default) and without.
+    ("ironing_10_auto", "ironing", steps(10) + LANDING + CONTROL,
+     IRONING_2D, IRONING_TIMES),
+    ("ironing_10_no_control", "ironing", steps(10) + LANDING, IRONING_2D,
+     IRONING_TIMES),
+    ("ironing_30_auto", "ironing", steps(30) + LANDING + CONTROL,
+     IRONING_2D, IRONING_TIMES),
+    ("ironing_150_auto", "ironing", steps(150) + LANDING + CONTROL,
      IRONING_2D, IRONING_TIMES),
     ("ironing_3d_penalty", "ironing_3d", [], IRONING_3D, IRONING_TIMES),
     # Issue 74: the file keeps the defaults (automatic: mixed penalty,
@@ -159,6 +174,11 @@ def run_once(tribos, prm, sets, forces, times, timeout, keep=None):
             status = "stopped after %d s" % timeout
         wall = time.time() - start
         h = read_csv(os.path.join(folder, "history.csv"))
+        rejected = 0
+        if os.path.exists(os.path.join(folder, "summary.txt")):
+            for line in open(os.path.join(folder, "summary.txt")):
+                if line.startswith("rejected for accuracy"):
+                    rejected = int(line.split()[-1])
         order = median_order(read_csv(os.path.join(folder,
                                                    "convergence.csv")))
         if keep:
@@ -175,6 +195,7 @@ def run_once(tribos, prm, sets, forces, times, timeout, keep=None):
                                else max(0, last_step - 1), n),
            "increments": len(h),
            "cutbacks": cutbacks,
+           "rejected": rejected,
            "newton": int(sum(r["newton_iterations"] for r in h)),
            "newton_all": int(sum(r["newton_iterations_all"] for r in h)),
            "wall": wall}

@@ -366,34 +366,31 @@ namespace tribos
                            ", at or past Time stepping/End time = " +
                            to_scientific(parameters.time_stepping.end_time) +
                            ": nothing is left to do."));
-    AssertThrow(c.stepper.step < parameters.time_stepping.n_steps,
+    const auto &ts = parameters.time_stepping;
+    AssertThrow(c.stepper.step < ts.n_step_ends(),
                 ExcMessage(where + "the checkpoint is at step " +
                            std::to_string(c.stepper.step) +
                            ", the run has only " +
-                           std::to_string(parameters.time_stepping.n_steps) +
-                           " (Time stepping/Number of steps): nothing is "
-                           "left to do."));
-    // A restart may change End time and Number of steps, which place the
-    // steps' ends (step k ends at k End time / Number of steps): the next
-    // one must lie after the checkpoint's time, or the steps up to it would
-    // be reported with nothing done.
-    const auto  &ts       = parameters.time_stepping;
-    const double next_end = (c.stepper.step + 1) * (ts.end_time / ts.n_steps);
+                           std::to_string(ts.n_step_ends()) +
+                           " (Time stepping/Number of steps and Output "
+                           "times): nothing is left to do."));
+    // A restart may change End time, Number of steps and Output times,
+    // which place the steps' ends: the next one must lie after the
+    // checkpoint's time, or the steps up to it would be reported with
+    // nothing done.
+    const double next_end = ts.step_times[c.stepper.step];
     AssertThrow(next_end > c.stepper.time + 1e-12 * ts.end_time,
                 ExcMessage(where + "the checkpoint is at step " +
                            std::to_string(c.stepper.step) +
                            ", t = " + to_scientific(c.stepper.time) +
-                           "; with Time stepping/End time = " +
+                           "; with this run's Time stepping/End time = " +
                            to_scientific(ts.end_time) +
-                           " and Number of steps "
-                           "= " +
-                           std::to_string(ts.n_steps) + " step " +
+                           ", Number of steps = " + std::to_string(ts.n_steps) +
+                           " and Output times, step " +
                            std::to_string(c.stepper.step + 1) +
-                           " would end "
-                           "at t = " +
-                           to_scientific(next_end) +
-                           ", not after it: keep the step size of the run "
-                           "that wrote it or make it larger."));
+                           " would end at t = " + to_scientific(next_end) +
+                           ", not after it: keep the steps of the run "
+                           "that wrote it or make them larger."));
     AssertThrow(c.cell_values.count("velocity") ==
                   (problem.dynamics() != nullptr ? 1 : 0),
                 ExcMessage(where +

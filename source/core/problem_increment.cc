@@ -353,6 +353,36 @@ namespace tribos
 
 
   template <int dim>
+  IncrementalProblem::ContactChanges
+  Problem<dim>::contact_changes() const
+  {
+    ContactChanges changes;
+    if (!contact_handler)
+      return changes;
+    for (const auto &pair : contact_handler->pairs())
+      for (unsigned int k = 0; k < pair.n_nodes(); ++k)
+      {
+        // Frictionless nodes (closed) and open ones have no tangential
+        // path.
+        const ContactStatus now = pair.current[k].result.status;
+        if (!pair.owned[k] ||
+            (now != ContactStatus::stick && now != ContactStatus::slip))
+          continue;
+        ++changes.n_active;
+        const ContactStatus before = pair.committed[k].result.status;
+        if (before == ContactStatus::open ||
+            (now == ContactStatus::stick && before != ContactStatus::stick))
+          ++changes.n_changed;
+      }
+    const MPI_Comm comm = contact_handler->communicator();
+    changes.n_active    = Utilities::MPI::sum(changes.n_active, comm);
+    changes.n_changed   = Utilities::MPI::sum(changes.n_changed, comm);
+    return changes;
+  }
+
+
+
+  template <int dim>
   typename Problem<dim>::State
   Problem<dim>::state()
   {

@@ -496,6 +496,8 @@ namespace tribos
          << ")"
          << "  |R|=" << std::scientific << std::setprecision(2) << r.residual
          << std::defaultfloat << "  cutbacks " << r.n_cutbacks;
+    if (r.n_rejections > 0)
+      line << "  rejected " << r.n_rejections;
     if (contact_output)
     {
       const ContactStatistics s = contact_output->statistics();

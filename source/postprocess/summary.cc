@@ -169,6 +169,7 @@ namespace tribos
             << "newton iterations (all attempts) " << run.n_linear_solves
             << '\n'
             << "cutbacks          " << totals.n_cutbacks << '\n'
+            << "rejected for accuracy " << totals.n_rejections << '\n'
             << "linear solver     "
             << (linear_solver && !linear_solver->method().empty() ?
                   linear_solver->method() :

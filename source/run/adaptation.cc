@@ -18,7 +18,7 @@ namespace tribos
   {
     const auto &a = parameters.adaptivity;
     return a.enable && a.every > 0 && step % a.every == 0 &&
-           step < parameters.time_stepping.n_steps;
+           step < parameters.time_stepping.n_step_ends();
   }
 
 

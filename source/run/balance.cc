@@ -22,7 +22,7 @@ namespace tribos
     auto        *contact   = problem.contact();
     if (threshold == 0 || contact == nullptr ||
         Utilities::MPI::n_mpi_processes(mpi_communicator) == 1 ||
-        step == parameters.time_stepping.n_steps)
+        step == parameters.time_stepping.n_step_ends())
       return;
     // This step's own times (without the waits) and wall clock.
     const double contact_time = contact->own_time() - contact_time_at_step;

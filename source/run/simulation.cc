@@ -144,6 +144,9 @@ namespace tribos
          << sums.n_newton_iterations << " Newton iterations ("
          << totals().n_linear_solves << " with failed attempts), "
          << sums.n_cutbacks << " cutbacks, "
+         << (sums.n_rejections > 0 ? std::to_string(sums.n_rejections) +
+                                       " increments rejected for accuracy, " :
+                                     std::string())
          << last_rebalance.elapsed + run_clock.wall_time() << " s; output in "
          << parameters.output.directory;
     output->print(line.str());
@@ -252,10 +255,11 @@ namespace tribos
   {
     output->step_completed(record);
     const unsigned int step    = record.step;
-    const unsigned int n_steps = parameters.time_stepping.n_steps;
+    const unsigned int n_steps = parameters.time_stepping.n_step_ends();
     // The indicator of the step's state goes into its output (and decides
     // the adaptation after the step).
-    const bool output_step = parameters.output.is_output_step(step, n_steps);
+    const bool output_step = parameters.output.is_output_step(step, n_steps) ||
+                             parameters.time_stepping.is_output_time(step);
     if (parameters.adaptivity.enable && (adapts_after(step) || output_step))
       problem.estimate_error();
     if (output_step)

@@ -44,7 +44,7 @@ namespace tribos
                             Stepping           &s)
   {
     const auto  &ts     = parameters;
-    const double target = step * s.nominal_step;
+    const double target = ts.step_times[step - 1];
     // The step's counts; run() adds the rest of its record.
     StepRecord   record;
     unsigned int cutbacks_in_row = 0;
@@ -75,6 +75,26 @@ namespace tribos
           change_discretization(problem, observer, s);
           continue;
         }
+        bool        may_grow = true;
+        std::string reason;
+        if (too_coarse(problem, next - s.time, s, may_grow, reason))
+        {
+          // Converged, but too coarse for the path: the same increment
+          // halved, from the converged state and its extrapolation.
+          problem.solution() = s.converged;
+          problem.solution_changed();
+          problem.restore();
+          s.increment        = 0.5 * (next - s.time);
+          s.converged_in_row = 0;
+          ++record.n_rejections;
+          ++sums.n_rejections;
+          std::ostringstream line;
+          line << "  increment to t = " << next << " rejected: " << reason
+               << "; new increment " << s.increment;
+          observer.message(line.str());
+          continue;
+        }
+        s.rejected_changes = Stepping::none;
         problem.commit(next);
         s.plain_start = false;
         // Every linear solve since the last accepted increment: this
@@ -104,11 +124,12 @@ namespace tribos
                                       record.n_cutbacks,
                                       increment_clock.wall_time()});
         ++s.converged_in_row;
-        if (report.n_iterations <= ts.easy_iterations ||
-            (ts.growth_after > 0 && s.converged_in_row >= ts.growth_after))
+        if (may_grow &&
+            (report.n_iterations <= ts.easy_iterations ||
+             (ts.growth_after > 0 && s.converged_in_row >= ts.growth_after)))
         {
           s.increment =
-            std::min(s.increment * ts.growth_factor, s.nominal_step);
+            std::min(s.increment * ts.growth_factor, ts.maximum_increment);
           s.converged_in_row = 0;
         }
       }
@@ -139,8 +160,10 @@ namespace tribos
         if (cutbacks_in_row > ts.max_cutbacks)
           reason = "did not converge after " + std::to_string(ts.max_cutbacks) +
                    " cutbacks (Time stepping/Maximum cutbacks)";
-        else if (s.increment < s.epsilon)
-          reason = "the increment was cut below 1e-12 of the end time";
+        else if (s.increment < ts.minimum_increment * (1 - 1e-12))
+          reason = "the increment was cut below " +
+                   to_scientific(ts.minimum_increment) +
+                   " (Time stepping/Minimum increment)";
         if (!reason.empty())
         {
           const std::string message =
@@ -172,10 +195,10 @@ namespace tribos
 
     const bool restarted = start.step > 0;
     Stepping   s(problem.solution());
-    s.nominal_step = ts.end_time / ts.n_steps;
-    s.epsilon      = 1e-12 * ts.end_time;
-    s.time         = restarted ? start.time : 0.;
-    s.increment    = restarted ? start.increment : s.nominal_step;
+    s.epsilon   = 1e-12 * ts.end_time;
+    s.time      = restarted ? start.time : 0.;
+    s.increment = restarted ? std::min(start.increment, ts.maximum_increment) :
+                              ts.initial_increment;
     // Time stepping/Extrapolation: the last converged increment's change
     // and size, from which the next increment's first iterate is guessed.
     s.extrapolate = ts.extrapolate && !ts.dynamic();
@@ -191,7 +214,8 @@ namespace tribos
       sums = start.totals;
     progress = start;
 
-    for (unsigned int step = start.step + 1; step <= ts.n_steps; ++step)
+    const unsigned int n_steps = ts.n_step_ends();
+    for (unsigned int step = start.step + 1; step <= n_steps; ++step)
     {
       StepRecord record = advance_step(problem, observer, step, s);
 
@@ -205,7 +229,7 @@ namespace tribos
                   s.change_increment};
 
       record.step        = step;
-      record.n_steps     = ts.n_steps;
+      record.n_steps     = n_steps;
       record.time        = s.time;
       record.load_factor = s.time / ts.end_time;
       record.elapsed     = elapsed;
@@ -216,6 +240,44 @@ namespace tribos
         change_discretization(problem, observer, s);
       }
     }
+  }
+
+
+
+  bool
+  LoadStepper::too_coarse(const IncrementalProblem &problem,
+                          const double              increment,
+                          Stepping                 &s,
+                          bool                     &may_grow,
+                          std::string              &reason) const
+  {
+    const double fraction = parameters.max_contact_changes;
+    if (fraction == 0)
+      return false;
+    const auto         changes = problem.contact_changes();
+    const unsigned int allowed =
+      std::max(1u, static_cast<unsigned int>(fraction * changes.n_active));
+    const unsigned int n_new = changes.n_changed;
+    // A grown increment would change about growth factor times as many
+    // nodes.
+    may_grow = n_new * parameters.growth_factor <= allowed;
+    // Halving must stay above the minimum and separate the nodes: where
+    // the last halving left as many changes, the nodes change together
+    // (a symmetric ring) and the increment is accepted.
+    if (n_new <= allowed ||
+        0.5 * increment < parameters.minimum_increment * (1 - 1e-12) ||
+        n_new >= s.rejected_changes)
+    {
+      s.rejected_changes = Stepping::none;
+      return false;
+    }
+    s.rejected_changes = n_new;
+    reason = std::to_string(n_new) + " of " + std::to_string(changes.n_active) +
+             " active frictional contact nodes closed or began to stick, "
+             "more than " +
+             std::to_string(allowed) +
+             " (Time stepping/Maximum contact changes)";
+    return true;
   }
 
 

@@ -195,6 +195,17 @@ expect self_contact_mortar_smoothed "without Master smoothing" "$tribos" \
 expect self_contact_two_faces "each of which shares a node with every other" \
   "$tribos" "$tests/patch_test.prm" --set "Contact/Pairs=13 : 13" \
   --set "Scene/Two blocks/Upper subdivisions=2, 2"
+# Automatic incrementation.
+expect increment_bounds "<Time stepping/Minimum increment> = <0.6>: must not exceed the Maximum increment, 0.5" \
+  "$tribos" "$good" --set "Time stepping/Minimum increment=0.6"
+expect initial_increment "<Time stepping/Initial increment> = <2>: must lie between" \
+  "$tribos" "$good" --set "Time stepping/Initial increment=2"
+expect output_time_outside "<Time stepping/Output times> = <0.5, 1.5>: 1.5 lies outside (0, End time = 1]" \
+  "$tribos" "$good" --set "Time stepping/Output times=0.5, 1.5"
+expect output_time_text "Time stepping/Output times" \
+  "$tribos" "$good" --set "Time stepping/Output times=0.5, later"
+expect contact_changes_range "Maximum contact changes" \
+  "$tribos" "$good" --set "Time stepping/Maximum contact changes=2"
 # Dynamics.
 expect dynamics_no_density "Materials/Density" "$tribos" "$good" \
   --set "Time stepping/Integrator=newmark"

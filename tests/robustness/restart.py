@@ -217,6 +217,7 @@ if "core" in selected:
           "(%d rows) continued to t = 4 (%d rows)" % (len(ref), len(rows)))
 
     # A checkpoint of another format (format 4 recorded neither the
+    # increments rejected for accuracy (format 6), nor the
     # contact couplings nor every entry): refused, naming the format.
     old = out + "/format_4_checkpoint"
     shutil.rmtree(old, ignore_errors=True)
@@ -230,7 +231,7 @@ if "core" in selected:
     result = run(tribos, tests + "/sliding_block.prm", reference, [],
                  expect_success=False, extra=["--restart", old])
     check(result.returncode == 1 and
-          "not a tribos checkpoint of format 5" in result.stderr and
+          "not a tribos checkpoint of format 6" in result.stderr and
           open(reference + "/history.csv").read() == before,
           "a checkpoint of format 4: exit 1, the format named, output kept")
 

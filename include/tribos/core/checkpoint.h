@@ -27,11 +27,12 @@ namespace tribos
    */
   struct Checkpoint
   {
-    /** The layout version of this struct. 5: the contact couplings of the
+    /** The layout version of this struct. 6: the increments rejected for
+     * accuracy in the totals. 5: the contact couplings of the
      * sparsity pattern in the contact state, and the fingerprint holds
      * every entry of the parameters but those a restart may change (4:
      * the scene, the pairs and the materials only). */
-    static constexpr unsigned int format = 5;
+    static constexpr unsigned int format = 6;
 
     unsigned int dimension      = 0;
     unsigned int n_active_cells = 0;
@@ -86,6 +87,7 @@ namespace tribos
       archive &s.change_increment &multiplier_change;
       archive &t.n_increments &t.n_newton_iterations &t.n_cutbacks;
       archive &largest_stabilization_ratio           &t.n_linear_solves;
+      archive                                        &t.n_rejections;
       archive &cells &cell_values &multipliers &history &contact &scalars;
       archive &pvd_records &fingerprint                          &geometry;
     }

@@ -116,6 +116,8 @@ namespace tribos
     restore() override;
     bool
     outer_update() override;
+    ContactChanges
+    contact_changes() const override;
 
 
     /** The contact; null if the scene has none. */

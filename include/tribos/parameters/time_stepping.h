@@ -43,8 +43,24 @@ namespace tribos
      */
     struct TimeStepping
     {
-      double       end_time;
+      double end_time;
+      /** Number of steps: the nominal steps. */
       unsigned int n_steps;
+      /** The increments' bounds and first size, resolved (an entry's 0
+       * replaced by its meaning). */
+      double initial_increment;
+      double minimum_increment;
+      double maximum_increment;
+      /** Output times as given. */
+      std::vector<double> output_times;
+      /**
+       * The steps' ends, ascending, the last End time: the nominal steps'
+       * ends merged with the Output times. The increments land on each; a
+       * step is what the run reports (its console line, VTU, checkpoint).
+       */
+      std::vector<double> step_times;
+      /** Maximum contact changes (0: off). */
+      double       max_contact_changes;
       unsigned int max_cutbacks;
       double       growth_factor;
       unsigned int easy_iterations;
@@ -70,6 +86,17 @@ namespace tribos
         return integrator != Integrator::quasi_static;
       }
 
+      /** The number of steps, step_times.size(). */
+      unsigned int
+      n_step_ends() const
+      {
+        return step_times.size();
+      }
+
+      /** Whether step @p step (1-based) ends at one of the Output times. */
+      bool
+      is_output_time(const unsigned int step) const;
+
       /** Check the initial velocities against the dimension. */
       void
       check(const unsigned int dim) const;
@@ -78,6 +105,12 @@ namespace tribos
       declare_parameters(dealii::ParameterHandler &prm);
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+    private:
+      /** Replace the increments' 0 entries by their meaning, check their
+       * order, and merge the steps' ends (inside the subsection). */
+      void
+      resolve_increments(dealii::ParameterHandler &prm);
     };
   } // namespace Parameters
 } // namespace tribos

@@ -38,6 +38,26 @@ namespace tribos
     {
       return false;
     }
+
+    /** The frictional contact nodes at the end of the increment just
+     * solved (not yet committed). */
+    struct ContactChanges
+    {
+      /** Closed (stick or slip). */
+      unsigned int n_active = 0;
+      /** Closed now and open at the increment's start, or stuck now and
+       * slipping at its start. */
+      unsigned int n_changed = 0;
+    };
+
+    /** The frictional contact nodes' changes in the increment just solved
+     * (the accuracy of a frictional path); none without contact.
+     * Collective. */
+    virtual ContactChanges
+    contact_changes() const
+    {
+      return {};
+    }
   };
 
 
@@ -48,6 +68,10 @@ namespace tribos
     unsigned int n_increments        = 0;
     unsigned int n_newton_iterations = 0;
     unsigned int n_cutbacks          = 0;
+    /** Converged increments rejected as too coarse (Time stepping/Maximum
+     * contact changes) and solved again smaller; not cutbacks, which are
+     * failures. */
+    unsigned int n_rejections = 0;
     /** Linear solves of the converged increments, their failed attempts
      * included. */
     unsigned int n_linear_solves = 0;
@@ -75,13 +99,19 @@ namespace tribos
 
 
   /**
-   * Load stepping over the nominal steps of Time stepping: each step is
-   * reached by one or more increments; a failed increment (NonConvergence)
-   * is restored and halved, up to Maximum cutbacks in a row; an increment
-   * grows again by Growth factor after an easy one (at most Easy
+   * Automatic incrementation over the steps of Time stepping (the nominal
+   * steps' ends and the Output times, each landed on), with Abaqus
+   * *STATIC's semantics: the first increment is Initial increment; a failed
+   * one (NonConvergence) is restored and halved, up to Maximum cutbacks in
+   * a row, and an increment cut below Minimum increment is a failure; an
+   * increment grows by Growth factor after an easy one (at most Easy
    * iterations) or after Growth after converged increments in a row, up to
-   * the nominal step. An increment below 1e-12 of the end time is a
-   * failure. Outer updates (Uzawa) re-solve the same increment.
+   * Maximum increment. With Maximum contact changes, a converged
+   * increment in which too many frictional contact nodes closed or began
+   * to stick is rejected
+   * and halved (the accuracy of a frictional path), and the increment grows
+   * only while a larger one would pass. Outer updates (Uzawa) re-solve the
+   * same increment.
    */
   class LoadStepper
   {
@@ -146,10 +176,8 @@ namespace tribos
       {
       }
 
-      /** Time stepping's nominal step, and the smallest increment (1e-12
-       * of the end time). */
-      double nominal_step = 0;
-      double epsilon      = 0;
+      /** Round-off of the times (1e-12 of the end time). */
+      double epsilon = 0;
       /** Time stepping/Extrapolation (not in a dynamic run). */
       bool extrapolate = false;
       /** The time reached and the size of the next increment. */
@@ -169,7 +197,24 @@ namespace tribos
        * linear solves when the last increment was accepted. */
       unsigned int converged_in_row = 0;
       unsigned int solves_accepted  = 0;
+      /** The changed contact nodes of the last increment rejected for
+       * accuracy (Maximum contact changes); none: no rejection since
+       * the last accepted increment. */
+      unsigned int                  rejected_changes = none;
+      static constexpr unsigned int none = static_cast<unsigned int>(-1);
     };
+
+    /**
+     * Maximum contact changes: whether the converged increment of
+     * size @p increment must be solved again smaller (then @p s records
+     * why), and in @p may_grow whether the next may be larger.
+     */
+    bool
+    too_coarse(const IncrementalProblem &problem,
+               const double              increment,
+               Stepping                 &s,
+               bool                     &may_grow,
+               std::string              &reason) const;
 
     /**
      * Reach nominal step @p step from @p s.time by increments: each

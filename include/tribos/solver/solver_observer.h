@@ -56,6 +56,8 @@ namespace tribos
     unsigned int n_iterations_all = 0;
     double       residual         = 0;
     unsigned int n_cutbacks       = 0;
+    /** Increments rejected as too coarse (Maximum contact changes). */
+    unsigned int n_rejections = 0;
     /** Seconds since the stepping started, and the estimate of what is
      * left. */
     double elapsed = 0;
