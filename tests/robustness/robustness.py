@@ -35,12 +35,17 @@ sane physics:
   where the faceted master stops), with an apparent friction ratio Fx/Fy
   of the punch near mu. The same run with penalty, and the same check, is
   tests/verification/ironing_3d.py's 2D run.
+
+Every hard case's increments, cutbacks and Newton iterations stay within
+10 % of its row in doc/robustness.md's "Iteration budgets"
+(tribos_testing.iteration_budget()).
 """
 
 import math
 import sys
 
-from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish, hertz_compare
+from tribos_testing import (PARAMETERS, setup, run, read_csv, check, finish,
+                            hertz_compare, iteration_budget)
 
 tribos, tests, out = setup(sys.argv)
 prm = lambda name: PARAMETERS + "/" + name + ".prm"
@@ -50,6 +55,7 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
     # Stick-slip cycles.
     folder = out + "/stick_slip_" + method
     run(tribos, prm("stick_slip_cycles"), folder, sets)
+    iteration_budget("stick_slip_" + method, folder)
     h = read_csv(folder + "/history.csv")
     steps = {int(r["step"]): r for r in h}
     rows = [steps[k] for k in sorted(steps)]
@@ -95,6 +101,7 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
     # Sliding off the end over a convex corner.
     folder = out + "/slide_off_" + method
     run(tribos, prm("slide_off_edge"), folder, sets)
+    iteration_budget("slide_off_edge_" + method, folder)
     h = read_csv(folder + "/history.csv")
     final = read_csv(folder + "/contact-00060.csv")
     check(h[-1]["time"] == 3 and all(math.isfinite(r["pair0_normal_force"])
@@ -210,6 +217,7 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
     run(tribos, prm("upsetting"), folder, structured + sets + [
         "Time stepping/End time=8", "Time stepping/Number of steps=8",
         "Output/Write VTU=false"])
+    iteration_budget("upsetting_structured_t8_" + method, folder)
     h = read_csv(folder + "/history.csv")
     force = 4 * h[-1]["pair0_normal_force"]
     check(h[-1]["step"] == 8 and h[-1]["time"] > 7.999 and
@@ -237,6 +245,7 @@ run(tribos, prm("upsetting"), folder, split + [
     "Scene/Cylinder compression/Radial refinements=2",
     "Time stepping/End time=8", "Time stepping/Number of steps=8",
     "Output/Write VTU=false"])
+iteration_budget("upsetting_split_t8_penalty", folder)
 h = read_csv(folder + "/history.csv")
 n_segments = 16
 area_ratio = n_segments * math.sin(2 * math.pi / n_segments) / (2 * math.pi)
@@ -265,6 +274,7 @@ for method, sets in (("penalty", []), ("lagrange", LM)):
             # Lagrange 1, 1529.6; resolved by round-off: 1623.3, 1595.2);
             # with 100 both agree to 0.03 % (1584.3, 1584.8).
             "Time stepping/Number of steps=100"])
+    iteration_budget("upsetting_axisymmetric_" + method, folder)
     h = read_csv(folder + "/history.csv")
     final[method] = h[-1]["pair0_normal_force"]
     check(h[-1]["time"] > 24.999,
@@ -284,6 +294,7 @@ folder = out + "/upsetting_axisymmetric_split"
 run(tribos, prm("cylinder_compression_axisymmetric"), folder,
     axisymmetric + split + ["Scene/Cylinder compression/Radial refinements=3",
                             "Time stepping/Number of steps=100"])
+iteration_budget("upsetting_axisymmetric_split_penalty", folder)
 h = read_csv(folder + "/history.csv")
 force = h[-1]["pair0_normal_force"]
 check(h[-1]["time"] > 24.999 and
@@ -300,6 +311,7 @@ for method, sets in (("lagrange", LM + ["Nonlinear solver/Line search=true"]),):
     run(tribos, prm("ironing"), folder, sets + [
         "Time stepping/End time=1.3", "Time stepping/Number of steps=130",
         "Output/Write VTU=false"])
+    iteration_budget("ironing_t1.3_" + method, folder)
     h = read_csv(folder + "/history.csv")
     ratio = abs(h[-1]["RF13_x"] / h[-1]["RF13_y"])
     check(h[-1]["time"] > 1.299 and 0.2 < ratio < 0.5,

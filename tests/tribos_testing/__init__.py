@@ -389,6 +389,46 @@ def hertz_fit(rows, dim, reference=False):
     return math.sqrt(intercept), math.sqrt(-intercept / slope), points
 
 
+def iteration_counts(folder):
+    """(increments, cutbacks, Newton iterations with the failed attempts)
+    of the run in folder, from its history.csv (whose cutbacks column
+    counts a step's cutbacks so far)."""
+    rows = read_csv(folder + "/history.csv")
+    cutbacks = sum(int(max(r["cutbacks"] for r in rows if r["step"] == s))
+                   for s in set(r["step"] for r in rows))
+    return (len(rows), cutbacks,
+            int(sum(r["newton_iterations_all"] for r in rows)))
+
+
+def recorded_budgets():
+    """The table under "## Iteration budgets" in doc/robustness.md: per
+    case name (its first column) the increments, cutbacks and Newton
+    iterations (all attempts) recorded there."""
+    budgets, inside = {}, False
+    for line in open(os.path.join(REPOSITORY, "doc", "robustness.md")):
+        if line.startswith("## "):
+            inside = line.strip() == "## Iteration budgets"
+        elif inside and line.startswith("| `"):
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            budgets[cells[0].strip("`")] = tuple(int(c) for c in cells[1:4])
+    return budgets
+
+
+def iteration_budget(name, folder):
+    """Check the run in folder against its budget, the row @p name of
+    doc/robustness.md's "Iteration budgets": increments, cutbacks and
+    Newton iterations each within 10 % (at least 1) of the recorded
+    numbers, so that a change that costs (or saves) iterations shows."""
+    measured = iteration_counts(folder)
+    recorded = recorded_budgets().get(name)
+    within = recorded is not None and all(
+        abs(m - r) <= max(0.1 * r, 1) for m, r in zip(measured, recorded))
+    check(within, "%s: %d increments, %d cutbacks, %d Newton iterations; "
+          "recorded in doc/robustness.md %s (within 10 %%)"
+          % ((name,) + measured +
+             ("%d / %d / %d" % recorded if recorded else "nothing",)))
+
+
 def check(condition, message):
     """Print the check and fail the test if it does not hold."""
     print(("ok      " if condition else "FAILED  ") + message)

@@ -25,7 +25,8 @@ face edge.
 
 import sys
 
-from tribos_testing import PARAMETERS, setup, run, read_csv, check, finish
+from tribos_testing import (PARAMETERS, setup, run, read_csv, check, finish,
+                            iteration_budget)
 
 tribos, tests, out = setup(sys.argv)
 parameters = PARAMETERS + "/"
@@ -48,6 +49,7 @@ run(tribos, parameters + "ironing.prm", folder_2d,
      "Time stepping/Number of steps=%d" % round(END / 0.01),
      "Output/Write VTU=false"])
 rows_2d, reference = forces(folder_2d, "RF13_y", "RF13_x")
+iteration_budget("ironing_t1.3_penalty", folder_2d)
 ratio = abs(rows_2d[-1]["RF13_x"] / rows_2d[-1]["RF13_y"])
 check(rows_2d[-1]["time"] > 1.299 and 0.2 < ratio < 0.5,
       "ironing, penalty: press and 0.6 mm sliding complete, apparent "
@@ -63,6 +65,7 @@ for method, sets in (("penalty", []),
          "Time stepping/Number of steps=%d" % n_steps,
          "Output/Write VTU=false"] + sets)
     rows, results[method] = forces(folder, "RF15_z", "RF15_x")
+    iteration_budget("ironing_3d_t1.3_" + method, folder)
     cutbacks = sum(max(r["cutbacks"] for r in rows if r["step"] == s)
                    for s in set(r["step"] for r in rows))
     newton = sum(r["newton_iterations_all"] for r in rows)

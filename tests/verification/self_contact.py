@@ -85,7 +85,7 @@ import shutil
 import sys
 
 from tribos_testing import (setup, run, read_csv, check, finish, parts,
-                            mpi_part, restart_identical)
+                            mpi_part, restart_identical, iteration_budget)
 
 tribos, tests, out = setup(sys.argv)
 selected = parts(sys.argv, ("serial", "mortar", "clip", "mpi"))
@@ -297,6 +297,7 @@ if "serial" in selected:
         name = method.replace(" ", "_")
         run(tribos, u_shape, out + "/u_" + name, sets)
         run(tribos, u_shape, out + "/u_half_" + name, sets + half)
+        iteration_budget("self_contact_u_" + name, out + "/u_" + name)
         full, reference = by_time(out + "/u_" + name), \
             by_time(out + "/u_half_" + name)
         worst, n_compared = 0, 0
@@ -349,6 +350,7 @@ if "serial" in selected:
         name = method.replace(" ", "_")
         run(tribos, tube, out + "/tube_" + name, sets)
         run(tribos, tube, out + "/tube_quarter_" + name, sets + quarter)
+        iteration_budget("self_contact_tube_" + name, out + "/tube_" + name)
         full = by_time(out + "/tube_" + name)
         reference = by_time(out + "/tube_quarter_" + name)
         plate, closing, common, n_closed = against_quarter(full, reference)
