@@ -33,7 +33,7 @@ namespace tribos
         "Every",
         "1",
         dealii::Patterns::Integer(0),
-        "Adapt the mesh at the end of every this many nominal steps (after "
+        "Adapt the mesh at the end of every this many steps (after "
         "the step's output, so that the VTU shows the indicator that "
         "decided); 0: only the initial cycles.");
       prm.declare_entry("Strategy",

@@ -18,13 +18,14 @@ namespace tribos
       prm.declare_entry("Frequency",
                         "1",
                         dealii::Patterns::Integer(0),
-                        "Write VTU every this many nominal steps; 0 writes "
-                        "only the listed steps and the last one.");
+                        "Write VTU every this many steps (the nominal steps' "
+                        "ends and Time stepping/Output times, in order); 0 "
+                        "writes only the listed steps and the last one.");
       prm.declare_entry("Steps",
                         "",
                         dealii::Patterns::Anything(),
-                        "Nominal steps (1-based) always written, e.g. "
-                        "'44, 80'.");
+                        "Steps (1-based, as Frequency counts them) always "
+                        "written, e.g. '44, 80'.");
       prm.declare_entry("Write VTU",
                         "true",
                         dealii::Patterns::Bool(),
@@ -40,7 +41,7 @@ namespace tribos
         "Checkpoint every",
         "0",
         dealii::Patterns::Integer(0),
-        "Write a checkpoint after every this many nominal steps (and after "
+        "Write a checkpoint after every this many steps (and after "
         "the last) into <Directory>/checkpoint-NNNNN (NNNNN: the step): the "
         "converged state (solution, plastic history, contact state, "
         "velocities, the stepping). 'tribos FILE.prm --restart DIR' goes "

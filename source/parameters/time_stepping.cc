@@ -273,7 +273,10 @@ namespace tribos
       if (minimum_increment == 0)
         minimum_increment = 1e-12 * end_time;
       if (initial_increment == 0)
-        initial_increment = std::min(nominal, maximum_increment);
+        initial_increment =
+          std::clamp(nominal,
+                     std::min(minimum_increment, maximum_increment),
+                     maximum_increment);
       AssertThrow(minimum_increment <= maximum_increment,
                   dealii::ExcMessage(
                     entry("Minimum increment") +
@@ -294,11 +297,12 @@ namespace tribos
         step_times.push_back(k == n_steps ? end_time : k * nominal);
       for (const double t : output_times)
       {
-        AssertThrow(t > 0 && t <= end_time,
+        AssertThrow(t > 1e-12 * end_time && t <= end_time,
                     dealii::ExcMessage(
                       entry("Output times") + ": " + number(t) +
-                      " lies outside (0, End time = " + number(end_time) +
-                      "]."));
+                      " must lie after t = 0 (by more than 1e-12 of End "
+                      "time) and not after End time = " +
+                      number(end_time) + "."));
         step_times.push_back(t);
       }
       std::sort(step_times.begin(), step_times.end());

@@ -155,7 +155,9 @@ namespace tribos
         ++sums.n_cutbacks;
         ++cutbacks_in_row;
         s.converged_in_row = 0;
-        s.increment *= 0.5;
+        // Half of what was tried: an increment shortened to land on a
+        // step's end would otherwise be tried again at the same size.
+        s.increment = 0.5 * (next - s.time);
         std::string reason;
         if (cutbacks_in_row > ts.max_cutbacks)
           reason = "did not converge after " + std::to_string(ts.max_cutbacks) +
@@ -297,6 +299,7 @@ namespace tribos
     if (!(has_change && carried))
       s.change_increment = 0;
     s.plain_start             = false;
+    s.rejected_changes        = Stepping::none;
     progress.change_increment = s.change_increment;
   }
 } // namespace tribos

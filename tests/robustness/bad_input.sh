@@ -200,7 +200,7 @@ expect increment_bounds "<Time stepping/Minimum increment> = <0.6>: must not exc
   "$tribos" "$good" --set "Time stepping/Minimum increment=0.6"
 expect initial_increment "<Time stepping/Initial increment> = <2>: must lie between" \
   "$tribos" "$good" --set "Time stepping/Initial increment=2"
-expect output_time_outside "<Time stepping/Output times> = <0.5, 1.5>: 1.5 lies outside (0, End time = 1]" \
+expect output_time_outside "<Time stepping/Output times> = <0.5, 1.5>: 1.5 must lie after t = 0 (by more than 1e-12 of End time) and not after End time = 1." \
   "$tribos" "$good" --set "Time stepping/Output times=0.5, 1.5"
 expect output_time_text "Time stepping/Output times" \
   "$tribos" "$good" --set "Time stepping/Output times=0.5, later"
