@@ -391,6 +391,21 @@ namespace tribos
                            " would end at t = " + to_scientific(next_end) +
                            ", not after it: keep the steps of the run "
                            "that wrote it or make them larger."));
+    // And the checkpoint's step must end at its time in this run's steps
+    // too, or the steps after it would be numbered (and written) as other
+    // times than those of the uninterrupted run.
+    const double this_end =
+      c.stepper.step > 0 ? ts.step_times[c.stepper.step - 1] : 0.;
+    AssertThrow(std::abs(this_end - c.stepper.time) <= 1e-12 * ts.end_time,
+                ExcMessage(where + "the checkpoint is at step " +
+                           std::to_string(c.stepper.step) +
+                           ", t = " + to_scientific(c.stepper.time) +
+                           "; with this run's Time stepping/End time, "
+                           "Number of steps and Output times step " +
+                           std::to_string(c.stepper.step) +
+                           " ends at t = " + to_scientific(this_end) +
+                           ": keep the steps' ends up to the checkpoint as "
+                           "the run that wrote it had them."));
     AssertThrow(c.cell_values.count("velocity") ==
                   (problem.dynamics() != nullptr ? 1 : 0),
                 ExcMessage(where +

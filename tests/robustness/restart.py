@@ -186,7 +186,12 @@ if "core" in selected:
             # next step ends before the checkpoint's t = 1.
             ("step 5 before the checkpoint",
              ["Time stepping/Number of steps=48"],
-             reference + "/checkpoint-00004", "not after it")]:
+             reference + "/checkpoint-00004", "not after it"),
+            # Nor so that the checkpoint's step would end elsewhere (the
+            # steps after it would be numbered as other times): 6 steps put
+            # step 4's end at t = 2.
+            ("step 4 ending elsewhere", ["Time stepping/Number of steps=6"],
+             reference + "/checkpoint-00004", "step 4 ends at t = 2.000e+00")]:
         result = run(tribos, tests + "/sliding_block.prm", reference, sets,
                      expect_success=False, extra=["--restart", directory])
         check(result.returncode == 1 and message in result.stderr and
