@@ -94,7 +94,6 @@ namespace tribos
           observer.message(line.str());
           continue;
         }
-        s.rejected_changes = Stepping::none;
         problem.commit(next);
         s.plain_start = false;
         // Every linear solve since the last accepted increment: this
